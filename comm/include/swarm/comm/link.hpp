@@ -1,0 +1,65 @@
+// Link emulation: what a message suffers between two agents, per link class (DESIGN.md).
+//
+// Lockstep semantics, all in ticks and decided deterministically from the run's seed:
+// - A message an agent sends at tick t is acted on at t + 1 + delay (+ jitter) at the earliest:
+//   agents act in parallel within a tick, so nothing sent at t can be seen at t. The simulator's
+//   scans are the exception: taken at the start of tick t, they are seen at t + delay.
+// - Bandwidth: each sender has one token bucket per link class; a message of B bytes occupies the
+//   link for B / rate simulated seconds after the previous one, and is delivered no earlier than
+//   the tick in which its last byte has gone out.
+// - Loss: each receiver drops a message with the link's probability, drawn from a hash of
+//   (seed, sender, topic, sequence number, receiver), so a broadcast is lost independently at each
+//   receiver and the outcome does not depend on arrival order.
+// Not thread-safe: one LinkSender per sending agent, used from its own loop.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+namespace swarm::comm {
+
+enum class LinkClass : std::uint8_t { SimRobot, MemberLeader, LeaderGcs, Telemetry, Control };
+inline constexpr int kLinkClasses = 5;
+
+std::string link_name(LinkClass c);  // "sim_robot", "member_leader", "leader_gcs", "telemetry", "control"
+
+struct LinkParams {
+  std::uint32_t delay_ticks = 0;
+  std::uint32_t jitter_ticks = 0;
+  double loss = 0.0;
+  double bandwidth_bytes_per_s = 0.0;  // 0 = unlimited
+};
+
+// The parameters of every link class in a run; Telemetry and Control are always ideal.
+struct LinkTable {
+  std::array<LinkParams, kLinkClasses> params{};
+  double tick_seconds = 0.2;
+  std::uint64_t seed = 1;
+  const LinkParams& operator[](LinkClass c) const { return params[static_cast<int>(c)]; }
+  LinkParams& operator[](LinkClass c) { return params[static_cast<int>(c)]; }
+};
+
+// 64-bit mixing (splitmix64 finaliser): the one hash every deterministic draw in comm uses.
+std::uint64_t mix64(std::uint64_t x);
+std::uint64_t hash_combine(std::uint64_t seed, std::uint64_t value);
+std::uint64_t hash_string(const std::string& s);  // FNV-1a
+
+class LinkSender {
+ public:
+  explicit LinkSender(const LinkTable& table) : table_(table) {}
+  // The tick at which a message of `bytes` sent now may be acted on. `from_clock_master` marks the
+  // simulator's per-tick sensor data (no inherent one-tick lag).
+  std::uint32_t deliver_tick(LinkClass link, std::uint32_t tick, std::size_t bytes,
+                             std::uint64_t topic_hash, std::uint32_t seq, bool from_clock_master);
+
+ private:
+  const LinkTable& table_;
+  std::array<double, kLinkClasses> busy_until_s_{};  // token bucket: when the link is free again
+};
+
+// Receiver side: is this message lost?
+bool link_drops(const LinkTable& table, LinkClass link, std::uint16_t sender, std::uint64_t topic_hash,
+                std::uint32_t seq, std::uint16_t receiver);
+
+}  // namespace swarm::comm

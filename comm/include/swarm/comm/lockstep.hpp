@@ -1,0 +1,251 @@
+// The lockstep protocol: every process of a run steps through the same ticks, and a tick's
+// outcome never depends on thread timing, so one scenario + seed gives one result on any machine.
+//
+// The simulator is the clock master (LockstepClock); every other process is a LockstepAgent:
+//
+//   sim:    deliver motion due by k -> move, scan -> send Sense(k) -> publish Clock(k) -> wait Done(k)
+//   agent:  wait Clock(k) -> wait until every message due by k is here -> handlers, step -> Done(k)
+//
+// A conservative barrier, as in parallel discrete-event simulation: each Done(k) says how many
+// messages its sender sent to each agent during tick k; the clock master sums them and puts into
+// Clock(k) how many messages each agent must hold before acting at k (all agent messages stamped
+// before k plus the simulator's own messages stamped k). DDS may deliver them in any order and
+// at any time; the mailbox holds each until its deliver tick (link.hpp) and hands the due ones
+// over sorted by (deliver tick, subscription order, sender, sequence number).
+//
+//   LockstepAgent agent(participant, topology, links, self);
+//   agent.subscribe<msgs::MapPatch>(topic::patch_up(g), LinkClass::MemberLeader,
+//                                   [&](const msgs::MapPatch& p) { node.on_patch(p); });
+//   auto& out = agent.advertise<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, {gcs});
+//   agent.announce_ready(timeout);
+//   while (const msgs::Clock* clock = agent.begin_tick()) { node.step(*clock); agent.end_tick(); }
+//
+// Handlers run on the caller's thread inside begin_tick; DDS threads only count and enqueue.
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "swarm/comm/endpoint.hpp"
+#include "swarm/comm/link.hpp"
+#include "swarm/comm/topology.hpp"
+#include "swarm/comm/traffic.hpp"
+
+namespace swarm::comm {
+
+inline constexpr std::uint32_t kReadyTick = 0xFFFFFFFFu;
+
+// How long a process waits for its peers before it gives up and names what it waited for.
+std::chrono::seconds stall_timeout();  // $SWARM_STALL_TIMEOUT seconds, default 60
+
+class Mailbox {
+ public:
+  Mailbox(Participant& participant, const Topology& topology, const LinkTable& links, AgentId self);
+  virtual ~Mailbox();
+  Mailbox(const Mailbox&) = delete;
+  Mailbox& operator=(const Mailbox&) = delete;
+
+  template <class T>
+  class Outlet;
+
+  // Messages of type T on `topic_name` are held until due and then given to `handler`.
+  template <class T>
+  void subscribe(const std::string& topic_name, LinkClass link, std::function<void(const T&)> handler);
+
+  // An outlet stamps, emulates the link, accounts and writes. `receivers` are the agents that
+  // subscribe to this topic (the barrier counts one message per receiver).
+  template <class T>
+  Outlet<T>& advertise(const std::string& topic_name, LinkClass link, std::vector<AgentId> receivers);
+
+  // End of run: this agent's traffic and role numbers, sent to the GCS (which calls make_report
+  // for its own). Waits briefly for the GCS to acknowledge.
+  void send_report(const std::string& role, const std::string& extra_json);
+  msgs::AgentReport make_report(const std::string& role, const std::string& extra_json);
+
+  std::uint32_t tick() const { return tick_; }
+  AgentId self() const { return self_; }
+  const Topology& topology() const { return topology_; }
+  TrafficAccount& traffic() { return traffic_; }
+  Participant& participant() { return participant_; }
+
+ protected:
+  // Blocks until `expected` messages counted for tick k are here (throws after stall_timeout()),
+  // then runs the handlers of every held message due by k in deterministic order.
+  void deliver_due(std::uint32_t k, std::uint64_t expected);
+  // Messages sent per receiver since the last call; resets the counts.
+  std::vector<std::uint32_t> take_sent_counts();
+  bool outlets_matched(std::string* missing) const;
+  std::uint64_t arrivals_counted_for(std::uint32_t k) const;  // caller holds mutex_
+
+  Participant& participant_;
+  Topology topology_;
+  LinkTable links_;
+  AgentId self_;
+  std::uint32_t tick_ = 0;
+  LinkSender link_sender_;
+  TrafficAccount traffic_;
+
+  mutable std::mutex mutex_;
+  std::condition_variable arrived_;
+
+ private:
+  struct Held {
+    std::uint32_t deliver_tick;
+    int order;  // subscription index
+    AgentId sender;
+    std::uint32_t seq;
+    std::function<void()> run;
+  };
+  struct OutletBase {
+    virtual ~OutletBase() = default;
+    virtual int matched() const = 0;
+    virtual int expected_readers() const = 0;
+    virtual const std::string& name() const = 0;
+  };
+
+  // Counts one arrival for the barrier; keeps it for delivery unless the link dropped it.
+  void arrive(const msgs::Stamp& stamp, bool keep, int order, std::function<void()> run);
+
+  std::vector<Held> held_;
+  std::map<std::uint32_t, std::uint64_t> agent_arrivals_;  // stamp tick -> count (from agents)
+  std::map<std::uint32_t, std::uint64_t> sim_arrivals_;    // stamp tick -> count (from the sim)
+  std::vector<std::uint32_t> sent_counts_;
+  std::vector<std::shared_ptr<void>> readers_;
+  std::deque<std::unique_ptr<OutletBase>> outlets_;
+  std::unique_ptr<Writer<msgs::AgentReport>> report_writer_;
+  int subscriptions_ = 0;
+};
+
+template <class T>
+class Mailbox::Outlet : public Mailbox::OutletBase {
+ public:
+  Outlet(Mailbox& box, const std::string& topic_name, LinkClass link, std::vector<AgentId> receivers)
+      : box_(box),
+        writer_(box.participant_, topic_name),
+        name_(topic_name),
+        family_(topic::family(topic_name)),
+        link_(link),
+        topic_hash_(hash_string(topic_name)),
+        receivers_(std::move(receivers)) {}
+
+  // Stamps and sends; the message's stamp is overwritten.
+  void send(T& msg) {
+    msgs::Stamp& s = msg.header();
+    const std::size_t bytes = wire_size(msg);
+    s.tick(box_.tick_);
+    s.sender(box_.self_);
+    s.seq(seq_);
+    s.deliver_tick(box_.link_sender_.deliver_tick(link_, box_.tick_, bytes, topic_hash_, seq_,
+                                                  box_.self_ == box_.topology_.sim()));
+    ++seq_;
+    writer_.write(msg);
+    {
+      std::lock_guard<std::mutex> lock(box_.mutex_);
+      for (AgentId r : receivers_) box_.sent_counts_[r] += 1;
+    }
+    box_.traffic_.sent(family_, link_name(link_), bytes);
+  }
+  int matched() const override { return writer_.matched(); }
+  int expected_readers() const override { return static_cast<int>(receivers_.size()); }
+  const std::string& name() const override { return name_; }
+  Writer<T>& writer() { return writer_; }
+
+ private:
+  Mailbox& box_;
+  Writer<T> writer_;
+  std::string name_;
+  std::string family_;
+  LinkClass link_;
+  std::uint64_t topic_hash_;
+  std::vector<AgentId> receivers_;
+  std::uint32_t seq_ = 0;
+};
+
+template <class T>
+void Mailbox::subscribe(const std::string& topic_name, LinkClass link, std::function<void(const T&)> handler) {
+  const int order = subscriptions_++;
+  const std::uint64_t topic_hash = hash_string(topic_name);
+  const std::string family = topic::family(topic_name);
+  auto reader = std::make_shared<Reader<T>>(
+      participant_, topic_name, [this, link, order, topic_hash, family, handler](T&& msg) {
+        const std::size_t bytes = wire_size(msg);
+        const bool dropped = link_drops(links_, link, msg.header().sender(), topic_hash, msg.header().seq(), self_);
+        traffic_.received(family, link_name(link), bytes, dropped);
+        auto shared = std::make_shared<T>(std::move(msg));
+        arrive(shared->header(), !dropped, order, [handler, shared] { handler(*shared); });
+      });
+  readers_.push_back(reader);
+}
+
+template <class T>
+Mailbox::Outlet<T>& Mailbox::advertise(const std::string& topic_name, LinkClass link,
+                                       std::vector<AgentId> receivers) {
+  auto outlet = std::make_unique<Outlet<T>>(*this, topic_name, link, std::move(receivers));
+  Outlet<T>& ref = *outlet;
+  outlets_.push_back(std::move(outlet));
+  return ref;
+}
+
+// A robot's or the GCS's side of the protocol.
+class LockstepAgent : public Mailbox {
+ public:
+  LockstepAgent(Participant& participant, const Topology& topology, const LinkTable& links, AgentId self);
+  ~LockstepAgent() override;
+
+  // Waits until every outlet sees all its receivers, then tells the clock master this agent is
+  // ready. Call after every subscribe/advertise.
+  void announce_ready();
+  // Blocks for the next tick; nullptr once the run has stopped. Handlers of due messages have run
+  // when it returns. The pointer stays valid until the next call.
+  const msgs::Clock* begin_tick();
+  void end_tick(bool mission_complete = false);
+
+ private:
+  std::unique_ptr<Writer<msgs::Done>> done_writer_;
+  std::unique_ptr<Reader<msgs::Clock>> clock_reader_;
+  std::map<std::uint32_t, msgs::Clock> clocks_;  // guarded by mutex_
+  std::optional<std::uint32_t> next_tick_;
+  msgs::Clock current_;
+};
+
+// An agent's whole life: announce, then step every tick until the simulator stops the run.
+// `step` returns true when the mission is complete (only the GCS ever says so).
+void run_lockstep(LockstepAgent& agent, const std::function<bool(const msgs::Clock&)>& step);
+
+// The simulator's side: it owns the clock and the barrier counts.
+class LockstepClock : public Mailbox {
+ public:
+  LockstepClock(Participant& participant, const Topology& topology, const LinkTable& links);
+  ~LockstepClock() override;
+
+  // Blocks until every agent has announced itself ready (throws after stall_timeout()).
+  void wait_ready();
+  // Delivers the messages (motion commands) due at tick k to their handlers.
+  void begin_tick(std::uint32_t k);
+  // Publishes Clock(k) with the barrier counts; call after sending this tick's sensor data.
+  void publish_clock(std::uint32_t k, const std::vector<msgs::RobotState>& robots, bool stop);
+  // Blocks until every agent has finished tick k; returns true when the GCS reported the mission
+  // complete. Throws, naming the agents it waited for, after stall_timeout().
+  bool wait_done(std::uint32_t k);
+
+ private:
+  std::unique_ptr<Writer<msgs::Clock>> clock_writer_;
+  std::unique_ptr<Reader<msgs::Done>> done_reader_;
+  // guarded by mutex_:
+  std::vector<std::uint64_t> from_agents_;        // cumulative messages agents sent to each agent
+  std::map<std::uint32_t, std::vector<bool>> done_;  // tick -> which agents reported
+  std::vector<bool> ready_;
+  bool complete_ = false;
+  std::vector<std::uint64_t> from_sim_;  // cumulative messages the sim sent to each agent
+};
+
+}  // namespace swarm::comm

@@ -1,0 +1,68 @@
+// Who is who in a run: agent ids and topic names, derived from groups x robots_per_group.
+//
+// Robots are agents 0..N-1 (robot = group * robots_per_group + index; index 0 is the group's
+// leader), the GCS is agent N and the simulator agent N+1. Every process derives the same
+// numbering from the scenario, so no discovery of roles is needed.
+//
+// Topics are named per recipient (sense_3, patch_up_g1, ...) rather than keyed: each process
+// then receives only its own data, instead of every member deserialising all nine scans a tick.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace swarm::comm {
+
+using AgentId = std::uint16_t;
+
+class Topology {
+ public:
+  Topology(int groups, int robots_per_group) : groups_(groups), per_group_(robots_per_group) {}
+
+  int groups() const { return groups_; }
+  int robots_per_group() const { return per_group_; }
+  int robots() const { return groups_ * per_group_; }
+  int agents() const { return robots() + 2; }
+  AgentId gcs() const { return static_cast<AgentId>(robots()); }
+  AgentId sim() const { return static_cast<AgentId>(robots() + 1); }
+
+  AgentId robot(int group, int index) const { return static_cast<AgentId>(group * per_group_ + index); }
+  AgentId leader(int group) const { return robot(group, 0); }
+  int group_of(AgentId robot_id) const { return robot_id / per_group_; }
+  int index_of(AgentId robot_id) const { return robot_id % per_group_; }
+  bool is_robot(AgentId a) const { return a < robots(); }
+
+  std::vector<AgentId> members(int group) const;  // the group's robots except its leader
+  std::vector<AgentId> leaders() const;
+  std::vector<AgentId> robot_ids() const;
+  std::vector<AgentId> all_but_sim() const;  // robots and the GCS: who receives the clock
+
+  // "gcs", "sim", "leader-1", "member-1-2": the names used for logs and reports.
+  std::string name_of(AgentId a) const;
+
+ private:
+  int groups_;
+  int per_group_;
+};
+
+// Topic names. Families (the name without the per-recipient suffix) key the traffic accounts.
+namespace topic {
+inline const std::string kClock = "clock";
+inline const std::string kDone = "done";
+inline const std::string kMotion = "motion";
+inline const std::string kPatchGcs = "patch_gcs";
+inline const std::string kRound = "round";
+inline const std::string kGroupStatus = "group_status";
+inline const std::string kPlanReport = "plan_report";
+inline const std::string kReport = "report";
+inline std::string sense(AgentId robot) { return "sense_" + std::to_string(robot); }
+inline std::string patch_up(int group) { return "patch_up_g" + std::to_string(group); }
+inline std::string patch_down(int group) { return "patch_down_g" + std::to_string(group); }
+inline std::string assign(int group) { return "assign_g" + std::to_string(group); }
+inline std::string status(int group) { return "status_g" + std::to_string(group); }
+// "sense_3" -> "sense", "patch_up_g1" -> "patch_up".
+std::string family(const std::string& topic_name);
+}  // namespace topic
+
+}  // namespace swarm::comm

@@ -1,0 +1,35 @@
+// Traffic accounting: messages and bytes per topic family and link class, as each agent saw them.
+// Bytes are the CDR-serialised payload size plus the 4-byte encapsulation header (what DDS puts in
+// the RTPS DATA submessage), so a bandwidth experiment needs no packet capture.
+// Thread-safe: receive callbacks and the agent's loop both count.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <mutex>
+#include <string>
+#include <utility>
+
+namespace swarm::comm {
+
+struct TrafficCount {
+  std::uint64_t sent_messages = 0;
+  std::uint64_t sent_bytes = 0;
+  std::uint64_t received_messages = 0;
+  std::uint64_t received_bytes = 0;
+  std::uint64_t dropped_messages = 0;
+};
+
+class TrafficAccount {
+ public:
+  using Key = std::pair<std::string, std::string>;  // (topic family, link name)
+  void sent(const std::string& family, const std::string& link, std::uint64_t bytes);
+  void received(const std::string& family, const std::string& link, std::uint64_t bytes, bool dropped);
+  std::map<Key, TrafficCount> snapshot() const;
+
+ private:
+  mutable std::mutex mutex_;
+  std::map<Key, TrafficCount> counts_;
+};
+
+}  // namespace swarm::comm

@@ -1,0 +1,69 @@
+#include "swarm/comm/link.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace swarm::comm {
+
+std::string link_name(LinkClass c) {
+  switch (c) {
+    case LinkClass::SimRobot: return "sim_robot";
+    case LinkClass::MemberLeader: return "member_leader";
+    case LinkClass::LeaderGcs: return "leader_gcs";
+    case LinkClass::Telemetry: return "telemetry";
+    case LinkClass::Control: return "control";
+  }
+  return "unknown";
+}
+
+std::uint64_t mix64(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+std::uint64_t hash_combine(std::uint64_t seed, std::uint64_t value) { return mix64(seed ^ mix64(value)); }
+
+std::uint64_t hash_string(const std::string& s) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : s) h = (h ^ c) * 1099511628211ULL;
+  return h;
+}
+
+namespace {
+// A uniform draw in [0, 1) from 53 bits of the hash: the same on every machine.
+double unit(std::uint64_t h) { return static_cast<double>(h >> 11) * (1.0 / 9007199254740992.0); }
+}  // namespace
+
+std::uint32_t LinkSender::deliver_tick(LinkClass link, std::uint32_t tick, std::size_t bytes,
+                                       std::uint64_t topic_hash, std::uint32_t seq, bool from_clock_master) {
+  const LinkParams& p = table_[link];
+  const std::uint32_t lag = from_clock_master ? 0 : 1;
+  std::uint32_t ready = tick + lag;
+  if (p.bandwidth_bytes_per_s > 0) {
+    // Token bucket of one message: the link is busy until the previous message has gone out.
+    double& busy = busy_until_s_[static_cast<int>(link)];
+    const double now = tick * table_.tick_seconds;
+    busy = std::max(busy, now) + static_cast<double>(bytes) / p.bandwidth_bytes_per_s;
+    const auto done_tick = static_cast<std::uint32_t>(std::ceil(busy / table_.tick_seconds - 1e-9));
+    ready = std::max(ready, done_tick + lag);
+  }
+  std::uint32_t jitter = 0;
+  if (p.jitter_ticks > 0) {
+    const std::uint64_t h = hash_combine(hash_combine(table_.seed, topic_hash), seq);
+    jitter = static_cast<std::uint32_t>(h % (p.jitter_ticks + 1));
+  }
+  return ready + p.delay_ticks + jitter;
+}
+
+bool link_drops(const LinkTable& table, LinkClass link, std::uint16_t sender, std::uint64_t topic_hash,
+                std::uint32_t seq, std::uint16_t receiver) {
+  const double loss = table[link].loss;
+  if (loss <= 0) return false;
+  std::uint64_t h = hash_combine(table.seed ^ 0x5157a11ULL, topic_hash);
+  h = hash_combine(h, (static_cast<std::uint64_t>(sender) << 48) ^ (static_cast<std::uint64_t>(receiver) << 32) ^ seq);
+  return unit(h) < loss;
+}
+
+}  // namespace swarm::comm

@@ -1,0 +1,316 @@
+#include "swarm/comm/lockstep.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+namespace swarm::comm {
+
+std::chrono::seconds stall_timeout() {
+  if (const char* v = std::getenv("SWARM_STALL_TIMEOUT")) {
+    const long s = std::strtol(v, nullptr, 10);
+    if (s > 0) return std::chrono::seconds(s);
+  }
+  return std::chrono::seconds(60);
+}
+
+Mailbox::Mailbox(Participant& participant, const Topology& topology, const LinkTable& links, AgentId self)
+    : participant_(participant),
+      topology_(topology),
+      links_(links),
+      self_(self),
+      link_sender_(links_),
+      sent_counts_(topology.agents(), 0) {
+  if (self != topology.gcs()) report_writer_ = std::make_unique<Writer<msgs::AgentReport>>(participant, topic::kReport);
+}
+
+msgs::AgentReport Mailbox::make_report(const std::string& role, const std::string& extra_json) {
+  msgs::AgentReport report;
+  report.agent(self_);
+  report.role(role);
+  report.extra_json(extra_json);
+  for (const auto& [key, c] : traffic_.snapshot()) {
+    msgs::TopicTraffic t;
+    t.topic(key.first);
+    t.link(key.second);
+    t.sent_messages(c.sent_messages);
+    t.sent_bytes(c.sent_bytes);
+    t.received_messages(c.received_messages);
+    t.received_bytes(c.received_bytes);
+    t.dropped_messages(c.dropped_messages);
+    report.traffic().push_back(t);
+  }
+  return report;
+}
+
+void Mailbox::send_report(const std::string& role, const std::string& extra_json) {
+  if (!report_writer_) return;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (report_writer_->matched() < 1 && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  msgs::AgentReport report = make_report(role, extra_json);
+  report_writer_->write(report);
+  report_writer_->wait_acknowledged(std::chrono::seconds(10));
+}
+
+Mailbox::~Mailbox() {
+  // Readers first: their callbacks touch this object.
+  readers_.clear();
+  outlets_.clear();
+  report_writer_.reset();
+}
+
+void Mailbox::arrive(const msgs::Stamp& stamp, bool keep, int order, std::function<void()> run) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto& arrivals = stamp.sender() == topology_.sim() ? sim_arrivals_ : agent_arrivals_;
+    arrivals[stamp.tick()] += 1;
+    if (keep) held_.push_back({stamp.deliver_tick(), order, stamp.sender(), stamp.seq(), std::move(run)});
+  }
+  arrived_.notify_all();
+}
+
+std::uint64_t Mailbox::arrivals_counted_for(std::uint32_t k) const {
+  // Agents' messages stamped before k, the simulator's stamped up to k (see the file comment).
+  std::uint64_t n = 0;
+  for (auto it = agent_arrivals_.begin(); it != agent_arrivals_.end() && it->first < k; ++it) n += it->second;
+  for (auto it = sim_arrivals_.begin(); it != sim_arrivals_.end() && it->first <= k; ++it) n += it->second;
+  return n;
+}
+
+void Mailbox::deliver_due(std::uint32_t k, std::uint64_t expected) {
+  std::vector<Held> due;
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (!arrived_.wait_for(lock, stall_timeout(), [&] { return arrivals_counted_for(k) >= expected; })) {
+      std::ostringstream msg;
+      msg << topology_.name_of(self_) << ": at tick " << k << " still waiting for messages: "
+          << arrivals_counted_for(k) << " of " << expected << " arrived after " << stall_timeout().count()
+          << " s (a peer process stalled or died)";
+      throw std::runtime_error(msg.str());
+    }
+    auto split = std::partition(held_.begin(), held_.end(), [k](const Held& h) { return h.deliver_tick > k; });
+    due.assign(std::make_move_iterator(split), std::make_move_iterator(held_.end()));
+    held_.erase(split, held_.end());
+  }
+  std::sort(due.begin(), due.end(), [](const Held& a, const Held& b) {
+    if (a.deliver_tick != b.deliver_tick) return a.deliver_tick < b.deliver_tick;
+    if (a.order != b.order) return a.order < b.order;
+    if (a.sender != b.sender) return a.sender < b.sender;
+    return a.seq < b.seq;
+  });
+  for (Held& h : due) h.run();
+}
+
+std::vector<std::uint32_t> Mailbox::take_sent_counts() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<std::uint32_t> out(topology_.agents(), 0);
+  out.swap(sent_counts_);
+  return out;
+}
+
+bool Mailbox::outlets_matched(std::string* missing) const {
+  for (const auto& o : outlets_) {
+    if (o->matched() < o->expected_readers()) {
+      if (missing != nullptr) {
+        *missing = o->name() + " (" + std::to_string(o->matched()) + " of " +
+                   std::to_string(o->expected_readers()) + " readers)";
+      }
+      return false;
+    }
+  }
+  return true;
+}
+
+namespace {
+
+// Polls `ready` until it holds or the stall timeout passes (discovery has no blocking wait).
+template <class Pred>
+void wait_for_discovery(const std::string& who, Pred ready) {
+  const auto deadline = std::chrono::steady_clock::now() + stall_timeout();
+  std::string missing;
+  while (!ready(&missing)) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      throw std::runtime_error(who + ": DDS discovery did not complete in " +
+                               std::to_string(stall_timeout().count()) + " s; still waiting for " + missing);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+LockstepAgent::LockstepAgent(Participant& participant, const Topology& topology, const LinkTable& links,
+                             AgentId self)
+    : Mailbox(participant, topology, links, self) {
+  done_writer_ = std::make_unique<Writer<msgs::Done>>(participant, topic::kDone);
+  clock_reader_ = std::make_unique<Reader<msgs::Clock>>(participant, topic::kClock, [this](msgs::Clock&& c) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      clocks_.emplace(c.tick(), std::move(c));
+    }
+    arrived_.notify_all();
+  });
+}
+
+LockstepAgent::~LockstepAgent() { clock_reader_.reset(); }
+
+void LockstepAgent::announce_ready() {
+  wait_for_discovery(topology_.name_of(self_), [&](std::string* missing) {
+    if (done_writer_->matched() < 1) {
+      *missing = "the simulator (done)";
+      return false;
+    }
+    return outlets_matched(missing);
+  });
+  msgs::Done hello;
+  hello.agent(self_);
+  hello.tick(kReadyTick);
+  done_writer_->write(hello);
+}
+
+const msgs::Clock* LockstepAgent::begin_tick() {
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    auto has_next = [&] {
+      if (clocks_.empty()) return false;
+      return !next_tick_ || clocks_.begin()->first >= *next_tick_ || clocks_.begin()->second.stop();
+    };
+    if (!arrived_.wait_for(lock, stall_timeout(), has_next)) {
+      throw std::runtime_error(topology_.name_of(self_) + ": no clock from the simulator for " +
+                               std::to_string(stall_timeout().count()) + " s after tick " +
+                               (next_tick_ ? std::to_string(*next_tick_) : std::string("start")));
+    }
+    current_ = std::move(clocks_.begin()->second);
+    clocks_.erase(clocks_.begin());
+  }
+  if (current_.stop()) return nullptr;
+  tick_ = current_.tick();
+  next_tick_ = tick_ + 1;
+  deliver_due(tick_, current_.expected().at(self_));
+  return &current_;
+}
+
+void LockstepAgent::end_tick(bool mission_complete) {
+  msgs::Done done;
+  done.agent(self_);
+  done.tick(tick_);
+  done.sent(take_sent_counts());
+  done.mission_complete(mission_complete);
+  done_writer_->write(done);
+}
+
+void run_lockstep(LockstepAgent& agent, const std::function<bool(const msgs::Clock&)>& step) {
+  agent.announce_ready();
+  while (const msgs::Clock* clock = agent.begin_tick()) agent.end_tick(step(*clock));
+}
+
+// ---------------------------------------------------------------------------------------------
+LockstepClock::LockstepClock(Participant& participant, const Topology& topology, const LinkTable& links)
+    : Mailbox(participant, topology, links, topology.sim()),
+      from_agents_(topology.agents(), 0),
+      ready_(topology.agents(), false),
+      from_sim_(topology.agents(), 0) {
+  ready_[topology.sim()] = true;
+  clock_writer_ = std::make_unique<Writer<msgs::Clock>>(participant, topic::kClock);
+  done_reader_ = std::make_unique<Reader<msgs::Done>>(participant, topic::kDone, [this](msgs::Done&& d) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (d.agent() >= topology_.agents()) return;
+      if (d.tick() == kReadyTick) {
+        ready_[d.agent()] = true;
+      } else {
+        auto& seen = done_[d.tick()];
+        if (seen.empty()) seen.assign(topology_.agents(), false);
+        seen[d.agent()] = true;
+        for (std::size_t a = 0; a < d.sent().size() && a < from_agents_.size(); ++a) from_agents_[a] += d.sent()[a];
+        if (d.mission_complete()) complete_ = true;
+      }
+    }
+    arrived_.notify_all();
+  });
+}
+
+LockstepClock::~LockstepClock() { done_reader_.reset(); }
+
+void LockstepClock::wait_ready() {
+  const auto deadline = std::chrono::steady_clock::now() + stall_timeout();
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (true) {
+    std::string missing;
+    for (int a = 0; a < topology_.agents(); ++a) {
+      if (!ready_[a]) missing += (missing.empty() ? "" : ", ") + topology_.name_of(static_cast<AgentId>(a));
+    }
+    bool outlets_ok = true;
+    if (missing.empty()) {
+      lock.unlock();
+      outlets_ok = outlets_matched(&missing) && clock_writer_->matched() >= topology_.agents() - 1;
+      if (outlets_ok) return;
+      if (missing.empty()) missing = "clock readers";
+      lock.lock();
+    }
+    if (std::chrono::steady_clock::now() > deadline) {
+      throw std::runtime_error("sim: these processes never became ready in " +
+                               std::to_string(stall_timeout().count()) + " s: " + missing);
+    }
+    arrived_.wait_for(lock, std::chrono::milliseconds(5));
+  }
+}
+
+void LockstepClock::begin_tick(std::uint32_t k) {
+  tick_ = k;
+  std::uint64_t expected;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    expected = from_agents_[self_];
+  }
+  deliver_due(k, expected);
+}
+
+void LockstepClock::publish_clock(std::uint32_t k, const std::vector<msgs::RobotState>& robots, bool stop) {
+  const std::vector<std::uint32_t> sent = take_sent_counts();
+  msgs::Clock clock;
+  clock.tick(k);
+  clock.stop(stop);
+  std::vector<std::uint32_t> expected(topology_.agents(), 0);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (int a = 0; a < topology_.agents(); ++a) {
+      from_sim_[a] += sent[a];
+      expected[a] = static_cast<std::uint32_t>(from_agents_[a] + from_sim_[a]);
+    }
+  }
+  clock.expected(expected);
+  clock.robots(robots);
+  clock_writer_->write(clock);
+}
+
+bool LockstepClock::wait_done(std::uint32_t k) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  auto all_done = [&] {
+    auto it = done_.find(k);
+    if (it == done_.end()) return false;
+    for (int a = 0; a < topology_.agents(); ++a) {
+      if (a != topology_.sim() && !it->second[a]) return false;
+    }
+    return true;
+  };
+  if (!arrived_.wait_for(lock, stall_timeout(), all_done)) {
+    std::string missing;
+    auto it = done_.find(k);
+    for (int a = 0; a < topology_.agents(); ++a) {
+      if (a == topology_.sim()) continue;
+      if (it == done_.end() || !it->second[a]) missing += (missing.empty() ? "" : ", ") + topology_.name_of(static_cast<AgentId>(a));
+    }
+    throw std::runtime_error("sim: tick " + std::to_string(k) + " never finished in " +
+                             std::to_string(stall_timeout().count()) + " s; waiting for " + missing);
+  }
+  done_.erase(k);
+  return complete_;
+}
+
+}  // namespace swarm::comm

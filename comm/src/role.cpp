@@ -1,0 +1,86 @@
+#include "swarm/comm/role.hpp"
+
+#include <filesystem>
+#include <iostream>
+
+namespace swarm::comm {
+
+void add_role_flags(CLI::App& app, RoleOptions& o, RoleKind kind) {
+  app.add_option("--scenario", o.scenario_path, "scenario file (protobuf text format)")->required();
+  app.add_option("--run-dir", o.run_dir, "run directory for outputs");
+  app.add_option("--domain", o.domain, "DDS domain id of the run")->check(CLI::Range(0, 232));
+  app.add_option("--partition", o.partition, "DDS partition of the run");
+  app.add_option("--profile", o.profile, "Fast DDS XML profile (default: deploy/fastdds_loopback.xml)");
+  if (kind == RoleKind::Leader || kind == RoleKind::Member) {
+    app.add_option("--group", o.group, "group id, from 0")->required();
+  }
+  if (kind == RoleKind::Member) {
+    app.add_option("--index", o.index, "robot index inside the group, from 1 (0 is the leader)")->required();
+  }
+  if (kind == RoleKind::Gcs) {
+    app.add_option("--progress", o.progress, "progress display")->check(CLI::IsMember({"bar", "plain", "none"}));
+  }
+}
+
+LinkTable link_table(const swarm::scenario::Scenario& s) {
+  LinkTable t;
+  t.tick_seconds = s.tick_seconds();
+  t.seed = s.seed();
+  auto fill = [](LinkParams& p, const swarm::scenario::Link& l) {
+    p.delay_ticks = l.delay_ticks();
+    p.jitter_ticks = l.jitter_ticks();
+    p.loss = l.loss();
+    p.bandwidth_bytes_per_s = l.bandwidth_bytes_per_s();
+  };
+  fill(t[LinkClass::SimRobot], s.links().sim_robot());
+  fill(t[LinkClass::MemberLeader], s.links().member_leader());
+  fill(t[LinkClass::LeaderGcs], s.links().leader_gcs());
+  return t;
+}
+
+RoleSetup load_role(const RoleOptions& o, RoleKind kind, const std::string& name) {
+  RoleSetup setup;
+  const auto scenario = config::load_scenario(o.scenario_path);
+  const std::string dir = std::filesystem::path(o.scenario_path).parent_path().string();
+  setup.world = config::resolve_world(scenario, dir.empty() ? "." : dir);
+  const auto& s = setup.world.scenario;
+  setup.topology = Topology(static_cast<int>(s.groups()), static_cast<int>(s.robots_per_group()));
+  if ((kind == RoleKind::Leader || kind == RoleKind::Member) &&
+      (o.group < 0 || o.group >= setup.topology.groups())) {
+    throw config::ConfigError("--group " + std::to_string(o.group) + " is outside the scenario's groups 0.." +
+                              std::to_string(setup.topology.groups() - 1));
+  }
+  if (kind == RoleKind::Member && (o.index < 1 || o.index >= setup.topology.robots_per_group())) {
+    throw config::ConfigError("--index " + std::to_string(o.index) + " is outside 1.." +
+                              std::to_string(setup.topology.robots_per_group() - 1) +
+                              " (index 0 is the leader, run by swarm-leader)");
+  }
+  setup.links = link_table(s);
+  setup.dds.domain = o.domain;
+  setup.dds.partition = o.partition;
+  setup.dds.name = name;
+  setup.dds.profile_path = o.profile;
+  return setup;
+}
+
+int run_role(CLI::App& app, int argc, char** argv, const std::string& role, const std::function<int()>& body) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "swarm-" << role << ": " << e.what() << "\n";
+    return 2;
+  }
+  try {
+    return body();
+  } catch (const config::ConfigError& e) {
+    std::cerr << "swarm-" << role << ": " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "swarm-" << role << ": " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace swarm::comm

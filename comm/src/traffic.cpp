@@ -1,0 +1,26 @@
+#include "swarm/comm/traffic.hpp"
+
+namespace swarm::comm {
+
+void TrafficAccount::sent(const std::string& family, const std::string& link, std::uint64_t bytes) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  TrafficCount& c = counts_[{family, link}];
+  c.sent_messages += 1;
+  c.sent_bytes += bytes;
+}
+
+void TrafficAccount::received(const std::string& family, const std::string& link, std::uint64_t bytes,
+                              bool dropped) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  TrafficCount& c = counts_[{family, link}];
+  c.received_messages += 1;
+  c.received_bytes += bytes;
+  if (dropped) c.dropped_messages += 1;
+}
+
+std::map<TrafficAccount::Key, TrafficCount> TrafficAccount::snapshot() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return counts_;
+}
+
+}  // namespace swarm::comm

@@ -1,0 +1,106 @@
+// Scenario files: the one file that drives every process of a run (DESIGN.md, "One scenario file
+// drives every process").
+//
+// A scenario is a `swarm.scenario.Scenario` message (idl/scenario.proto) in protobuf text format;
+// every field is optional and defaults to the paper's Table 1 (PAPERS.md section 1). Reading one
+// takes two steps, both at the process edge:
+//   1. load_scenario: parse + validate(). Every impossible value (a count of 0, a negative range,
+//      a loss probability of 1, ...) is a ConfigError naming the file, the field, what was
+//      expected and what was given.
+//   2. resolve_world: find and load the map (a built-in name or a ROS map_server YAML path), pick
+//      the start (scenario.start, or the free cell nearest the map centre) and every robot's start
+//      cell. Problems that need the map (start in a wall, start sealed off) are ConfigErrors too.
+// Callers print ConfigError::what() and exit with status 2.
+//
+//   namespace cfg = swarm::config;
+//   try {
+//     swarm::scenario::Scenario s = cfg::load_scenario(path);
+//     s.set_groups(flag_groups);                       // a flag overrides one field...
+//     cfg::validate(s, path + " (with flags)");        // ...so validate again
+//     cfg::World w = cfg::resolve_world(s, std::filesystem::path(path).parent_path().string());
+//     // w.truth, w.robot_cells[group * robots_per_group + index] (index 0 = the group's leader)
+//   } catch (const cfg::ConfigError& e) {
+//     std::cerr << e.what() << "\n";
+//     return 2;
+//   }
+//
+// Units: metres (map frame) for positions and ranges, cells for grid indices, ticks for steps.
+// All functions are thread-safe (no shared state; data_dir() reads the environment).
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "swarm/planner/grid.hpp"
+#include "swarm/proto/scenario.pb.h"
+
+namespace swarm::config {
+
+// A scenario or map that cannot be used. what() is a complete message (one line per problem)
+// that names the file and tells the fix.
+class ConfigError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// ---- Scenario files --------------------------------------------------------------------------
+
+// Reads and parses `path`, then validate()s it. Parse errors read
+//   "scenarios/x.pbtxt:3:19: Expected integer, got: abc"
+// (line and column 1-based); unknown field names suggest the nearest known one.
+[[nodiscard]] swarm::scenario::Scenario load_scenario(const std::string& path);
+
+// Parses protobuf text format only (no validate()); `source_name` prefixes error messages.
+[[nodiscard]] swarm::scenario::Scenario parse_scenario_text(const std::string& text,
+                                                            const std::string& source_name);
+
+// Throws ConfigError listing every impossible value, one line each, e.g.
+//   "scenarios/x.pbtxt: field explore.replan_threshold_steps: must be >= 1 (got 0)"
+// Checks only what needs no map; resolve_world checks the rest.
+void validate(const swarm::scenario::Scenario& scenario, const std::string& source);
+
+// Protobuf text format of every set field (unset fields keep their defaults when read back):
+// parse_scenario_text(to_text(s), ...) equals s.
+[[nodiscard]] std::string to_text(const swarm::scenario::Scenario& scenario);
+
+// "group-frontier" | "baseline" | "ideal" (case and '-'/'_' do not matter); otherwise a
+// ConfigError listing the accepted names.
+[[nodiscard]] swarm::scenario::Mode parse_mode(const std::string& name);
+// The inverse of parse_mode: "group-frontier", "baseline" or "ideal".
+[[nodiscard]] std::string mode_name(swarm::scenario::Mode mode);
+
+// ---- Data files and the world ----------------------------------------------------------------
+
+// The folder holding maps/ and scenarios/: $SWARM_DATA_DIR if set and non-empty, else the source
+// tree this library was built from.
+[[nodiscard]] std::string data_dir();
+
+// The built-in maps, in maps/ of data_dir(): open, maze1, maze2, small.
+[[nodiscard]] std::vector<std::string> builtin_map_names();
+
+// A built-in name gives data_dir()/maps/NAME.yaml; anything else is a path to a map_server YAML
+// file, relative paths taken from `scenario_dir` (the scenario file's folder; "" = the working
+// directory). Throws ConfigError if neither exists.
+[[nodiscard]] std::string resolve_map_path(const std::string& map, const std::string& scenario_dir);
+
+// Everything a run needs that follows from the scenario and its map. Only the simulator (and
+// offline tools) may hold `truth`: agents learn the world from their scans.
+struct World {
+  swarm::scenario::Scenario scenario;  // validated; `start` set to the start actually used
+  swarm::planner::OccupancyGrid truth;  // the map file's cells
+  swarm::planner::Cell start;           // the drop-off cell every robot starts around
+  // groups * robots_per_group distinct Free cells around `start`; robot id = group *
+  // robots_per_group + index, index 0 being the group's leader.
+  std::vector<swarm::planner::Cell> robot_cells;
+  std::string map_path;  // the YAML file read
+};
+
+// validate()s `scenario`, loads its map, picks the start and the robots' cells (see World).
+// `source` names the scenario in messages (default: "scenario 'NAME'"). Throws ConfigError when
+// the map cannot be read, or the start lies outside the map, in a wall or unknown cell, or where
+// fewer free cells are reachable than there are robots; the message suggests a start that works.
+[[nodiscard]] World resolve_world(const swarm::scenario::Scenario& scenario,
+                                  const std::string& scenario_dir, const std::string& source = {});
+
+}  // namespace swarm::config

@@ -1,0 +1,372 @@
+// Scenario text files: parsing with positioned errors, validation, printing, mode names.
+#include "swarm/config/scenario.hpp"
+
+#include <google/protobuf/descriptor.h>
+#include <google/protobuf/io/tokenizer.h>
+#include <google/protobuf/io/zero_copy_stream_impl_lite.h>
+#include <google/protobuf/text_format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <optional>
+#include <regex>
+#include <sstream>
+
+namespace swarm::config {
+namespace {
+
+namespace pb = google::protobuf;
+using swarm::scenario::Scenario;
+
+// Keeps the parser's first error with its 0-based position.
+class FirstError : public pb::io::ErrorCollector {
+ public:
+  void AddError(int line, pb::io::ColumnNumber column, const std::string& message) override {
+    if (!error) error = Error{line, column, message};
+  }
+  void AddWarning(int, pb::io::ColumnNumber, const std::string&) override {}
+
+  struct Error {
+    int line;
+    int column;
+    std::string message;
+  };
+  std::optional<Error> error;
+};
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// Adds the fix to protobuf's messages where it can: the nearest field name, the enum's values.
+std::string explain(const std::string& message) {
+  static const std::regex kNoField(
+      R"re(Message type "([^"]+)" has no field named "([^"]+)")re");
+  static const std::regex kNoEnum(R"re(Unknown enumeration value of "[^"]*" for field)re");
+  std::smatch m;
+  const pb::DescriptorPool* pool = pb::DescriptorPool::generated_pool();
+  if (std::regex_search(message, m, kNoField)) {
+    const pb::Descriptor* type = pool->FindMessageTypeByName(m[1].str());
+    if (type == nullptr || type->field_count() == 0) return message;
+    const std::string given = m[2].str();
+    std::string names;
+    const pb::FieldDescriptor* best = nullptr;
+    std::size_t best_distance = SIZE_MAX;
+    for (int i = 0; i < type->field_count(); ++i) {
+      const pb::FieldDescriptor* f = type->field(i);
+      names += (i ? ", " : "") + f->name();
+      const std::size_t d = edit_distance(given, f->name());
+      if (d < best_distance) best_distance = d, best = f;
+    }
+    std::string out = message;
+    if (best != nullptr && best_distance <= std::max<std::size_t>(2, given.size() / 3)) {
+      out += " Did you mean \"" + best->name() + "\"?";
+    }
+    return out + " (" + type->name() + " fields: " + names + ")";
+  }
+  if (std::regex_search(message, m, kNoEnum)) {
+    // The field name alone is enough: every enum field of the schema is of type Mode.
+    const pb::EnumDescriptor* mode = swarm::scenario::Mode_descriptor();
+    std::string names;
+    for (int i = 0; i < mode->value_count(); ++i) {
+      names += (i ? ", " : "") + mode->value(i)->name();
+    }
+    return message + " (expected one of " + names + ")";
+  }
+  return message;
+}
+
+// Shortest text that reads back as the same double ("0.2", "1e-09", "nan").
+std::string num(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+// Collects one line per problem: "SOURCE: field PATH: must be ... (got ...)".
+class Problems {
+ public:
+  explicit Problems(const std::string& source) : source_(source) {}
+
+  void add(const std::string& field, const std::string& expected, const std::string& got) {
+    lines_.push_back(source_ + ": field " + field + ": must " + expected + " (got " + got + ")");
+  }
+  void at_least(const std::string& field, std::uint64_t min, std::uint64_t v) {
+    if (v < min) add(field, "be >= " + std::to_string(min), std::to_string(v));
+  }
+  void in_range(const std::string& field, std::uint64_t min, std::uint64_t max, std::uint64_t v) {
+    if (v < min || v > max) {
+      add(field, "be in [" + std::to_string(min) + ", " + std::to_string(max) + "]",
+          std::to_string(v));
+    }
+  }
+  void positive(const std::string& field, double v) {
+    if (!(std::isfinite(v) && v > 0)) add(field, "be a finite number > 0", num(v));
+  }
+  void non_negative(const std::string& field, double v) {
+    if (!(std::isfinite(v) && v >= 0)) add(field, "be a finite number >= 0", num(v));
+  }
+  void finite(const std::string& field, double v) {
+    if (!std::isfinite(v)) add(field, "be a finite number", num(v));
+  }
+  void probability(const std::string& field, double v) {
+    if (!(v >= 0 && v < 1)) add(field, "be a probability in [0, 1)", num(v));
+  }
+
+  void throw_if_any() const {
+    if (lines_.empty()) return;
+    std::string all;
+    for (const std::string& l : lines_) all += (all.empty() ? "" : "\n") + l;
+    throw ConfigError(all);
+  }
+
+ private:
+  std::string source_;
+  std::vector<std::string> lines_;
+};
+
+// More robots than this is no run this runtime can host (and keeps robot ids far from overflow).
+constexpr std::uint64_t kMaxRobots = 10000;
+
+void validate_link(Problems& p, const std::string& name, const swarm::scenario::Link& link) {
+  p.probability("links." + name + ".loss", link.loss());
+  p.non_negative("links." + name + ".bandwidth_bytes_per_s", link.bandwidth_bytes_per_s());
+  p.non_negative("links." + name + ".delay_ms", link.delay_ms());
+  // delay_ticks and jitter_ticks are unsigned: every value is a valid delay.
+}
+
+std::string normalise_mode(std::string s) {
+  for (char& c : s) {
+    c = c == '_' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return s;
+}
+
+// The tokens of a text as the text-format parser sees them (comments skipped).
+struct Token {
+  int line;
+  int column;
+  std::string text;
+};
+
+class Silent : public pb::io::ErrorCollector {
+ public:
+  void AddError(int, pb::io::ColumnNumber, const std::string&) override {}
+};
+
+std::vector<Token> tokens_of(const std::string& text) {
+  pb::io::ArrayInputStream in(text.data(), static_cast<int>(text.size()));
+  Silent silent;
+  pb::io::Tokenizer tokenizer(&in, &silent);
+  tokenizer.set_comment_style(pb::io::Tokenizer::SH_COMMENT_STYLE);
+  std::vector<Token> out;
+  while (tokenizer.Next()) {
+    const auto& t = tokenizer.current();
+    out.push_back({t.line, t.column, t.text});
+  }
+  return out;
+}
+
+bool before(int line_a, int col_a, int line_b, int col_b) {
+  return line_a != line_b ? line_a < line_b : col_a < col_b;
+}
+
+// The tokenizer counts a tab as reaching the next multiple of 8; editors count characters.
+int char_column(const std::string& text, int line, int column) {
+  std::size_t pos = 0;
+  for (int l = 0; l < line && pos != std::string::npos; ++l) {
+    pos = text.find('\n', pos);
+    if (pos != std::string::npos) ++pos;
+  }
+  if (pos == std::string::npos) return column;
+  int col = 0;
+  int chars = 0;
+  for (; pos < text.size() && text[pos] != '\n' && col < column; ++pos, ++chars) {
+    col = text[pos] == '\t' ? col + 8 - col % 8 : col + 1;
+  }
+  return chars;
+}
+
+struct Located {
+  int line;  // 0-based, -1 = none
+  int column;
+  std::string message;
+};
+
+// The parser reports some errors at the token after the culprit (it has read one token more);
+// move those back onto the culprit, explain an unclosed '{' at the end of the file, add the fix.
+Located locate(const std::string& text, const FirstError::Error& e) {
+  Located out{e.line, e.column, explain(e.message)};
+  if (e.line < 0) return out;
+  static const std::regex kCulprit(
+      R"re((?:has no field named|Non-repeated field|Unknown enumeration value of|Value:) )re"
+      R"re("([^"]+)")re");
+  const std::vector<Token> tokens = tokens_of(text);
+  std::smatch m;
+  if (std::regex_search(e.message, m, kCulprit)) {
+    for (auto t = tokens.rbegin(); t != tokens.rend(); ++t) {
+      if (t->text == m[1].str() && before(t->line, t->column, e.line, e.column)) {
+        out.line = t->line;
+        out.column = t->column;
+        break;
+      }
+    }
+  } else if (e.message == "Expected identifier, got: }" ||
+             e.message == "Expected identifier, got: >") {
+    out.message += " (it closes nothing: there is no open '{' or '<' here)";
+  } else if (e.message.size() >= 5 && e.message.compare(e.message.size() - 5, 5, "got: ") == 0) {
+    // "Expected identifier, got: " with nothing after it: the file ended inside a message.
+    std::vector<const Token*> open;
+    for (const Token& t : tokens) {
+      if (t.text == "{" || t.text == "<") open.push_back(&t);
+      if ((t.text == "}" || t.text == ">") && !open.empty()) open.pop_back();
+    }
+    if (!open.empty()) {
+      const Token& t = *open.back();
+      out.message = "unexpected end of file: the '" + t.text + "' at line " +
+                    std::to_string(t.line + 1) + ", column " +
+                    std::to_string(char_column(text, t.line, t.column) + 1) +
+                    " is never closed (add '" + (t.text == "{" ? "}" : ">") + "')";
+    }
+  }
+  out.column = char_column(text, out.line, out.column);
+  return out;
+}
+
+}  // namespace
+
+Scenario parse_scenario_text(const std::string& text, const std::string& source_name) {
+  Scenario s;
+  FirstError errors;
+  pb::TextFormat::Parser parser;
+  parser.RecordErrorsTo(&errors);
+  if (!parser.ParseFromString(text, &s)) {
+    if (!errors.error) {
+      throw ConfigError(source_name + ": not a valid scenario (protobuf text format)");
+    }
+    const Located e = locate(text, *errors.error);
+    if (e.line < 0) throw ConfigError(source_name + ": " + e.message);
+    throw ConfigError(source_name + ":" + std::to_string(e.line + 1) + ":" +
+                      std::to_string(e.column + 1) + ": " + e.message);
+  }
+  return s;
+}
+
+Scenario load_scenario(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw ConfigError(path + ": cannot open the scenario file (see scenarios/ for examples)");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw ConfigError(path + ": cannot read the scenario file");
+  Scenario s = parse_scenario_text(text.str(), path);
+  validate(s, path);
+  return s;
+}
+
+void validate(const Scenario& s, const std::string& source) {
+  Problems p(source);
+
+  const std::string& name = s.name();
+  const bool bad_name =
+      name.empty() || name == "." || name == ".." ||
+      std::any_of(name.begin(), name.end(), [](char c) {
+        return c == '/' || c == '\\' || std::iscntrl(static_cast<unsigned char>(c)) != 0;
+      });
+  if (bad_name) {
+    p.add("name", "be a non-empty name usable as a file name (no '/', '\\' or control characters)",
+          "\"" + name + "\"");
+  }
+  if (s.map().empty()) p.add("map", "name a built-in map or a map YAML file", "\"\"");
+  if (s.has_start()) {
+    const auto& st = s.start();
+    if (!st.has_x() || !st.has_y()) {
+      p.add("start", "give both x and y in metres, e.g. start { x: 10.1 y: 10.1 }",
+            std::string(st.has_x() ? "only x" : st.has_y() ? "only y" : "neither"));
+    } else {
+      p.finite("start.x", st.x());
+      p.finite("start.y", st.y());
+    }
+  }
+
+  p.at_least("groups", 1, s.groups());
+  p.at_least("robots_per_group", 1, s.robots_per_group());
+  const std::uint64_t robots = std::uint64_t{s.groups()} * s.robots_per_group();
+  if (robots > kMaxRobots) {
+    p.add("groups x robots_per_group", "give at most " + std::to_string(kMaxRobots) + " robots",
+          std::to_string(s.groups()) + " x " + std::to_string(s.robots_per_group()) + " = " +
+              std::to_string(robots));
+  }
+  p.positive("sensing_range_m", s.sensing_range_m());
+  p.in_range("lidar_beams", 4, 4096, s.lidar_beams());
+  p.at_least("max_ticks", 1, s.max_ticks());
+  p.positive("tick_seconds", s.tick_seconds());
+  p.at_least("tick_ms", 1, s.tick_ms());
+
+  const auto& e = s.explore();
+  if (!swarm::scenario::Mode_IsValid(e.mode())) {
+    p.add("explore.mode", "be GROUP_FRONTIER, BASELINE or IDEAL", std::to_string(e.mode()));
+  }
+  p.at_least("explore.replan_threshold_steps", 1, e.replan_threshold_steps());
+  // global_map_delay_rounds: any count of rounds is a valid delay (0 = no delay).
+  p.positive("explore.dbscan_eps_cells", e.dbscan_eps_cells());
+  p.in_range("explore.dbscan_min_points", 1, INT_MAX, e.dbscan_min_points());
+  // 0 turns the small-segment rule off (no segment is that small); it is an ablation, not an error.
+  p.in_range("explore.small_segment_max_cells", 0, INT_MAX, e.small_segment_max_cells());
+  p.non_negative("explore.small_segment_radius_cells", e.small_segment_radius_cells());
+  p.in_range("explore.kmeans_max_iterations", 1, INT_MAX, e.kmeans_max_iterations());
+
+  validate_link(p, "sim_robot", s.links().sim_robot());
+  validate_link(p, "member_leader", s.links().member_leader());
+  validate_link(p, "leader_gcs", s.links().leader_gcs());
+
+  p.throw_if_any();
+}
+
+std::string to_text(const Scenario& s) {
+  std::string out;
+  pb::TextFormat::Printer printer;
+  if (!printer.PrintToString(s, &out)) {
+    throw ConfigError("cannot print scenario '" + s.name() + "'");
+  }
+  return out;
+}
+
+swarm::scenario::Mode parse_mode(const std::string& name) {
+  const std::string n = normalise_mode(name);
+  if (n == "group-frontier") return swarm::scenario::GROUP_FRONTIER;
+  if (n == "baseline") return swarm::scenario::BASELINE;
+  if (n == "ideal") return swarm::scenario::IDEAL;
+  throw ConfigError("unknown mode '" + name + "': expected one of group-frontier, baseline, ideal");
+}
+
+std::string mode_name(swarm::scenario::Mode mode) {
+  switch (mode) {
+    case swarm::scenario::GROUP_FRONTIER:
+      return "group-frontier";
+    case swarm::scenario::BASELINE:
+      return "baseline";
+    case swarm::scenario::IDEAL:
+      return "ideal";
+  }
+  return "mode(" + std::to_string(static_cast<int>(mode)) + ")";
+}
+
+}  // namespace swarm::config

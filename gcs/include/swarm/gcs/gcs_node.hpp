@@ -1,0 +1,50 @@
+// swarm-gcs's node: the Mission wired to its topics, plus the run's outputs. It fuses the
+// leaders' map patches, starts planning rounds (sending each leader the delayed global map),
+// declares completion, shows progress, records the run (run.pb) and, once the simulator stops the
+// run, gathers every agent's report into metrics.json.
+#pragma once
+
+#include <chrono>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "swarm/comm/lockstep.hpp"
+#include "swarm/comm/role.hpp"
+#include "swarm/gcs/mission.hpp"
+#include "swarm/gcs/progress.hpp"
+#include "swarm/record/record.hpp"
+
+namespace swarm::gcs {
+
+class GcsNode {
+ public:
+  GcsNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, const std::string& run_dir,
+          Progress::Style progress);
+  // One tick; returns true once the mission is complete.
+  bool step(const msgs::Clock& clock);
+  // After the run stopped: waits for the agents' reports, writes metrics.json and closes run.pb.
+  void finish();
+
+ private:
+  void on_plan(const msgs::PlanReport& p);
+
+  comm::LockstepAgent& agent_;
+  const comm::RoleSetup& setup_;
+  std::string run_dir_;
+  Mission mission_;
+  Progress progress_;
+  record::RecordWriter record_;
+  comm::Mailbox::Outlet<msgs::RoundStart>& round_;
+  std::unique_ptr<comm::Reader<msgs::AgentReport>> reports_reader_;
+  std::mutex reports_mutex_;
+  std::map<comm::AgentId, msgs::AgentReport> reports_;
+
+  std::uint32_t last_tick_ = 0;
+  std::optional<std::uint32_t> complete_tick_;
+  std::chrono::steady_clock::time_point first_tick_time_{};
+  std::chrono::steady_clock::time_point last_tick_time_{};
+};
+
+}  // namespace swarm::gcs

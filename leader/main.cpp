@@ -1,0 +1,23 @@
+// swarm-leader: a group leader robot and its group's planner. See leader_node.hpp.
+#include "swarm/comm/lockstep.hpp"
+#include "swarm/comm/role.hpp"
+#include "swarm/leader/leader_node.hpp"
+
+int main(int argc, char** argv) {
+  using namespace swarm;
+  comm::RoleOptions options;
+  CLI::App app{"swarm-leader: a group leader (a robot plus its group's exploration planner)"};
+  comm::add_role_flags(app, options, comm::RoleKind::Leader);
+  return comm::run_role(app, argc, argv, "leader", [&] {
+    const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Leader, "leader");
+    comm::Participant participant(setup.dds);
+    comm::LockstepAgent agent(participant, setup.topology, setup.links, setup.topology.leader(options.group));
+    leader::LeaderNode node(agent, setup, options.group);
+    comm::run_lockstep(agent, [&](const msgs::Clock& clock) {
+      node.step(clock);
+      return false;
+    });
+    agent.send_report("leader", node.report_json());
+    return 0;
+  });
+}

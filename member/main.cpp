@@ -1,0 +1,26 @@
+// swarm-member: one group member robot. See member_node.hpp.
+#include <iostream>
+
+#include "swarm/comm/lockstep.hpp"
+#include "swarm/comm/role.hpp"
+#include "swarm/member/member_node.hpp"
+
+int main(int argc, char** argv) {
+  using namespace swarm;
+  comm::RoleOptions options;
+  CLI::App app{"swarm-member: one group member robot of a swarm run"};
+  comm::add_role_flags(app, options, comm::RoleKind::Member);
+  return comm::run_role(app, argc, argv, "member", [&] {
+    const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Member, "member");
+    comm::Participant participant(setup.dds);
+    const comm::AgentId self = setup.topology.robot(options.group, options.index);
+    comm::LockstepAgent agent(participant, setup.topology, setup.links, self);
+    member::MemberNode node(agent, setup, options.group, options.index);
+    comm::run_lockstep(agent, [&](const msgs::Clock& clock) {
+      node.step(clock);
+      return false;
+    });
+    agent.send_report("member", node.report_json());
+    return 0;
+  });
+}

@@ -1,0 +1,32 @@
+#include "swarm/planner/start_cells.hpp"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace swarm::planner {
+
+std::vector<Cell> start_cells(const OccupancyGrid& truth, Cell start, int n) {
+  std::vector<Cell> out;
+  if (n <= 0 || !truth.is_free(start)) return out;
+  // The output doubles as the BFS queue: it is exactly the visit order, cut at n.
+  std::vector<std::uint8_t> seen(truth.size(), 0);
+  out.reserve(static_cast<std::size_t>(n));
+  out.push_back(start);
+  seen[static_cast<std::size_t>(truth.index(start))] = 1;
+  const auto wanted = static_cast<std::size_t>(n);
+  for (std::size_t head = 0; head < out.size() && out.size() < wanted; ++head) {
+    const Cell c = out[head];
+    for (int k = 0; k < 8 && out.size() < wanted; ++k) {
+      const Cell nb{c.x + kNeighbourDx[k], c.y + kNeighbourDy[k]};
+      if (!truth.is_free(nb)) continue;
+      if (k >= 4 && (!truth.is_free({nb.x, c.y}) || !truth.is_free({c.x, nb.y}))) continue;
+      std::uint8_t& s = seen[static_cast<std::size_t>(truth.index(nb))];
+      if (s) continue;
+      s = 1;
+      out.push_back(nb);
+    }
+  }
+  return out;
+}
+
+}  // namespace swarm::planner

@@ -1,0 +1,72 @@
+// Pictures of a run from its record (record.hpp): the explored map with every robot's path, and
+// frontier snapshots like Fig. 10 of the group-frontier paper (shared/PAPERS.md section 1).
+//
+// Image layout: a band of kBandPx rows on top holds a title line and a legend; below it the map,
+// `scale` pixels per cell, with y up (cell row y = 0 is the BOTTOM row of the image). Colours:
+// unknown mid grey, free white, occupied black; each group has one colour of the Okabe-Ito
+// colour-blind-safe palette (group_colour); the start cell is a red X.
+//
+//   auto frames = swarm::record::read_record(run_dir + "/run.pb");
+//   swarm::record::render_map_png(frames, run_dir + "/map.png");
+//   swarm::record::render_frontier_png(frames, 120, run_dir + "/frontiers-120.png");
+//
+// Both throw std::runtime_error when the record has no Header frame, a map version does not
+// decode, or the PNG cannot be written. Thread-safe (no shared state).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "swarm/proto/run_record.pb.h"
+
+namespace swarm::record {
+
+struct Rgb {
+  std::uint8_t r = 0, g = 0, b = 0;
+  friend bool operator==(const Rgb& a, const Rgb& b) {
+    return a.r == b.r && a.g == b.g && a.b == b.b;
+  }
+};
+
+inline constexpr Rgb kUnknownColour{128, 128, 128};
+inline constexpr Rgb kFreeColour{255, 255, 255};
+inline constexpr Rgb kOccupiedColour{0, 0, 0};
+inline constexpr Rgb kStartColour{230, 0, 0};
+inline constexpr int kBandPx = 40;  // title + legend rows above the map
+
+// Colour of group g (0-based); the palette repeats after 7 groups.
+Rgb group_colour(int group);
+
+// Where things land in a rendered image. Pixel columns grow to the right, rows downwards.
+struct RenderGeometry {
+  int width_cells = 0;
+  int height_cells = 0;
+  int scale = 6;  // pixels per cell side
+
+  int image_width() const { return width_cells * scale; }
+  int image_height() const { return kBandPx + height_cells * scale; }
+  // Top-left pixel of cell (x, y).
+  int left(int x) const { return x * scale; }
+  int top(int y) const { return kBandPx + (height_cells - 1 - y) * scale; }
+  // Centre pixel of cell (x, y).
+  int centre_col(int x) const { return left(x) + scale / 2; }
+  int centre_row(int y) const { return top(y) + scale / 2; }
+};
+
+// The geometry render_*_png use for these frames (map size from the Header frame).
+RenderGeometry render_geometry(const std::vector<Frame>& frames, int scale = 6);
+
+// The last map version as background, each robot's path in its group's colour (leaders, robot
+// index 0 of a group, thicker than members), the start cell, a legend and a title line (map,
+// mode, steps and planning rounds from the Summary frame).
+void render_map_png(const std::vector<Frame>& frames, const std::string& png_path, int scale = 6);
+
+// The map version in force at `tick`, the robots at `tick`, and for the planning round at or
+// before `tick` each group's group frontiers filled in its colour, the global frontier segments
+// hatched and outlined (the segment a group chose in case B outlined in its colour), and each
+// robot's waypoint linked to it.
+void render_frontier_png(const std::vector<Frame>& frames, std::uint32_t tick,
+                         const std::string& png_path, int scale = 6);
+
+}  // namespace swarm::record

@@ -1,0 +1,118 @@
+// validate(): every impossible value is an error that names its field, what was expected and
+// what was given.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "swarm/config/scenario.hpp"
+
+namespace {
+
+namespace cfg = swarm::config;
+
+std::string validate_error(const std::string& text) {
+  const swarm::scenario::Scenario s = cfg::parse_scenario_text(text, "t.pbtxt");
+  try {
+    cfg::validate(s, "t.pbtxt");
+  } catch (const cfg::ConfigError& e) {
+    return e.what();
+  }
+  return "(valid)";
+}
+
+struct Impossible {
+  const char* text;   // scenario text with one impossible value
+  const char* error;  // the whole expected message
+};
+
+class ImpossibleValue : public ::testing::TestWithParam<Impossible> {};
+
+TEST_P(ImpossibleValue, ReportsItsField) {
+  EXPECT_EQ(validate_error(GetParam().text), GetParam().error);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Validate, ImpossibleValue,
+    ::testing::Values(
+        Impossible{"groups: 0", "t.pbtxt: field groups: must be >= 1 (got 0)"},
+        Impossible{"robots_per_group: 0", "t.pbtxt: field robots_per_group: must be >= 1 (got 0)"},
+        Impossible{"groups: 200 robots_per_group: 100",
+                   "t.pbtxt: field groups x robots_per_group: must give at most 10000 robots "
+                   "(got 200 x 100 = 20000)"},
+        Impossible{"sensing_range_m: 0",
+                   "t.pbtxt: field sensing_range_m: must be a finite number > 0 (got 0)"},
+        Impossible{"sensing_range_m: -3",
+                   "t.pbtxt: field sensing_range_m: must be a finite number > 0 (got -3)"},
+        Impossible{"sensing_range_m: inf",
+                   "t.pbtxt: field sensing_range_m: must be a finite number > 0 (got inf)"},
+        Impossible{"lidar_beams: 3", "t.pbtxt: field lidar_beams: must be in [4, 4096] (got 3)"},
+        Impossible{"lidar_beams: 5000",
+                   "t.pbtxt: field lidar_beams: must be in [4, 4096] (got 5000)"},
+        Impossible{"max_ticks: 0", "t.pbtxt: field max_ticks: must be >= 1 (got 0)"},
+        Impossible{"tick_seconds: 0",
+                   "t.pbtxt: field tick_seconds: must be a finite number > 0 (got 0)"},
+        Impossible{"tick_seconds: nan",
+                   "t.pbtxt: field tick_seconds: must be a finite number > 0 (got nan)"},
+        Impossible{"tick_ms: 0", "t.pbtxt: field tick_ms: must be >= 1 (got 0)"},
+        Impossible{"name: \"\"",
+                   "t.pbtxt: field name: must be a non-empty name usable as a file name (no '/', "
+                   "'\\' or control characters) (got \"\")"},
+        Impossible{"name: \"a/b\"",
+                   "t.pbtxt: field name: must be a non-empty name usable as a file name (no '/', "
+                   "'\\' or control characters) (got \"a/b\")"},
+        Impossible{"map: \"\"", "t.pbtxt: field map: must name a built-in map or a map YAML file "
+                                "(got \"\")"},
+        Impossible{"start { x: 1 }",
+                   "t.pbtxt: field start: must give both x and y in metres, e.g. start { x: 10.1 "
+                   "y: 10.1 } (got only x)"},
+        Impossible{"start { x: 1 y: -inf }",
+                   "t.pbtxt: field start.y: must be a finite number (got -inf)"},
+        Impossible{"explore { replan_threshold_steps: 0 }",
+                   "t.pbtxt: field explore.replan_threshold_steps: must be >= 1 (got 0)"},
+        Impossible{"explore { dbscan_eps_cells: 0 }",
+                   "t.pbtxt: field explore.dbscan_eps_cells: must be a finite number > 0 (got 0)"},
+        Impossible{"explore { dbscan_min_points: 0 }",
+                   "t.pbtxt: field explore.dbscan_min_points: must be in [1, 2147483647] (got 0)"},
+        Impossible{"explore { small_segment_max_cells: 3000000000 }",
+                   "t.pbtxt: field explore.small_segment_max_cells: must be in [0, 2147483647] "
+                   "(got 3000000000)"},
+        Impossible{"explore { small_segment_radius_cells: -1 }",
+                   "t.pbtxt: field explore.small_segment_radius_cells: must be a finite number >= "
+                   "0 (got -1)"},
+        Impossible{"explore { kmeans_max_iterations: 0 }",
+                   "t.pbtxt: field explore.kmeans_max_iterations: must be in [1, 2147483647] "
+                   "(got 0)"},
+        Impossible{"links { member_leader { loss: 1 } }",
+                   "t.pbtxt: field links.member_leader.loss: must be a probability in [0, 1) "
+                   "(got 1)"},
+        Impossible{"links { sim_robot { loss: -0.1 } }",
+                   "t.pbtxt: field links.sim_robot.loss: must be a probability in [0, 1) "
+                   "(got -0.1)"},
+        Impossible{"links { leader_gcs { bandwidth_bytes_per_s: -5 } }",
+                   "t.pbtxt: field links.leader_gcs.bandwidth_bytes_per_s: must be a finite "
+                   "number >= 0 (got -5)"},
+        Impossible{"links { leader_gcs { delay_ms: -1 } }",
+                   "t.pbtxt: field links.leader_gcs.delay_ms: must be a finite number >= 0 "
+                   "(got -1)"}));
+
+TEST(Validate, ListsEveryProblemOnItsOwnLine) {
+  EXPECT_EQ(validate_error("groups: 0 explore { replan_threshold_steps: 0 }"),
+            "t.pbtxt: field groups: must be >= 1 (got 0)\n"
+            "t.pbtxt: field explore.replan_threshold_steps: must be >= 1 (got 0)");
+}
+
+TEST(Validate, AcceptsTheEdgesOfEveryRange) {
+  EXPECT_EQ(validate_error(R"(
+    groups: 1 robots_per_group: 1 sensing_range_m: 0.01 lidar_beams: 4 max_ticks: 1
+    tick_seconds: 1e-3 tick_ms: 1 seed: 0
+    explore { replan_threshold_steps: 1 global_map_delay_rounds: 0 dbscan_min_points: 1
+              small_segment_max_cells: 0 small_segment_radius_cells: 0 kmeans_max_iterations: 1 }
+    links { sim_robot { loss: 0 bandwidth_bytes_per_s: 0 delay_ms: 0 }
+            member_leader { loss: 0.999 } }
+  )"),
+            "(valid)");
+  EXPECT_EQ(validate_error("lidar_beams: 4096 groups: 100 robots_per_group: 100"), "(valid)");
+}
+
+}  // namespace

@@ -1,0 +1,513 @@
+#include "swarm/planner/explore.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "swarm/planner/frontier.hpp"
+
+namespace swarm::planner {
+namespace {
+
+// A map drawn in ASCII: '#' Occupied, '.' Free, '?' Unknown; any other character is a Free cell
+// whose position is remembered under that character (robots). The first line is the top row, so
+// with H lines, line r holds y = H - 1 - r (grid.hpp: y points up). x is the column.
+struct Art {
+  OccupancyGrid grid;
+  std::map<char, Cell> at;
+};
+
+Art draw(const std::vector<std::string>& rows) {
+  const int h = static_cast<int>(rows.size());
+  const int w = static_cast<int>(rows[0].size());
+  Art a{OccupancyGrid(w, h), {}};
+  for (int r = 0; r < h; ++r) {
+    EXPECT_EQ(static_cast<int>(rows[r].size()), w) << "ragged art line " << r;
+    for (int x = 0; x < w; ++x) {
+      const Cell c{x, h - 1 - r};
+      const char ch = rows[r][x];
+      if (ch == '#') {
+        a.grid.set(c, CellState::Occupied);
+      } else if (ch == '?') {
+        a.grid.set(c, CellState::Unknown);
+      } else {
+        a.grid.set(c, CellState::Free);
+        if (ch != '.') a.at[ch] = c;
+      }
+    }
+  }
+  return a;
+}
+
+std::set<Cell> as_set(const std::vector<Cell>& v) { return {v.begin(), v.end()}; }
+
+bool contains(const std::vector<Cell>& v, Cell c) {
+  return std::find(v.begin(), v.end(), c) != v.end();
+}
+
+void expect_same_plan(const ExplorePlan& a, const ExplorePlan& b) {
+  EXPECT_EQ(a.plan_case, b.plan_case);
+  EXPECT_EQ(a.waypoints, b.waypoints);
+  EXPECT_EQ(a.group_frontiers, b.group_frontiers);
+  EXPECT_EQ(a.group_segments, b.group_segments);
+  EXPECT_EQ(a.global_segments, b.global_segments);
+  EXPECT_EQ(a.chosen_segment, b.chosen_segment);
+  EXPECT_EQ(a.member_segment, b.member_segment);
+  EXPECT_EQ(a.group_to_segment, b.group_to_segment);
+}
+
+// ------------------------------------------------------------------------------------------------
+// Group frontiers
+
+// Stale global map: the group's room is known up to x = 3; everything right of it is unknown.
+const std::vector<std::string> kRoomGlobal = {
+    "##########",  // y=5
+    "#...?????#",  // y=4
+    "#.L.?????#",  // y=3
+    "#...?????#",  // y=2
+    "#...?????#",  // y=1
+    "##########",  // y=0
+};
+// Since the fusion the group has seen x = 4..5 in the two upper rows only.
+const std::vector<std::string> kRoomGroup = {
+    "##########",  // y=5
+    "#.....???#",  // y=4
+    "#.L...???#",  // y=3
+    "#...?????#",  // y=2
+    "#...?????#",  // y=1
+    "##########",  // y=0
+};
+
+TEST(Explore, GroupFrontiersAreLocalFrontiersThatAreNotGlobalOnes) {
+  const Art global = draw(kRoomGlobal);
+  const Art group = draw(kRoomGroup);
+  // Global frontiers: x = 3, y = 1..4 (Free, unknown to the right).
+  EXPECT_EQ(as_set(reachable_frontiers(global.grid, {global.at.at('L')})),
+            (std::set<Cell>{{3, 1}, {3, 2}, {3, 3}, {3, 4}}));
+  // Local frontiers: (3,1), (3,2) still border unknown at x = 4; (3,3), (3,4) no longer do;
+  // (4,3) borders unknown (4,2) below; (5,3), (5,4) border unknown x = 6; (4,4) borders nothing.
+  ExploreInput in;
+  in.global_map = &global.grid;
+  in.group_map = &group.grid;
+  in.leader_positions = {global.at.at('L')};
+  in.member_positions = {group.at.at('L')};
+  const ExplorePlan plan = plan_group_exploration(in, ExploreConfig{});
+  // Group frontiers = {(3,1),(3,2),(4,3),(5,3),(5,4)} minus {(3,1),(3,2),(3,3),(3,4)}, row-major.
+  EXPECT_EQ(plan.group_frontiers, (std::vector<Cell>{{4, 3}, {5, 3}, {5, 4}}));
+  EXPECT_EQ(plan.plan_case, PlanCase::GroupFrontier);
+  ASSERT_EQ(plan.group_segments.size(), 1u);  // the three cells are 8-connected
+  EXPECT_EQ(plan.chosen_segment, 0);
+  ASSERT_EQ(plan.waypoints.size(), 1u);
+  // K-Means k = 1: centroid (14/3, 10/3) = (4.67, 3.33); nearest cell (5,3) (0.47 vs 0.75, 0.75).
+  EXPECT_EQ(plan.waypoints[0], Cell({5, 3}));
+}
+
+TEST(Explore, BaselineIgnoresGroupFrontiersAndPrefersStillOpenGlobalCells) {
+  const Art global = draw(kRoomGlobal);
+  const Art group = draw(kRoomGroup);
+  ExploreInput in;
+  in.global_map = &global.grid;
+  in.group_map = &group.grid;
+  in.leader_positions = {global.at.at('L')};
+  in.member_positions = {group.at.at('L')};
+  ExploreConfig baseline;
+  baseline.use_group_frontiers = false;
+  const ExplorePlan plan = plan_group_exploration(in, baseline);
+  EXPECT_EQ(plan.plan_case, PlanCase::GlobalAssignment);
+  EXPECT_TRUE(plan.group_frontiers.empty());
+  ASSERT_EQ(plan.global_segments.size(), 1u);
+  EXPECT_EQ(plan.global_segments[0], (std::vector<Cell>{{3, 1}, {3, 2}, {3, 3}, {3, 4}}));
+  EXPECT_EQ(plan.chosen_segment, 0);
+  EXPECT_EQ(plan.group_to_segment, (std::vector<int>{0}));
+  // Of the stale segment only (3,1) and (3,2) are still frontiers in the group map; centroid
+  // (3, 1.5) is equidistant from both, the first one in row-major order wins.
+  EXPECT_EQ(plan.waypoints[0], Cell({3, 1}));
+}
+
+// ------------------------------------------------------------------------------------------------
+// Case A
+
+// One room, leader L at (6,3). Openings: right wall x = 14, y = 1..4 -> frontier (13,1..4), W = 4;
+// top wall (1,6) -> frontier (1,5), W = 1; top wall (7,6) -> frontier (7,5), W = 1.
+// Segments in row-major order of their first cell: 0 = right, 1 = (1,5), 2 = (7,5).
+const std::vector<std::string> kCaseA = {
+    "#?#####?#######",  // y=6
+    "#.............#",  // y=5
+    "#..A....B.....?",  // y=4
+    "#.....L.......?",  // y=3
+    "#.............?",  // y=2
+    "#.............?",  // y=1
+    "###############",  // y=0
+};
+
+struct CaseAFixture {
+  Art group = draw(kCaseA);
+  OccupancyGrid global{group.grid.width(), group.grid.height()};  // round 0: nothing fused yet
+  ExploreInput input(std::vector<Cell> members) {
+    ExploreInput in;
+    in.global_map = &global;
+    in.group_map = &group.grid;
+    in.leader_positions = {group.at.at('L')};
+    in.member_positions = std::move(members);
+    return in;
+  }
+};
+
+TEST(Explore, CaseAPicksTheSegmentWithTheLeastDistancePerCell) {
+  CaseAFixture f;
+  const ExplorePlan plan = plan_group_exploration(f.input({f.group.at.at('L')}), ExploreConfig{});
+  ASSERT_EQ(plan.plan_case, PlanCase::GroupFrontier);
+  ASSERT_EQ(plan.group_segments.size(), 3u);
+  EXPECT_EQ(plan.group_segments[0], (std::vector<Cell>{{13, 1}, {13, 2}, {13, 3}, {13, 4}}));
+  EXPECT_EQ(plan.group_segments[1], (std::vector<Cell>{{1, 5}}));
+  EXPECT_EQ(plan.group_segments[2], (std::vector<Cell>{{7, 5}}));
+  // D/W from L (6,3):  right: D = |(13,3) - (6,3)| = 7,         W = 4 -> 1.75   <- least
+  //                    (1,5):  D = sqrt(5^2 + 2^2) = 5.385,   W = 1 -> 5.385
+  //                    (7,5):  D = sqrt(1^2 + 2^2) = 2.236,   W = 1 -> 2.236
+  // The nearest segment is (7,5), but the right one gives more cells per distance.
+  EXPECT_EQ(plan.chosen_segment, 0);
+  // A lone leader: no one to send to small segments. K-Means k = 1 -> centroid (13, 2.5);
+  // (13,2) and (13,3) tie at 0.5, the first in the segment wins.
+  EXPECT_EQ(plan.waypoints, (std::vector<std::optional<Cell>>{Cell{13, 2}}));
+  EXPECT_EQ(plan.member_segment, (std::vector<int>{0}));
+}
+
+TEST(Explore, SmallSegmentRuleSendsExactlyOneMemberToTheNearCornerSegment) {
+  CaseAFixture f;
+  const Cell l = f.group.at.at('L'), a = f.group.at.at('A'), b = f.group.at.at('B');
+  ExploreConfig cfg;
+  cfg.small_segment_radius_cells = 3;  // only (7,5) (D = 2.236) is near enough; (1,5) is 5.385
+  const ExplorePlan plan = plan_group_exploration(f.input({l, a, b}), cfg);
+  ASSERT_EQ(plan.plan_case, PlanCase::GroupFrontier);
+  EXPECT_EQ(plan.chosen_segment, 0);
+  // Hungarian over members A (3,4), B (8,4) for segment (7,5): A 4.123, B 1.414 -> B.
+  EXPECT_EQ(plan.member_segment, (std::vector<int>{0, 0, 2}));
+  EXPECT_EQ(plan.waypoints[2], Cell({7, 5}));
+  // The leader and A share the right segment on two different cells.
+  ASSERT_TRUE(plan.waypoints[0] && plan.waypoints[1]);
+  EXPECT_TRUE(contains(plan.group_segments[0], *plan.waypoints[0]));
+  EXPECT_TRUE(contains(plan.group_segments[0], *plan.waypoints[1]));
+  EXPECT_NE(*plan.waypoints[0], *plan.waypoints[1]);
+}
+
+TEST(Explore, SmallSegmentsTakeAtMostTheNonLeaderMembersNearestFirst) {
+  CaseAFixture f;
+  const Cell l = f.group.at.at('L'), a = f.group.at.at('A'), b = f.group.at.at('B');
+  // Default radius 15: both small segments qualify, and there are two non-leader members.
+  // Hungarian, rows A, B; columns (7,5), (1,5) (nearest to L first):
+  //   A: 4.123, 2.236     B: 1.414, 7.071   -> A->(1,5), B->(7,5): 3.650 < 4.123 + 7.071.
+  const ExplorePlan three = plan_group_exploration(f.input({l, a, b}), ExploreConfig{});
+  EXPECT_EQ(three.member_segment, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(three.waypoints,
+            (std::vector<std::optional<Cell>>{Cell{13, 2}, Cell{1, 5}, Cell{7, 5}}));
+  // Only one non-leader member: it takes the nearest small segment, (7,5), although A is
+  // closer to (1,5); the leader always keeps the main segment.
+  const ExplorePlan two = plan_group_exploration(f.input({l, a}), ExploreConfig{});
+  EXPECT_EQ(two.member_segment, (std::vector<int>{0, 2}));
+  EXPECT_EQ(two.waypoints, (std::vector<std::optional<Cell>>{Cell{13, 2}, Cell{7, 5}}));
+}
+
+TEST(Explore, MembersShareWaypointsWhenTheSegmentHasFewerCells) {
+  // One group frontier cell (7,5) and three robots: all go there.
+  const Art group = draw({
+      "#######?#######",
+      "#.............#",
+      "#..A....B.....#",
+      "#.....L.......#",
+      "###############",
+  });
+  OccupancyGrid global(group.grid.width(), group.grid.height());
+  ExploreInput in;
+  in.global_map = &global;
+  in.group_map = &group.grid;
+  in.leader_positions = {group.at.at('L')};
+  in.member_positions = {group.at.at('L'), group.at.at('A'), group.at.at('B')};
+  const ExplorePlan plan = plan_group_exploration(in, ExploreConfig{});
+  EXPECT_EQ(plan.plan_case, PlanCase::GroupFrontier);
+  EXPECT_EQ(plan.waypoints, std::vector<std::optional<Cell>>(3, Cell{7, 3}));
+}
+
+// ------------------------------------------------------------------------------------------------
+// Case B
+
+// A known room (x = 1..19, y = 1..9) with three openings, seen identically by every leader.
+// Frontier segments, numbered by their first cell in row-major order:
+//   0: right wall,  cells (19,2..5), W = 4
+//   1: left wall,   cells (1,4..6),  W = 3
+//   2: top wall,    cells (9,9), (10,9), W = 2
+// Leaders: 0 at (15,8), 1 at (4,5), 2 at (18,3); a fourth, 3, at (17,4) in one test.
+const std::vector<std::string> kCaseB = {
+    "#########??##########",  // y=10
+    "#...................#",  // y=9
+    "#..............0....#",  // y=8
+    "#...................#",  // y=7
+    "?...................#",  // y=6
+    "?...1...............?",  // y=5
+    "?................3..?",  // y=4
+    "#.................2.?",  // y=3
+    "#...................?",  // y=2
+    "#...................#",  // y=1
+    "#####################",  // y=0
+};
+
+// Group g: its leader plus two members next to it (below and to the left).
+std::vector<Cell> members_of(Cell leader) {
+  return {leader, {leader.x, leader.y - 1}, {leader.x - 1, leader.y}};
+}
+
+TEST(Explore, CaseBMatchesTheHandSolvedHungarian) {
+  const Art world = draw(kCaseB);
+  const std::vector<Cell> leaders = {world.at.at('0'), world.at.at('1'), world.at.at('2')};
+  // C_ij = D_ij / W_j (D = Euclidean distance to the segment's nearest cell):
+  //            seg 0 (W 4)         seg 1 (W 3)               seg 2 (W 2)
+  //   L0 (15,8)  (19,5): 5 -> 1.25   (1,6): 14.142 -> 4.714   (10,9): 5.099 -> 2.550
+  //   L1 (4,5)   (19,5): 15 -> 3.75  (1,5): 3 -> 1.000        (9,9): 6.403 -> 3.202
+  //   L2 (18,3)  (19,3): 1 -> 0.25   (1,4): 17.029 -> 5.676   (10,9): 10 -> 5.000
+  // All six assignments: (0,1,2) 1.25+1+5 = 7.25   (0,2,1) 1.25+3.202+5.676 = 10.13
+  //   (1,0,2) 4.714+3.75+5 = 13.46   (1,2,0) 4.714+3.202+0.25 = 8.17
+  //   (2,0,1) 2.55+3.75+5.676 = 11.98   (2,1,0) 2.55+1+0.25 = 3.80  <- optimum
+  // Greedy by row (L0 takes its cheapest, seg 0) would be 7.25.
+  for (int g = 0; g < 3; ++g) {
+    ExploreInput in;
+    in.global_map = &world.grid;
+    in.group_map = &world.grid;  // nothing new since the fusion: no group frontiers
+    in.leader_positions = leaders;
+    in.group = g;
+    in.member_positions = members_of(leaders[g]);
+    const ExplorePlan plan = plan_group_exploration(in, ExploreConfig{});
+    ASSERT_EQ(plan.plan_case, PlanCase::GlobalAssignment);
+    EXPECT_TRUE(plan.group_frontiers.empty());
+    ASSERT_EQ(plan.global_segments.size(), 3u);
+    EXPECT_EQ(plan.global_segments[0], (std::vector<Cell>{{19, 2}, {19, 3}, {19, 4}, {19, 5}}));
+    EXPECT_EQ(plan.global_segments[1], (std::vector<Cell>{{1, 4}, {1, 5}, {1, 6}}));
+    EXPECT_EQ(plan.global_segments[2], (std::vector<Cell>{{9, 9}, {10, 9}}));
+    EXPECT_EQ(plan.group_to_segment, (std::vector<int>{2, 1, 0}));
+    EXPECT_EQ(plan.chosen_segment, plan.group_to_segment[g]);
+    for (std::size_t m = 0; m < plan.waypoints.size(); ++m) {
+      ASSERT_TRUE(plan.waypoints[m]);
+      EXPECT_TRUE(contains(plan.global_segments[plan.chosen_segment], *plan.waypoints[m]));
+      EXPECT_EQ(plan.member_segment[m], plan.chosen_segment);
+    }
+    if (g == 0) {
+      // Three robots, two cells: K-Means gives (9,9) and (10,9); each is offered twice.
+      // Distances to (10,9) / (9,9): (15,8) 5.099 / 6.083, (15,7) 5.385 / 6.325,
+      // (14,8) 4.123 / 5.099. One robot must take (9,9); the cheapest extra is (15,7) (+0.940).
+      EXPECT_EQ(plan.waypoints,
+                (std::vector<std::optional<Cell>>{Cell{10, 9}, Cell{9, 9}, Cell{10, 9}}));
+    }
+  }
+}
+
+TEST(Explore, CaseBEveryLeaderGetsAConsistentAssignment) {
+  // Same world as above with the leaders moved around: whatever the positions, all leaders
+  // compute the same assignment and no two groups share a segment (3 segments >= 3 groups).
+  const Art world = draw(kCaseB);
+  const std::vector<std::vector<Cell>> layouts = {
+      {{2, 2}, {2, 3}, {3, 2}},     {{10, 5}, {11, 5}, {12, 5}}, {{18, 8}, {3, 8}, {10, 2}},
+      {{15, 8}, {4, 5}, {18, 3}},   {{17, 4}, {18, 4}, {16, 4}}, {{5, 9}, {9, 8}, {18, 9}},
+  };
+  for (const auto& leaders : layouts) {
+    std::vector<int> reference;
+    std::set<int> taken;
+    for (int g = 0; g < 3; ++g) {
+      ExploreInput in;
+      in.global_map = &world.grid;
+      in.group_map = &world.grid;
+      in.leader_positions = leaders;
+      in.group = g;
+      in.member_positions = {leaders[g]};
+      in.round = 4;
+      const ExplorePlan plan = plan_group_exploration(in, ExploreConfig{});
+      ASSERT_EQ(plan.plan_case, PlanCase::GlobalAssignment);
+      if (g == 0) reference = plan.group_to_segment;
+      EXPECT_EQ(plan.group_to_segment, reference);
+      EXPECT_TRUE(taken.insert(plan.chosen_segment).second)
+          << "group " << g << " shares segment " << plan.chosen_segment;
+    }
+  }
+}
+
+TEST(Explore, CaseBGroupLeftWithoutASegmentTakesItsCheapest) {
+  const Art world = draw(kCaseB);
+  // Four leaders, three segments. L3 (17,4): seg 0 (19,4) 2 -> 0.5, seg 1 (1,4) 16 -> 5.333,
+  // seg 2 (10,9) 8.602 -> 4.301. Adding L3 to the optimum above costs at least
+  // 0.5 + 1 + 2.55 = 4.05 > 3.80, so L3 is left out (-1) and shares seg 0, its cheapest.
+  const std::vector<Cell> leaders = {world.at.at('0'), world.at.at('1'), world.at.at('2'),
+                                     world.at.at('3')};
+  ExploreInput in;
+  in.global_map = &world.grid;
+  in.group_map = &world.grid;
+  in.leader_positions = leaders;
+  in.group = 3;
+  in.member_positions = {leaders[3]};
+  const ExplorePlan plan = plan_group_exploration(in, ExploreConfig{});
+  EXPECT_EQ(plan.group_to_segment, (std::vector<int>{2, 1, 0, -1}));
+  EXPECT_EQ(plan.chosen_segment, 0);
+  EXPECT_TRUE(contains(plan.global_segments[0], *plan.waypoints[0]));
+}
+
+TEST(Explore, BaselineNeverReturnsCaseA) {
+  // Every map above, every group, several rounds: with use_group_frontiers = false it is always
+  // case B (or NoFrontier), even where case A applies with the full planner.
+  const Art room_global = draw(kRoomGlobal), room_group = draw(kRoomGroup);
+  CaseAFixture a;
+  const Art b = draw(kCaseB);
+  struct Scene {
+    const OccupancyGrid* global;
+    const OccupancyGrid* group;
+    std::vector<Cell> leaders;
+  };
+  const std::vector<Scene> scenes = {
+      {&room_global.grid, &room_group.grid, {room_global.at.at('L')}},
+      {&a.global, &a.group.grid, {a.group.at.at('L')}},
+      {&b.grid, &b.grid, {b.at.at('0'), b.at.at('1'), b.at.at('2')}},
+  };
+  ExploreConfig baseline;
+  baseline.use_group_frontiers = false;
+  for (const Scene& s : scenes) {
+    for (int g = 0; g < static_cast<int>(s.leaders.size()); ++g) {
+      for (int round = 0; round < 3; ++round) {
+        ExploreInput in;
+        in.global_map = s.global;
+        in.group_map = s.group;
+        in.leader_positions = s.leaders;
+        in.group = g;
+        in.member_positions = {s.leaders[g]};
+        in.round = round;
+        const ExplorePlan plan = plan_group_exploration(in, baseline);
+        EXPECT_NE(plan.plan_case, PlanCase::GroupFrontier);
+        EXPECT_TRUE(plan.group_frontiers.empty());
+        EXPECT_TRUE(plan.group_segments.empty());
+      }
+    }
+  }
+  // The case-A scene: nothing fused yet, so the baseline has no global frontier at all.
+  ExploreInput in;
+  in.global_map = &a.global;
+  in.group_map = &a.group.grid;
+  in.leader_positions = {a.group.at.at('L')};
+  in.member_positions = {a.group.at.at('L')};
+  EXPECT_EQ(plan_group_exploration(in, baseline).plan_case, PlanCase::NoFrontier);
+  EXPECT_EQ(plan_group_exploration(in, ExploreConfig{}).plan_case, PlanCase::GroupFrontier);
+}
+
+// ------------------------------------------------------------------------------------------------
+// No frontier, determinism, speed
+
+TEST(Explore, NoFrontierOnAFullyKnownMap) {
+  const Art world = draw({
+      "########",
+      "#..#...#",
+      "#.L#.A.#",
+      "#......#",
+      "########",
+  });
+  ExploreInput in;
+  in.global_map = &world.grid;
+  in.group_map = &world.grid;
+  in.leader_positions = {world.at.at('L')};
+  in.member_positions = {world.at.at('L'), world.at.at('A')};
+  for (bool groups : {true, false}) {
+    ExploreConfig cfg;
+    cfg.use_group_frontiers = groups;
+    const ExplorePlan plan = plan_group_exploration(in, cfg);
+    EXPECT_EQ(plan.plan_case, PlanCase::NoFrontier);
+    EXPECT_EQ(plan.waypoints, std::vector<std::optional<Cell>>(2, std::nullopt));
+    EXPECT_EQ(plan.chosen_segment, -1);
+    EXPECT_TRUE(plan.group_frontiers.empty());
+  }
+}
+
+TEST(Explore, UnreachableFrontiersDoNotCount) {
+  // The only unknown cell (5,2) is behind walls: its frontier cell (4,2) is a sealed pocket.
+  const Art world = draw({
+      "#######",
+      "#..#.?#",
+      "#.L####",
+      "#######",
+  });
+  ExploreInput in;
+  in.global_map = &world.grid;
+  in.group_map = &world.grid;
+  in.leader_positions = {world.at.at('L')};
+  in.member_positions = {world.at.at('L')};
+  EXPECT_EQ(plan_group_exploration(in, ExploreConfig{}).plan_case, PlanCase::NoFrontier);
+}
+
+// 100 x 100, three groups: the stale global map knows the left half, with unknown specks on a
+// lattice (thousands of frontier cells); group 1 has since seen a band of the right half.
+struct BigWorld {
+  OccupancyGrid global{100, 100};
+  OccupancyGrid group{100, 100};
+  std::vector<Cell> leaders = {{11, 10}, {41, 50}, {21, 90}};
+  BigWorld() {
+    for (int y = 0; y < 100; ++y) {
+      for (int x = 0; x < 100; ++x) {
+        const bool wall = x == 0 || y == 0 || x == 99 || y == 99 || (x == 30 && y % 20 < 15);
+        const bool speck = x % 3 == 1 && y % 3 == 1;  // ~2,000 frontier cells around them
+        CellState g = CellState::Unknown;
+        if (wall) g = CellState::Occupied;
+        else if (x < 50 && !speck) g = CellState::Free;
+        global.set({x, y}, g);
+        CellState l = g;
+        if (!wall && x >= 50 && x < 70 && y > 30 && y < 70 && !speck) l = CellState::Free;
+        group.set({x, y}, l);
+      }
+    }
+  }
+  ExploreInput input(int round) const {
+    ExploreInput in;
+    in.global_map = &global;
+    in.group_map = &group;
+    in.leader_positions = leaders;
+    in.group = 1;
+    in.member_positions = {leaders[1], {41, 51}, {40, 51}};
+    in.round = round;
+    return in;
+  }
+};
+
+TEST(Explore, SameInputGivesTheIdenticalPlan) {
+  const BigWorld w;
+  ASSERT_GT(find_frontiers(w.global).size(), 2000u);
+  for (bool groups : {true, false}) {
+    ExploreConfig cfg;
+    cfg.use_group_frontiers = groups;
+    const ExplorePlan a = plan_group_exploration(w.input(3), cfg);
+    const ExplorePlan b = plan_group_exploration(w.input(3), cfg);
+    EXPECT_EQ(a.plan_case, groups ? PlanCase::GroupFrontier : PlanCase::GlobalAssignment);
+    expect_same_plan(a, b);
+    // A copy of the maps (different addresses) changes nothing either.
+    const BigWorld copy = w;
+    expect_same_plan(a, plan_group_exploration(copy.input(3), cfg));
+    for (const auto& wp : a.waypoints) EXPECT_TRUE(wp.has_value());
+  }
+}
+
+TEST(Explore, FastOnAHundredByHundredGrid) {
+  const BigWorld w;
+  for (bool groups : {true, false}) {
+    ExploreConfig cfg;
+    cfg.use_group_frontiers = groups;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int round = 0; round < 10; ++round) {
+      const ExplorePlan p = plan_group_exploration(w.input(round), cfg);
+      ASSERT_NE(p.plan_case, PlanCase::NoFrontier);
+    }
+    const double ms_per_round =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() /
+        10;
+    RecordProperty(groups ? "ms_per_round_group" : "ms_per_round_baseline",
+                   std::to_string(ms_per_round));
+    EXPECT_LT(ms_per_round, 100.0);  // typically a few ms; generous for loaded CI machines
+  }
+}
+
+}  // namespace
+}  // namespace swarm::planner

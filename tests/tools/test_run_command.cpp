@@ -1,0 +1,324 @@
+// `swarm run` in pieces (flags, process list, metrics summary) and whole, with shell scripts
+// standing in for the role binaries; `swarm render` on a run directory.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "run_command.hpp"
+#include "swarm/record/record.hpp"
+
+namespace fs = std::filesystem;
+using namespace swarm::tools;
+namespace cfg = swarm::config;
+
+namespace {
+
+class TempDir {
+ public:
+  TempDir() {
+    path_ = fs::temp_directory_path() /
+            ("swarm-run-command-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() { fs::remove_all(path_); }
+  std::string str() const { return path_.string(); }
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  static inline int counter_ = 0;
+  fs::path path_;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void spit(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+}
+
+bool contains(const std::string& haystack, const std::string& needle) {
+  return haystack.find(needle) != std::string::npos;
+}
+
+// Shell scripts named like the role binaries. Each prints its arguments (into its log); the GCS
+// copies a prepared run record and metrics file into --run-dir; `leader_script` is the body of
+// every leader.
+std::string fake_bin(const TempDir& dir, const std::string& leader_script = "exit 0",
+                     const std::string& sim_script = "exit 0") {
+  const std::string bin = dir.file("bin");
+  const std::string fixtures = dir.file("fixtures");
+  fs::create_directories(bin);
+  fs::create_directories(fixtures);
+  {
+    swarm::record::RecordWriter w(fixtures + "/run.pb");
+    swarm::record::Frame f;
+    f.mutable_header()->set_width(20);
+    f.mutable_header()->set_height(10);
+    f.mutable_header()->set_groups(1);
+    f.mutable_header()->set_robots_per_group(2);
+    w.append(f);
+    swarm::record::Frame s;
+    s.mutable_summary()->set_steps(368);
+    s.mutable_summary()->set_planning_rounds(17);
+    w.append(s);
+  }
+  spit(fixtures + "/metrics.json",
+       R"({"steps": 368, "steps_to_99": 351, "planning_rounds": 17, "explored_fraction": 0.995,
+           "timing": {"wall_seconds": 12.5}, "traffic": {"total_bytes": 1234567}})");
+  const std::string args = "echo \"args: $*\"\n";
+  const std::string run_dir =
+      "while [ $# -gt 0 ]; do case \"$1\" in --run-dir) RUN=\"$2\"; shift;; esac; shift; done\n";
+  auto script = [&](const std::string& name, const std::string& body) {
+    const std::string path = bin + "/" + name;
+    spit(path, "#!/bin/sh\n" + args + body + "\n");
+    ::chmod(path.c_str(), 0755);
+  };
+  script("swarm-sim", sim_script);
+  script("swarm-member", "exit 0");
+  script("swarm-leader", leader_script);
+  script("swarm-gcs", run_dir + "cp " + fixtures + "/run.pb \"$RUN/run.pb\"\ncp " + fixtures +
+                          "/metrics.json \"$RUN/metrics.json\"\nprintf 'progress 100%%\\n'");
+  return bin;
+}
+
+RunOptions small_run(const TempDir& dir, const std::string& bin) {
+  RunOptions o;
+  o.overrides.map = "small";
+  o.overrides.groups = 1;
+  o.overrides.robots_per_group = 2;
+  o.out_dir = dir.file("run");
+  o.bin_dir = bin;
+  o.timeout = std::chrono::seconds(60);
+  return o;
+}
+
+}  // namespace
+
+TEST(RunOverrides, MapChangeClearsTheStartUnlessStartIsGiven) {
+  swarm::scenario::Scenario s;
+  s.set_map("maze1");
+  s.mutable_start()->set_x(1);
+  s.mutable_start()->set_y(2);
+  RunOverrides o;
+  o.map = "maze1";  // the same map keeps the start
+  apply_overrides(s, o);
+  EXPECT_TRUE(s.has_start());
+  o.map = "maze2";
+  apply_overrides(s, o);
+  EXPECT_FALSE(s.has_start());
+  EXPECT_EQ(s.map(), "maze2");
+  o.map = "open";
+  o.start = "3.5,-4";
+  apply_overrides(s, o);
+  ASSERT_TRUE(s.has_start());
+  EXPECT_DOUBLE_EQ(s.start().x(), 3.5);
+  EXPECT_DOUBLE_EQ(s.start().y(), -4);
+}
+
+TEST(RunOverrides, FieldsAndModes) {
+  swarm::scenario::Scenario s;
+  RunOverrides o;
+  o.groups = 4;
+  o.robots_per_group = 2;
+  o.seed = 99;
+  o.max_ticks = 123;
+  o.mode = "ideal";
+  apply_overrides(s, o);
+  EXPECT_EQ(s.groups(), 4u);
+  EXPECT_EQ(s.robots_per_group(), 2u);
+  EXPECT_EQ(s.seed(), 99u);
+  EXPECT_EQ(s.max_ticks(), 123u);
+  EXPECT_EQ(s.explore().mode(), swarm::scenario::IDEAL);
+}
+
+TEST(RunOverrides, MalformedValuesAreConfigErrorsNamingTheFlag) {
+  swarm::scenario::Scenario s;
+  RunOverrides o;
+  o.start = "3;4";
+  try {
+    apply_overrides(s, o);
+    FAIL() << "no error";
+  } catch (const cfg::ConfigError& e) {
+    EXPECT_TRUE(contains(e.what(), "--start")) << e.what();
+    EXPECT_TRUE(contains(e.what(), "3;4")) << e.what();
+  }
+  RunOverrides m;
+  m.mode = "fastest";
+  EXPECT_THROW(apply_overrides(s, m), cfg::ConfigError);
+}
+
+TEST(RunProcesses, NamesArgumentsAndLogs) {
+  swarm::scenario::Scenario s;
+  s.set_groups(2);
+  s.set_robots_per_group(3);
+  RunLaunch l;
+  l.run_dir = "/r";
+  l.scenario_path = "/r/scenario.pbtxt";
+  l.bin_dir = "/b";
+  l.domain_id = 42;
+  l.partition = "swarm-1-2";
+  const auto procs = build_run_processes(l, s);
+  std::vector<std::string> names;
+  for (const auto& p : procs) names.push_back(p.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"sim", "gcs", "leader-0", "leader-1", "member-0-1",
+                                             "member-0-2", "member-1-1", "member-1-2"}));
+  const std::vector<std::string> common = {"--scenario", "/r/scenario.pbtxt", "--run-dir", "/r",
+                                           "--domain",   "42",                "--partition",
+                                           "swarm-1-2"};
+  auto expect_args = [&](const ProcessSpec& p, const std::string& exe,
+                         std::vector<std::string> role, std::vector<std::string> tail) {
+    std::vector<std::string> want{"/b/" + exe};
+    want.insert(want.end(), role.begin(), role.end());
+    want.insert(want.end(), common.begin(), common.end());
+    want.insert(want.end(), tail.begin(), tail.end());
+    EXPECT_EQ(p.argv, want) << p.name;
+    EXPECT_EQ(p.log_path, "/r/logs/" + p.name + ".log");
+  };
+  expect_args(procs[0], "swarm-sim", {}, {});
+  expect_args(procs[1], "swarm-gcs", {}, {"--progress", "plain"});
+  expect_args(procs[3], "swarm-leader", {"--group", "1"}, {});
+  expect_args(procs[5], "swarm-member", {"--group", "0", "--index", "2"}, {});
+  EXPECT_TRUE(procs[1].echo_stdout);
+  EXPECT_FALSE(procs[0].echo_stdout);
+  l.progress_bar = true;
+  EXPECT_EQ(build_run_processes(l, s)[1].argv.back(), "bar");
+}
+
+TEST(RunProcesses, DomainPartitionAndDefaultDir) {
+  EXPECT_EQ(domain_id_for(0), 1);
+  EXPECT_EQ(domain_id_for(199), 200);
+  EXPECT_EQ(domain_id_for(200), 1);
+  EXPECT_EQ(partition_name(77, 123456789), "swarm-77-123456789");
+  swarm::scenario::Scenario s;
+  s.set_map("/some/where/office.yaml");
+  s.mutable_explore()->set_mode(swarm::scenario::BASELINE);
+  s.set_seed(7);
+  const std::string d = default_run_dir(s, 0);
+  EXPECT_TRUE(std::regex_match(d, std::regex(R"(runs/\d{8}-\d{6}-office-baseline-s7)"))) << d;
+}
+
+TEST(RunCommandHelpers, LastLinesKeepWhatATerminalShows) {
+  TempDir dir;
+  spit(dir.file("log"), "1\n2\n3\n4\r\n10%\r50%\r100%\n");
+  EXPECT_EQ(last_lines(dir.file("log"), 3), (std::vector<std::string>{"3", "4", "100%"}));
+  EXPECT_EQ(last_lines(dir.file("log"), 10).size(), 5u);
+  EXPECT_TRUE(last_lines(dir.file("missing"), 10).empty());
+}
+
+TEST(RunCommandHelpers, MetricsSummary) {
+  TempDir dir;
+  spit(dir.file("m.json"),
+       R"({"steps": 368, "steps_to_99": 351, "planning_rounds": 17, "explored_fraction": 0.995,
+           "timing": {"wall_seconds": 12.5}, "traffic": {"total_bytes": 1234567}})");
+  const std::string s = summarize_metrics(dir.file("m.json"));
+  EXPECT_TRUE(contains(s, "steps            368 (99 % explored at step 351)")) << s;
+  EXPECT_TRUE(contains(s, "planning rounds  17")) << s;
+  EXPECT_TRUE(contains(s, "explored         99.5 %")) << s;
+  EXPECT_TRUE(contains(s, "wall time        12.5 s (29.4 ticks/s)")) << s;
+  EXPECT_TRUE(contains(s, "traffic          1.23 MB")) << s;
+  spit(dir.file("bad.json"), "{not json");
+  EXPECT_THROW((void)summarize_metrics(dir.file("bad.json")), std::runtime_error);
+  EXPECT_THROW((void)summarize_metrics(dir.file("none.json")), std::runtime_error);
+}
+
+TEST(RunCommand, SuccessWritesTheRunDirectoryPictureAndSummary) {
+  TempDir dir;
+  const RunOptions o = small_run(dir, fake_bin(dir));
+  std::ostringstream out, err;
+  ASSERT_EQ(run_command(o, out, err), 0) << err.str();
+  const std::string run = o.out_dir;
+  EXPECT_TRUE(contains(out.str(), "steps            368")) << out.str();
+  EXPECT_TRUE(contains(out.str(), "run dir: " + run)) << out.str();
+  EXPECT_TRUE(fs::exists(run + "/map.png"));
+  // The roles got one scenario file, written from the flags.
+  const auto scenario = cfg::load_scenario(run + "/scenario.pbtxt");
+  EXPECT_EQ(scenario.map(), "small");
+  EXPECT_EQ(scenario.groups(), 1u);
+  EXPECT_TRUE(scenario.has_start());  // resolved, so every role uses the same one
+  const std::string leader_log = slurp(run + "/logs/leader-0.log");
+  EXPECT_TRUE(std::regex_search(
+      leader_log, std::regex("args: --group 0 --scenario " + run +
+                             "/scenario.pbtxt --run-dir " + run + " --domain \\d+ --partition swarm-\\d+-\\d+")))
+      << leader_log;
+  EXPECT_TRUE(contains(slurp(run + "/logs/member-0-1.log"), "--index 1"));
+  EXPECT_TRUE(contains(slurp(run + "/logs/gcs.log"), "--progress "));
+  EXPECT_TRUE(contains(slurp(run + "/logs/gcs.log"), "progress 100%"));
+
+  // `swarm render` on the same directory.
+  std::ostringstream rout, rerr;
+  RenderOptions r;
+  r.run_dir = run;
+  r.tick = 5;
+  EXPECT_EQ(render_command(r, rout, rerr), 0) << rerr.str();
+  EXPECT_TRUE(fs::exists(run + "/frontiers-5.png"));
+}
+
+TEST(RunCommand, AFailingRoleIsNamedWithItsLogTail) {
+  TempDir dir;
+  const RunOptions o =
+      small_run(dir, fake_bin(dir, "echo 'no route to planner' >&2; exit 3", "exec sleep 30"));
+  std::ostringstream out, err;
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(run_command(o, out, err), 1);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+  const std::string log = o.out_dir + "/logs/leader-0.log";
+  EXPECT_TRUE(contains(err.str(), "swarm run: process leader-0 failed (exit code 3); its log: " + log))
+      << err.str();
+  EXPECT_TRUE(contains(err.str(), "  | no route to planner")) << err.str();
+}
+
+TEST(RunCommand, BadFlagsAndScenariosExit2) {
+  TempDir dir;
+  const std::string bin = fake_bin(dir);
+  auto run_with = [&](auto tweak) {
+    RunOptions o = small_run(dir, bin);
+    tweak(o);
+    std::ostringstream out, err;
+    const int rc = run_command(o, out, err);
+    EXPECT_TRUE(err.str().rfind("swarm run: ", 0) == 0) << err.str();
+    return rc;
+  };
+  EXPECT_EQ(run_with([](RunOptions& o) { o.overrides.mode = "fastest"; }), 2);
+  EXPECT_EQ(run_with([](RunOptions& o) { o.overrides.start = "x"; }), 2);
+  EXPECT_EQ(run_with([](RunOptions& o) { o.overrides.groups = 0; }), 2);
+  EXPECT_EQ(run_with([](RunOptions& o) { o.overrides.map = "no-such-map"; }), 2);
+  EXPECT_EQ(run_with([&](RunOptions& o) { o.scenario_path = dir.file("missing.pbtxt"); }), 2);
+  spit(dir.file("file"), "");
+  EXPECT_EQ(run_with([&](RunOptions& o) { o.out_dir = dir.file("file") + "/run"; }), 2);
+}
+
+TEST(RunCommand, MissingRoleBinaryExits1BeforeCreatingAnything) {
+  TempDir dir;
+  RunOptions o = small_run(dir, dir.file("empty-bin"));
+  std::ostringstream out, err;
+  EXPECT_EQ(run_command(o, out, err), 1);
+  EXPECT_TRUE(contains(err.str(), "swarm-sim")) << err.str();
+  EXPECT_FALSE(fs::exists(o.out_dir));
+}
+
+TEST(RenderCommand, MissingOrDamagedRunDirExits2) {
+  TempDir dir;
+  std::ostringstream out, err;
+  RenderOptions r;
+  r.run_dir = dir.file("nope");
+  EXPECT_EQ(render_command(r, out, err), 2);
+  EXPECT_TRUE(contains(err.str(), "not a directory")) << err.str();
+  r.run_dir = dir.str();
+  EXPECT_EQ(render_command(r, out, err), 2);  // no run.pb
+  spit(dir.file("run.pb"), "\x10garbage");
+  std::ostringstream err2;
+  EXPECT_EQ(render_command(r, out, err2), 2);
+  EXPECT_TRUE(contains(err2.str(), "truncated") || contains(err2.str(), "corrupt")) << err2.str();
+}

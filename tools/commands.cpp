@@ -1,0 +1,68 @@
+#include "commands.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+#include "swarm/record/record.hpp"
+#include "swarm/record/render.hpp"
+
+namespace swarm::tools {
+
+namespace fs = std::filesystem;
+
+int render_command(const RenderOptions& o, std::ostream& out, std::ostream& err) {
+  std::error_code ec;
+  if (!fs::is_directory(o.run_dir, ec)) {
+    err << "swarm render: " << o.run_dir
+        << " is not a directory; give a run directory written by `swarm run` (runs/...)\n";
+    return 2;
+  }
+  const std::string record = swarm::record::run_record_path(o.run_dir);
+  if (!fs::exists(record, ec)) {
+    err << "swarm render: " << o.run_dir << " has no " << swarm::record::kRunRecordFile
+        << "; did the run finish? (its logs are in " << (fs::path(o.run_dir) / "logs").string()
+        << ")\n";
+    return 2;
+  }
+  std::string png = o.out_path;
+  try {
+    const auto frames = swarm::record::read_record(record);
+    if (o.tick) {
+      if (png.empty()) {
+        png = (fs::path(o.run_dir) / ("frontiers-" + std::to_string(*o.tick) + ".png")).string();
+      }
+      swarm::record::render_frontier_png(frames, *o.tick, png, o.scale);
+    } else {
+      if (png.empty()) png = (fs::path(o.run_dir) / "map.png").string();
+      swarm::record::render_map_png(frames, png, o.scale);
+    }
+  } catch (const std::exception& e) {
+    err << "swarm render: " << e.what() << "\n";
+    return 2;
+  }
+  out << png << "\n";
+  return 0;
+}
+
+int bench_command(const std::string& bin_dir, const std::vector<std::string>& args,
+                  std::ostream& err) {
+  const std::string exe = (fs::path(bin_dir) / "swarm-bench-planner").string();
+  if (::access(exe.c_str(), X_OK) != 0) {
+    err << "swarm bench: " << exe
+        << " is not built; configure with -DSWARM_BUILD_BENCH=ON and build the "
+           "swarm-bench-planner target\n";
+    return 2;
+  }
+  std::vector<char*> argv{const_cast<char*>(exe.c_str())};
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  err.flush();
+  ::execv(exe.c_str(), argv.data());
+  err << "swarm bench: cannot run " << exe << ": " << std::strerror(errno) << "\n";
+  return 2;
+}
+
+}  // namespace swarm::tools

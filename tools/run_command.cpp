@@ -1,0 +1,364 @@
+#include "run_command.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "swarm/record/record.hpp"
+#include "swarm/record/render.hpp"
+
+namespace swarm::tools {
+namespace {
+
+namespace fs = std::filesystem;
+namespace cfg = swarm::config;
+
+bool is_builtin_map(const std::string& map) {
+  const auto names = cfg::builtin_map_names();
+  return std::find(names.begin(), names.end(), map) != names.end();
+}
+
+std::string map_label(const std::string& map) {
+  if (is_builtin_map(map)) return map;
+  const std::string stem = fs::path(map).stem().string();
+  return stem.empty() ? "map" : stem;
+}
+
+// "3.5,4" -> (3.5, 4); nullopt when malformed.
+std::optional<std::pair<double, double>> parse_xy(const std::string& text) {
+  const auto comma = text.find(',');
+  if (comma == std::string::npos) return std::nullopt;
+  auto number = [](const std::string& s) -> std::optional<double> {
+    if (s.empty()) return std::nullopt;
+    std::size_t used = 0;
+    try {
+      const double v = std::stod(s, &used);
+      if (used != s.size() || !std::isfinite(v)) return std::nullopt;
+      return v;
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  };
+  const auto x = number(text.substr(0, comma));
+  const auto y = number(text.substr(comma + 1));
+  if (!x || !y) return std::nullopt;
+  return std::make_pair(*x, *y);
+}
+
+std::string format_bytes(double bytes) {
+  const char* units[] = {"B", "kB", "MB", "GB", "TB"};
+  int u = 0;
+  while (bytes >= 1000.0 && u < 4) {
+    bytes /= 1000.0;
+    ++u;
+  }
+  char buf[32];
+  std::snprintf(buf, sizeof buf, u == 0 ? "%.0f %s" : "%.2f %s", bytes, units[u]);
+  return buf;
+}
+
+// The first number found under any of `keys`, searching the top level first, then nested
+// objects breadth-first (the GCS may group its metrics: {"timing": {"wall_seconds": ...}}).
+std::optional<double> find_number(const nlohmann::json& root,
+                                  std::initializer_list<const char*> keys) {
+  std::deque<const nlohmann::json*> queue{&root};
+  while (!queue.empty()) {
+    const nlohmann::json* j = queue.front();
+    queue.pop_front();
+    if (!j->is_object()) continue;
+    for (const char* k : keys) {
+      const auto it = j->find(k);
+      if (it != j->end() && it->is_number()) return it->get<double>();
+    }
+    for (const auto& [key, value] : j->items()) {
+      if (value.is_object()) queue.push_back(&value);
+    }
+  }
+  return std::nullopt;
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.close();
+  if (!out) {
+    throw cfg::ConfigError("cannot write " + path + " (" + std::strerror(errno) +
+                           "); choose a writable run directory with --out DIR");
+  }
+}
+
+}  // namespace
+
+void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o) {
+  if (o.map) {
+    std::string map = *o.map;
+    // A path on the command line is relative to the working directory, not the scenario file.
+    if (!is_builtin_map(map)) map = fs::absolute(map).lexically_normal().string();
+    if (map != s.map() && !o.start) s.clear_start();
+    s.set_map(map);
+  }
+  if (o.start) {
+    const auto xy = parse_xy(*o.start);
+    if (!xy) {
+      throw cfg::ConfigError(
+          "--start: expected X,Y in metres in the map frame, e.g. --start 3.5,4 (got '" +
+          *o.start + "')");
+    }
+    s.mutable_start()->set_x(xy->first);
+    s.mutable_start()->set_y(xy->second);
+  }
+  if (o.groups) s.set_groups(*o.groups);
+  if (o.robots_per_group) s.set_robots_per_group(*o.robots_per_group);
+  if (o.mode) s.mutable_explore()->set_mode(cfg::parse_mode(*o.mode));
+  if (o.seed) s.set_seed(*o.seed);
+  if (o.max_ticks) s.set_max_ticks(*o.max_ticks);
+}
+
+PreparedRun prepare_run(const RunOptions& options) {
+  const std::string scenario_path =
+      options.scenario_path.empty()
+          ? (fs::path(cfg::data_dir()) / "scenarios" / "default.pbtxt").string()
+          : options.scenario_path;
+  swarm::scenario::Scenario s = cfg::load_scenario(scenario_path);
+  const std::string scenario_dir = fs::absolute(scenario_path).parent_path().string();
+  apply_overrides(s, options.overrides);
+  cfg::validate(s, scenario_path + " (with the command-line flags)");
+
+  PreparedRun run{cfg::resolve_world(s, scenario_dir, scenario_path), {}};
+  swarm::scenario::Scenario& used = run.world.scenario;
+  // The roles read RUN_DIR/scenario.pbtxt, whose folder is the run directory: a map file must
+  // be named absolutely there.
+  if (!is_builtin_map(used.map())) used.set_map(fs::absolute(run.world.map_path).string());
+
+  const std::string dir =
+      options.out_dir.empty() ? default_run_dir(used, std::time(nullptr)) : options.out_dir;
+  RunLaunch& l = run.launch;
+  l.run_dir = fs::absolute(dir).lexically_normal().string();
+  if (!l.run_dir.empty() && l.run_dir.size() > 1 && l.run_dir.back() == '/') l.run_dir.pop_back();
+  std::error_code ec;
+  fs::create_directories(fs::path(l.run_dir) / "logs", ec);
+  if (ec) {
+    throw cfg::ConfigError("cannot create the run directory " + l.run_dir + " (" + ec.message() +
+                           "); choose another with --out DIR");
+  }
+  l.scenario_path = (fs::path(l.run_dir) / "scenario.pbtxt").string();
+  write_text_file(l.scenario_path, cfg::to_text(used));
+
+  l.bin_dir = options.bin_dir.empty() ? executable_dir() : options.bin_dir;
+  const pid_t pid = ::getpid();
+  l.domain_id = domain_id_for(pid);
+  const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                      std::chrono::system_clock::now().time_since_epoch())
+                      .count();
+  l.partition = partition_name(pid, static_cast<std::int64_t>(ns));
+  l.progress_bar = ::isatty(STDOUT_FILENO) != 0;
+  return run;
+}
+
+std::vector<ProcessSpec> build_run_processes(const RunLaunch& l,
+                                             const swarm::scenario::Scenario& s) {
+  const fs::path bin(l.bin_dir);
+  const fs::path logs = fs::path(l.run_dir) / "logs";
+  const std::vector<std::string> common = {"--scenario", l.scenario_path,
+                                           "--run-dir",  l.run_dir,
+                                           "--domain",   std::to_string(l.domain_id),
+                                           "--partition", l.partition};
+  auto spec = [&](const std::string& name, const std::string& exe,
+                  const std::vector<std::string>& role_args) {
+    ProcessSpec p;
+    p.name = name;
+    p.argv = {(bin / exe).string()};
+    p.argv.insert(p.argv.end(), role_args.begin(), role_args.end());
+    p.argv.insert(p.argv.end(), common.begin(), common.end());
+    p.log_path = (logs / (name + ".log")).string();
+    return p;
+  };
+  std::vector<ProcessSpec> procs;
+  procs.push_back(spec("sim", "swarm-sim", {}));
+  ProcessSpec gcs = spec("gcs", "swarm-gcs", {});
+  gcs.argv.push_back("--progress");
+  gcs.argv.push_back(l.progress_bar ? "bar" : "plain");
+  gcs.echo_stdout = true;
+  procs.push_back(std::move(gcs));
+  for (std::uint32_t g = 0; g < s.groups(); ++g) {
+    const std::string gs = std::to_string(g);
+    procs.push_back(spec("leader-" + gs, "swarm-leader", {"--group", gs}));
+  }
+  for (std::uint32_t g = 0; g < s.groups(); ++g) {
+    for (std::uint32_t i = 1; i < s.robots_per_group(); ++i) {
+      procs.push_back(spec("member-" + std::to_string(g) + "-" + std::to_string(i), "swarm-member",
+                           {"--group", std::to_string(g), "--index", std::to_string(i)}));
+    }
+  }
+  return procs;
+}
+
+int domain_id_for(pid_t pid) { return 1 + static_cast<int>(pid % 200); }
+
+std::string partition_name(pid_t pid, std::int64_t epoch_ns) {
+  return "swarm-" + std::to_string(pid) + "-" + std::to_string(epoch_ns);
+}
+
+std::string default_run_dir(const swarm::scenario::Scenario& s, std::time_t now) {
+  std::tm local{};
+  ::localtime_r(&now, &local);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
+  return "runs/" + std::string(stamp) + "-" + map_label(s.map()) + "-" +
+         cfg::mode_name(s.explore().mode()) + "-s" + std::to_string(s.seed());
+}
+
+std::string executable_dir() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return ".";
+  return exe.parent_path().string();
+}
+
+std::vector<std::string> last_lines(const std::string& path, int n) {
+  std::ifstream in(path, std::ios::binary);
+  std::deque<std::string> lines;
+  std::string line;
+  while (std::getline(in, line)) {
+    while (!line.empty() && line.back() == '\r') line.pop_back();
+    // A progress bar redraws with '\r': keep what the terminal would show last.
+    const auto cr = line.rfind('\r');
+    if (cr != std::string::npos) line = line.substr(cr + 1);
+    lines.push_back(line);
+    if (static_cast<int>(lines.size()) > n) lines.pop_front();
+  }
+  return {lines.begin(), lines.end()};
+}
+
+std::string summarize_metrics(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open " + path);
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path + " is not valid JSON: " + e.what());
+  }
+  std::ostringstream o;
+  char buf[160];
+  const auto steps = find_number(j, {"steps"});
+  const auto steps99 = find_number(j, {"steps_to_99", "steps_to_99_percent"});
+  const auto rounds = find_number(j, {"planning_rounds", "rounds"});
+  auto explored = find_number(j, {"explored_percent"});
+  if (!explored) {
+    if (const auto f = find_number(j, {"explored_fraction", "explored"})) explored = 100.0 * *f;
+  }
+  const auto wall = find_number(j, {"wall_seconds", "wall_time_s", "wall_s"});
+  auto tps = find_number(j, {"ticks_per_second", "ticks_per_s"});
+  if (!tps && steps && wall && *wall > 0) tps = *steps / *wall;
+  const auto bytes = find_number(j, {"total_bytes", "bytes_total", "traffic_bytes"});
+
+  if (steps) {
+    std::snprintf(buf, sizeof buf, "  steps            %.0f", *steps);
+    o << buf;
+    if (steps99) {
+      std::snprintf(buf, sizeof buf, " (99 %% explored at step %.0f)", *steps99);
+      o << buf;
+    }
+    o << "\n";
+  }
+  if (rounds) {
+    std::snprintf(buf, sizeof buf, "  planning rounds  %.0f\n", *rounds);
+    o << buf;
+  }
+  if (explored) {
+    std::snprintf(buf, sizeof buf, "  explored         %.1f %%\n", *explored);
+    o << buf;
+  }
+  if (wall) {
+    std::snprintf(buf, sizeof buf, "  wall time        %.1f s", *wall);
+    o << buf;
+    if (tps) {
+      std::snprintf(buf, sizeof buf, " (%.1f ticks/s)", *tps);
+      o << buf;
+    }
+    o << "\n";
+  }
+  if (bytes) o << "  traffic          " << format_bytes(*bytes) << "\n";
+  return o.str();
+}
+
+int run_command(const RunOptions& options, std::ostream& out, std::ostream& err) {
+  // Before anything is created: can the roles be started at all?
+  const std::string bin_dir = options.bin_dir.empty() ? executable_dir() : options.bin_dir;
+  for (const char* exe : {"swarm-sim", "swarm-gcs", "swarm-leader", "swarm-member"}) {
+    const std::string path = (std::filesystem::path(bin_dir) / exe).string();
+    if (::access(path.c_str(), X_OK) != 0) {
+      err << "swarm run: cannot run " << path << " (" << std::strerror(errno)
+          << "); the role binaries must sit beside `swarm` (build them all: cmake --build build)\n";
+      return 1;
+    }
+  }
+  PreparedRun run;
+  try {
+    run = prepare_run(options);
+  } catch (const cfg::ConfigError& e) {
+    err << "swarm run: " << e.what() << "\n";
+    return 2;
+  }
+  const RunLaunch& l = run.launch;
+  const std::vector<ProcessSpec> procs = build_run_processes(l, run.world.scenario);
+
+  const SupervisorResult r = run_processes(procs, options.timeout);
+  const std::string logs = (std::filesystem::path(l.run_dir) / "logs").string();
+  if (r.interrupted) {
+    err << "swarm run: interrupted; every process was stopped (logs: " << logs << ")\n";
+    return 130;
+  }
+  if (r.timed_out) {
+    err << "swarm run: " << r.message << " (--timeout " << options.timeout.count()
+        << "); every process was stopped (logs: " << logs << ")\n";
+    return 1;
+  }
+  if (!r.ok) {
+    err << "swarm run: " << r.message;
+    if (!r.log_path.empty()) {
+      err << "; its log: " << r.log_path << "\n";
+      for (const std::string& line : last_lines(r.log_path, 10)) err << "  | " << line << "\n";
+    } else {
+      err << "\n";
+    }
+    return 1;
+  }
+
+  const std::string record = swarm::record::run_record_path(l.run_dir);
+  const std::string metrics = (std::filesystem::path(l.run_dir) / "metrics.json").string();
+  const std::string png = (std::filesystem::path(l.run_dir) / "map.png").string();
+  try {
+    swarm::record::render_map_png(swarm::record::read_record(record), png);
+  } catch (const std::exception& e) {
+    err << "swarm run: every process exited normally, but the map picture failed: " << e.what()
+        << "\n";
+    return 1;
+  }
+  std::string summary;
+  try {
+    summary = summarize_metrics(metrics);
+  } catch (const std::exception& e) {
+    err << "swarm run: every process exited normally, but " << e.what() << "\n";
+    return 1;
+  }
+  const auto& s = run.world.scenario;
+  out << "run finished: " << map_label(s.map()) << ", " << cfg::mode_name(s.explore().mode())
+      << ", " << s.groups() << " x " << s.robots_per_group() << " robots, seed " << s.seed()
+      << "\n"
+      << summary << "  map picture      " << png << "\n"
+      << "run dir: " << l.run_dir << "\n";
+  return 0;
+}
+
+}  // namespace swarm::tools

@@ -1,0 +1,101 @@
+// `swarm run`, in reusable pieces: scenario + flags -> run directory -> the role processes ->
+// supervise -> pictures and a summary. `swarm experiment` reuses prepare_run and
+// build_run_processes to start many runs at once (one run_processes call per run, each on its own
+// thread; every run gets its own DDS partition, so runs on one domain never hear each other).
+//
+//   swarm::tools::RunOptions o;           // what the flags said
+//   o.overrides.groups = 2;
+//   swarm::tools::PreparedRun run = swarm::tools::prepare_run(o);  // throws config::ConfigError
+//   auto procs = swarm::tools::build_run_processes(run.launch, run.world.scenario);
+//   auto result = swarm::tools::run_processes(procs, std::chrono::seconds(600));
+//
+// Exit statuses of run_command: 0 success, 1 a process failed / timeout / missing outputs,
+// 2 a bad flag or scenario (ConfigError) or an unusable run directory, 130 interrupted.
+#pragma once
+
+#include <sys/types.h>
+
+#include <chrono>
+#include <cstdint>
+#include <ctime>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "supervisor.hpp"
+#include "swarm/config/scenario.hpp"
+
+namespace swarm::tools {
+
+// Flags that override single scenario fields; unset = keep the file's value.
+struct RunOverrides {
+  std::optional<std::string> map;    // built-in name or YAML path (relative to the working dir)
+  std::optional<std::string> start;  // "X,Y" in metres, map frame
+  std::optional<std::uint32_t> groups;
+  std::optional<std::uint32_t> robots_per_group;
+  std::optional<std::string> mode;  // group-frontier | baseline | ideal
+  std::optional<std::uint64_t> seed;
+  std::optional<std::uint32_t> max_ticks;
+};
+
+struct RunOptions {
+  std::string scenario_path;  // "" = DATA/scenarios/default.pbtxt
+  RunOverrides overrides;
+  std::string out_dir;  // "" = runs/<YYYYmmdd-HHMMSS>-<map>-<mode>-s<seed>
+  std::chrono::seconds timeout{600};
+  std::string bin_dir;  // "" = the folder of the running executable
+};
+
+// Where and how the role processes of one run talk and write.
+struct RunLaunch {
+  std::string run_dir;        // absolute
+  std::string scenario_path;  // RUN_DIR/scenario.pbtxt
+  std::string bin_dir;        // holds swarm-sim, swarm-gcs, swarm-leader, swarm-member
+  int domain_id = 1;
+  std::string partition;
+  bool progress_bar = false;  // GCS: --progress bar (a terminal) or plain
+};
+
+struct PreparedRun {
+  swarm::config::World world;
+  RunLaunch launch;
+};
+
+// Applies `o` to `s`. A --map that differs from the scenario's map clears its start unless
+// --start is given too. Throws config::ConfigError naming the flag for a malformed value
+// (e.g. --start "3;4"); range checks are validate()'s.
+void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o);
+
+// Loads the scenario, applies the flags, validates, resolves the world, creates the run
+// directory (and RUN_DIR/logs) and writes RUN_DIR/scenario.pbtxt. A map given by a relative path
+// is written as an absolute path, so the roles can read it from any folder. Throws
+// config::ConfigError for every problem the user can fix (exit status 2).
+[[nodiscard]] PreparedRun prepare_run(const RunOptions& options);
+
+// The processes of one run, named sim, gcs, leader-G and member-G-I (G = 0..groups-1,
+// I = 1..robots_per_group-1; index 0 of a group is its leader), logs in RUN_DIR/logs/NAME.log.
+[[nodiscard]] std::vector<ProcessSpec> build_run_processes(const RunLaunch& launch,
+                                                           const swarm::scenario::Scenario& s);
+
+// 1 + pid % 200: a DDS domain per swarm process, so runs started by different users or shells
+// rarely share one (the partition separates them anyway).
+[[nodiscard]] int domain_id_for(pid_t pid);
+// "swarm-<pid>-<epoch-ns>": unique per run.
+[[nodiscard]] std::string partition_name(pid_t pid, std::int64_t epoch_ns);
+// "runs/<YYYYmmdd-HHMMSS>-<map>-<mode>-s<seed>" (local time; a YAML map shows as its stem).
+[[nodiscard]] std::string default_run_dir(const swarm::scenario::Scenario& s, std::time_t now);
+// The folder of /proc/self/exe.
+[[nodiscard]] std::string executable_dir();
+// The last `n` lines of a text file (fewer if it is shorter; none if it cannot be read).
+[[nodiscard]] std::vector<std::string> last_lines(const std::string& path, int n);
+
+// After a successful run: the numbers of RUN_DIR/metrics.json, as a few lines for a person.
+// Keys that are missing are left out. Throws std::runtime_error if the file is missing or is
+// not JSON.
+[[nodiscard]] std::string summarize_metrics(const std::string& metrics_json_path);
+
+// The whole `swarm run`: returns the process exit status; messages go to `out` and `err`.
+int run_command(const RunOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace swarm::tools
