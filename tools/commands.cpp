@@ -1,5 +1,6 @@
 #include "commands.hpp"
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -49,20 +50,36 @@ int render_command(const RenderOptions& o, std::ostream& out, std::ostream& err)
 
 int bench_command(const std::string& bin_dir, const std::vector<std::string>& args,
                   std::ostream& err) {
-  const std::string exe = (fs::path(bin_dir) / "swarm-bench-planner").string();
-  if (::access(exe.c_str(), X_OK) != 0) {
-    err << "swarm bench: " << exe
-        << " is not built; configure with -DSWARM_BUILD_BENCH=ON and build the "
-           "swarm-bench-planner target\n";
-    return 2;
+  // `swarm bench [planner|mission] [Google Benchmark flags...]`: both suites by default.
+  std::vector<std::string> suites{"planner", "mission"};
+  std::vector<std::string> pass = args;
+  if (!pass.empty() && (pass.front() == "planner" || pass.front() == "mission")) {
+    suites = {pass.front()};
+    pass.erase(pass.begin());
   }
-  std::vector<char*> argv{const_cast<char*>(exe.c_str())};
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  err.flush();
-  ::execv(exe.c_str(), argv.data());
-  err << "swarm bench: cannot run " << exe << ": " << std::strerror(errno) << "\n";
-  return 2;
+  for (const std::string& suite : suites) {
+    const std::string exe = (fs::path(bin_dir) / ("swarm-bench-" + suite)).string();
+    if (::access(exe.c_str(), X_OK) != 0) {
+      err << "swarm bench: " << exe << " is not built; configure with -DSWARM_BUILD_BENCH=ON\n";
+      return 2;
+    }
+    std::vector<char*> argv{const_cast<char*>(exe.c_str())};
+    for (const std::string& a : pass) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    err.flush();
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+      ::execv(exe.c_str(), argv.data());
+      std::perror("swarm bench: exec");
+      ::_exit(127);
+    }
+    int status = 0;
+    if (pid < 0 || ::waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+      err << "swarm bench: " << suite << " benchmarks failed\n";
+      return 1;
+    }
+  }
+  return 0;
 }
 
 }  // namespace swarm::tools

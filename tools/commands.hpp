@@ -21,8 +21,9 @@ struct RenderOptions {
 // (or the picture cannot be written), with a message saying which.
 int render_command(const RenderOptions& options, std::ostream& out, std::ostream& err);
 
-// `swarm bench`: replaces this process with swarm-bench-planner from `bin_dir`, passing `args`;
-// returns 2 (with a message) only when that binary is not there.
+// `swarm bench [planner|mission] [Google Benchmark flags]`: runs swarm-bench-planner (ray casting
+// rays/s, A*) and swarm-bench-mission (lockstep ticks/s of the default 11-process mission) from
+// `bin_dir`, one after the other; 0 when both ran, 1 when one failed, 2 when one is not built.
 int bench_command(const std::string& bin_dir, const std::vector<std::string>& args,
                   std::ostream& err);
 

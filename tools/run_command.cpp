@@ -66,24 +66,13 @@ std::string format_bytes(double bytes) {
   return buf;
 }
 
-// The first number found under any of `keys`, searching the top level first, then nested
-// objects breadth-first (the GCS may group its metrics: {"timing": {"wall_seconds": ...}}).
-std::optional<double> find_number(const nlohmann::json& root,
-                                  std::initializer_list<const char*> keys) {
-  std::deque<const nlohmann::json*> queue{&root};
-  while (!queue.empty()) {
-    const nlohmann::json* j = queue.front();
-    queue.pop_front();
-    if (!j->is_object()) continue;
-    for (const char* k : keys) {
-      const auto it = j->find(k);
-      if (it != j->end() && it->is_number()) return it->get<double>();
-    }
-    for (const auto& [key, value] : j->items()) {
-      if (value.is_object()) queue.push_back(&value);
-    }
-  }
-  return std::nullopt;
+// The number at a JSON pointer ("/traffic/total/bytes"); nullopt if absent, null or not a number.
+std::optional<double> number_at(const nlohmann::json& root, const char* pointer) {
+  const nlohmann::json::json_pointer ptr(pointer);
+  if (!root.contains(ptr)) return std::nullopt;
+  const nlohmann::json& v = root.at(ptr);
+  if (!v.is_number()) return std::nullopt;
+  return v.get<double>();
 }
 
 void write_text_file(const std::string& path, const std::string& text) {
@@ -250,18 +239,25 @@ std::string summarize_metrics(const std::string& path) {
   }
   std::ostringstream o;
   char buf[160];
-  const auto steps = find_number(j, {"steps"});
-  const auto steps99 = find_number(j, {"steps_to_99", "steps_to_99_percent"});
-  const auto rounds = find_number(j, {"planning_rounds", "rounds"});
-  auto explored = find_number(j, {"explored_percent"});
-  if (!explored) {
-    if (const auto f = find_number(j, {"explored_fraction", "explored"})) explored = 100.0 * *f;
+  // The keys the GCS writes (gcs/src/gcs_node.cpp).
+  const auto steps = number_at(j, "/steps");
+  const auto steps99 = number_at(j, "/steps_to_99");
+  const auto rounds = number_at(j, "/planning_rounds");
+  auto explored = number_at(j, "/explored_fraction");
+  if (explored) *explored *= 100.0;
+  const auto wall = number_at(j, "/wall_seconds");
+  auto tps = number_at(j, "/ticks_per_second");
+  if (!tps) {
+    const auto ticks = number_at(j, "/ticks_run");
+    if (ticks && wall && *wall > 0) tps = *ticks / *wall;
   }
-  const auto wall = find_number(j, {"wall_seconds", "wall_time_s", "wall_s"});
-  auto tps = find_number(j, {"ticks_per_second", "ticks_per_s"});
-  if (!tps && steps && wall && *wall > 0) tps = *steps / *wall;
-  const auto bytes = find_number(j, {"total_bytes", "bytes_total", "traffic_bytes"});
+  const auto bytes = number_at(j, "/traffic/total/bytes");
+  const auto messages = number_at(j, "/traffic/total/messages");
 
+  if (j.contains("complete") && j["complete"].is_boolean()) {
+    o << (j["complete"].get<bool>() ? "  complete: the whole map was explored\n"
+                                     : "  INCOMPLETE: stopped at --max-ticks\n");
+  }
   if (steps) {
     std::snprintf(buf, sizeof buf, "  steps            %.0f", *steps);
     o << buf;
@@ -288,7 +284,14 @@ std::string summarize_metrics(const std::string& path) {
     }
     o << "\n";
   }
-  if (bytes) o << "  traffic          " << format_bytes(*bytes) << "\n";
+  if (bytes) {
+    o << "  traffic          " << format_bytes(*bytes);
+    if (messages) {
+      std::snprintf(buf, sizeof buf, " in %.0f messages", *messages);
+      o << buf;
+    }
+    o << "\n";
+  }
   return o.str();
 }
 

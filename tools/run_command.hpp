@@ -90,9 +90,10 @@ void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o);
 // The last `n` lines of a text file (fewer if it is shorter; none if it cannot be read).
 [[nodiscard]] std::vector<std::string> last_lines(const std::string& path, int n);
 
-// After a successful run: the numbers of RUN_DIR/metrics.json, as a few lines for a person.
-// Keys that are missing are left out. Throws std::runtime_error if the file is missing or is
-// not JSON.
+// After a successful run: the headline numbers of RUN_DIR/metrics.json as the GCS writes it
+// (steps, steps_to_99, planning_rounds, explored_fraction, complete, wall_seconds,
+// ticks_per_second, traffic.total.bytes / .messages), as a few lines for a person. Keys that are
+// missing or null are left out. Throws std::runtime_error if the file is missing or not JSON.
 [[nodiscard]] std::string summarize_metrics(const std::string& metrics_json_path);
 
 // The whole `swarm run`: returns the process exit status; messages go to `out` and `err`.

@@ -55,7 +55,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 64));
 
   CLI::App* bench_cmd =
-      app.add_subcommand("bench", "Planner benchmarks (arguments go to swarm-bench-planner)");
+      app.add_subcommand("bench", "Benchmarks: ray casting rays/s, A*, and the default mission's ticks/s "
+                         "([planner|mission] [Google Benchmark flags])");
   bench_cmd->prefix_command();
 
   try {

@@ -1,3 +1,4 @@
+#include "swarm_test/ascii_grid.hpp"
 #include "swarm/planner/explore.hpp"
 
 #include <gtest/gtest.h>
@@ -15,35 +16,10 @@
 namespace swarm::planner {
 namespace {
 
-// A map drawn in ASCII: '#' Occupied, '.' Free, '?' Unknown; any other character is a Free cell
-// whose position is remembered under that character (robots). The first line is the top row, so
-// with H lines, line r holds y = H - 1 - r (grid.hpp: y points up). x is the column.
-struct Art {
-  OccupancyGrid grid;
-  std::map<char, Cell> at;
-};
-
-Art draw(const std::vector<std::string>& rows) {
-  const int h = static_cast<int>(rows.size());
-  const int w = static_cast<int>(rows[0].size());
-  Art a{OccupancyGrid(w, h), {}};
-  for (int r = 0; r < h; ++r) {
-    EXPECT_EQ(static_cast<int>(rows[r].size()), w) << "ragged art line " << r;
-    for (int x = 0; x < w; ++x) {
-      const Cell c{x, h - 1 - r};
-      const char ch = rows[r][x];
-      if (ch == '#') {
-        a.grid.set(c, CellState::Occupied);
-      } else if (ch == '?') {
-        a.grid.set(c, CellState::Unknown);
-      } else {
-        a.grid.set(c, CellState::Free);
-        if (ch != '.') a.at[ch] = c;
-      }
-    }
-  }
-  return a;
-}
+// Maps drawn in ASCII (swarm_test/ascii_grid.hpp): '#' Occupied, '.' Free, '?' Unknown; any
+// other character is a Free cell remembered under that character (robots). First line = top row.
+using swarm::test::AsciiMap;
+using swarm::test::ascii_map;
 
 std::set<Cell> as_set(const std::vector<Cell>& v) { return {v.begin(), v.end()}; }
 
@@ -85,8 +61,8 @@ const std::vector<std::string> kRoomGroup = {
 };
 
 TEST(Explore, GroupFrontiersAreLocalFrontiersThatAreNotGlobalOnes) {
-  const Art global = draw(kRoomGlobal);
-  const Art group = draw(kRoomGroup);
+  const AsciiMap global = ascii_map(kRoomGlobal);
+  const AsciiMap group = ascii_map(kRoomGroup);
   // Global frontiers: x = 3, y = 1..4 (Free, unknown to the right).
   EXPECT_EQ(as_set(reachable_frontiers(global.grid, {global.at.at('L')})),
             (std::set<Cell>{{3, 1}, {3, 2}, {3, 3}, {3, 4}}));
@@ -109,8 +85,8 @@ TEST(Explore, GroupFrontiersAreLocalFrontiersThatAreNotGlobalOnes) {
 }
 
 TEST(Explore, BaselineIgnoresGroupFrontiersAndPrefersStillOpenGlobalCells) {
-  const Art global = draw(kRoomGlobal);
-  const Art group = draw(kRoomGroup);
+  const AsciiMap global = ascii_map(kRoomGlobal);
+  const AsciiMap group = ascii_map(kRoomGroup);
   ExploreInput in;
   in.global_map = &global.grid;
   in.group_map = &group.grid;
@@ -147,7 +123,7 @@ const std::vector<std::string> kCaseA = {
 };
 
 struct CaseAFixture {
-  Art group = draw(kCaseA);
+  AsciiMap group = ascii_map(kCaseA);
   OccupancyGrid global{group.grid.width(), group.grid.height()};  // round 0: nothing fused yet
   ExploreInput input(std::vector<Cell> members) {
     ExploreInput in;
@@ -215,7 +191,7 @@ TEST(Explore, SmallSegmentsTakeAtMostTheNonLeaderMembersNearestFirst) {
 
 TEST(Explore, MembersShareWaypointsWhenTheSegmentHasFewerCells) {
   // One group frontier cell (7,5) and three robots: all go there.
-  const Art group = draw({
+  const AsciiMap group = ascii_map({
       "#######?#######",
       "#.............#",
       "#..A....B.....#",
@@ -262,7 +238,7 @@ std::vector<Cell> members_of(Cell leader) {
 }
 
 TEST(Explore, CaseBMatchesTheHandSolvedHungarian) {
-  const Art world = draw(kCaseB);
+  const AsciiMap world = ascii_map(kCaseB);
   const std::vector<Cell> leaders = {world.at.at('0'), world.at.at('1'), world.at.at('2')};
   // C_ij = D_ij / W_j (D = Euclidean distance to the segment's nearest cell):
   //            seg 0 (W 4)         seg 1 (W 3)               seg 2 (W 2)
@@ -307,7 +283,7 @@ TEST(Explore, CaseBMatchesTheHandSolvedHungarian) {
 TEST(Explore, CaseBEveryLeaderGetsAConsistentAssignment) {
   // Same world as above with the leaders moved around: whatever the positions, all leaders
   // compute the same assignment and no two groups share a segment (3 segments >= 3 groups).
-  const Art world = draw(kCaseB);
+  const AsciiMap world = ascii_map(kCaseB);
   const std::vector<std::vector<Cell>> layouts = {
       {{2, 2}, {2, 3}, {3, 2}},     {{10, 5}, {11, 5}, {12, 5}}, {{18, 8}, {3, 8}, {10, 2}},
       {{15, 8}, {4, 5}, {18, 3}},   {{17, 4}, {18, 4}, {16, 4}}, {{5, 9}, {9, 8}, {18, 9}},
@@ -334,7 +310,7 @@ TEST(Explore, CaseBEveryLeaderGetsAConsistentAssignment) {
 }
 
 TEST(Explore, CaseBGroupLeftWithoutASegmentTakesItsCheapest) {
-  const Art world = draw(kCaseB);
+  const AsciiMap world = ascii_map(kCaseB);
   // Four leaders, three segments. L3 (17,4): seg 0 (19,4) 2 -> 0.5, seg 1 (1,4) 16 -> 5.333,
   // seg 2 (10,9) 8.602 -> 4.301. Adding L3 to the optimum above costs at least
   // 0.5 + 1 + 2.55 = 4.05 > 3.80, so L3 is left out (-1) and shares seg 0, its cheapest.
@@ -355,9 +331,9 @@ TEST(Explore, CaseBGroupLeftWithoutASegmentTakesItsCheapest) {
 TEST(Explore, BaselineNeverReturnsCaseA) {
   // Every map above, every group, several rounds: with use_group_frontiers = false it is always
   // case B (or NoFrontier), even where case A applies with the full planner.
-  const Art room_global = draw(kRoomGlobal), room_group = draw(kRoomGroup);
+  const AsciiMap room_global = ascii_map(kRoomGlobal), room_group = ascii_map(kRoomGroup);
   CaseAFixture a;
-  const Art b = draw(kCaseB);
+  const AsciiMap b = ascii_map(kCaseB);
   struct Scene {
     const OccupancyGrid* global;
     const OccupancyGrid* group;
@@ -401,7 +377,7 @@ TEST(Explore, BaselineNeverReturnsCaseA) {
 // No frontier, determinism, speed
 
 TEST(Explore, NoFrontierOnAFullyKnownMap) {
-  const Art world = draw({
+  const AsciiMap world = ascii_map({
       "########",
       "#..#...#",
       "#.L#.A.#",
@@ -426,7 +402,7 @@ TEST(Explore, NoFrontierOnAFullyKnownMap) {
 
 TEST(Explore, UnreachableFrontiersDoNotCount) {
   // The only unknown cell (5,2) is behind walls: its frontier cell (4,2) is a sealed pocket.
-  const Art world = draw({
+  const AsciiMap world = ascii_map({
       "#######",
       "#..#.?#",
       "#.L####",

@@ -1,3 +1,4 @@
+#include "swarm_test/ascii_grid.hpp"
 #include "swarm/planner/frontier.hpp"
 
 #include <gtest/gtest.h>
@@ -13,21 +14,7 @@ void PrintTo(const Cell& c, std::ostream* os) { *os << "(" << c.x << ", " << c.y
 
 namespace {
 
-// Rows top first (the first string is the largest y): '.' Free, '#' Occupied, '?' Unknown.
-OccupancyGrid grid_from(const std::vector<std::string>& rows) {
-  const int h = static_cast<int>(rows.size());
-  const int w = static_cast<int>(rows.front().size());
-  OccupancyGrid g(w, h);
-  for (int r = 0; r < h; ++r) {
-    for (int x = 0; x < w; ++x) {
-      const char c = rows[static_cast<std::size_t>(r)][static_cast<std::size_t>(x)];
-      g.set(Cell{x, h - 1 - r}, c == '.' ? CellState::Free
-                               : c == '#' ? CellState::Occupied
-                                          : CellState::Unknown);
-    }
-  }
-  return g;
-}
+using swarm::test::grid_from;  // rows top first (swarm_test/ascii_grid.hpp)
 
 TEST(Frontier, FreeCellsWithAnUnknownFourNeighbourInRowMajorOrder) {
   const OccupancyGrid g = grid_from({

@@ -1,3 +1,4 @@
+#include "swarm_test/ascii_grid.hpp"
 #include "swarm_test/data.hpp"
 #include "swarm/planner/raycast.hpp"
 
@@ -19,21 +20,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr float kTol = 1e-5f;
 
-// Rows top first (the first string is the largest y): '.' Free, '#' Occupied, '?' Unknown.
-OccupancyGrid grid_from(const std::vector<std::string>& rows) {
-  const int h = static_cast<int>(rows.size());
-  const int w = static_cast<int>(rows.front().size());
-  OccupancyGrid g(w, h);
-  for (int r = 0; r < h; ++r) {
-    for (int x = 0; x < w; ++x) {
-      const char c = rows[static_cast<std::size_t>(r)][static_cast<std::size_t>(x)];
-      g.set(Cell{x, h - 1 - r}, c == '.' ? CellState::Free
-                               : c == '#' ? CellState::Occupied
-                                          : CellState::Unknown);
-    }
-  }
-  return g;
-}
+using swarm::test::grid_from;  // rows top first (swarm_test/ascii_grid.hpp)
 
 std::string benchmark_dir() { return swarm::test::benchmarks_dir(); }
 

@@ -76,8 +76,8 @@ std::vector<std::uint8_t> world_cells() {
   return cells;
 }
 
-// Two groups of two robots; group 0's leader walks (2,2) -> (6,2) along y = 2; group 1's leader
-// walks (2,5) -> (2,6)... its member stays at (9,5).
+// Two groups of two robots; group 0's leader walks (2,2) -> (6,2) along y = 2, its member stays
+// at (2,3); group 1's leader steps (2,5) -> (2,6), its member stays at (9,5).
 std::vector<Frame> sample_frames() {
   std::vector<Frame> frames;
   Frame f;
@@ -98,8 +98,10 @@ std::vector<Frame> sample_frames() {
     Frame p;
     Poses* poses = p.mutable_poses();
     poses->set_tick(t);
-    for (int v : {2 + t, 2, /*member 0*/ 2, 3, /*leader 1*/ 2, 5 + (t > 0 ? 1 : 0), /*member 1*/ 9, 5})
+    const int leader1_y = t > 0 ? 6 : 5;
+    for (int v : {2 + t, 2, /*member 0*/ 2, 3, /*leader 1*/ 2, leader1_y, /*member 1*/ 9, 5}) {
       poses->add_xy(v);
+    }
     frames.push_back(p);
     if (t == 1) {
       Frame m;
@@ -263,7 +265,8 @@ TEST(Render, MapPngHasTheExpectedSizeAndColours) {
   const cv::Mat img = cv::imread(png, cv::IMREAD_COLOR);
   ASSERT_FALSE(img.empty());
   const RenderGeometry geo = render_geometry(frames, 6);
-  EXPECT_EQ(geo.image_width(), kW * 6);
+  EXPECT_EQ(geo.image_width(), kMinImageWidthPx);  // 12 cells * 6 px is narrower
+  EXPECT_EQ(render_geometry(frames, 50).image_width(), kW * 50);
   EXPECT_EQ(geo.image_height(), kBandPx + kH * 6);
   EXPECT_EQ(img.cols, geo.image_width());
   EXPECT_EQ(img.rows, geo.image_height());
@@ -279,7 +282,7 @@ TEST(Render, MapPngHasTheExpectedSizeAndColours) {
   EXPECT_NE(group_colour(0), group_colour(1));
   // y is up: the wall row y = 0 is the bottom row of the image, the map's top row is wall too,
   // and the unknown row y = H-2 sits just below it.
-  EXPECT_EQ(img.at<cv::Vec3b>(img.rows - 1, img.cols / 2), bgr(kOccupiedColour));
+  EXPECT_EQ(img.at<cv::Vec3b>(img.rows - 1, geo.centre_col(kW / 2)), bgr(kOccupiedColour));
   EXPECT_EQ(geo.top(kH - 2), kBandPx + 6);
   // The start X is red at the start cell's centre.
   EXPECT_EQ(px(2, 4), bgr(kStartColour));
@@ -323,5 +326,6 @@ TEST(Render, RecordWithoutHeaderIsRefused) {
 
 TEST(Render, UnwritablePngThrows) {
   TempDir dir;
-  EXPECT_THROW(render_map_png(sample_frames(), dir.file("no/such/dir/map.png")), std::runtime_error);
+  EXPECT_THROW(render_map_png(sample_frames(), dir.file("no/such/dir/map.png")),
+               std::runtime_error);
 }

@@ -25,7 +25,8 @@ class TempDir {
  public:
   TempDir() {
     path_ = fs::temp_directory_path() /
-            ("swarm-run-command-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++));
+            ("swarm-run-command-test-" + std::to_string(::getpid()) + "-" +
+             std::to_string(counter_++));
     fs::remove_all(path_);
     fs::create_directories(path_);
   }
@@ -76,7 +77,9 @@ std::string fake_bin(const TempDir& dir, const std::string& leader_script = "exi
   }
   spit(fixtures + "/metrics.json",
        R"({"steps": 368, "steps_to_99": 351, "planning_rounds": 17, "explored_fraction": 0.995,
-           "timing": {"wall_seconds": 12.5}, "traffic": {"total_bytes": 1234567}})");
+           "complete": true, "ticks_run": 368, "wall_seconds": 12.5,
+           "traffic": {"by_topic": {"map": {"bytes": 5}},
+                       "total": {"messages": 4321, "bytes": 1234567}}})");
   const std::string args = "echo \"args: $*\"\n";
   const std::string run_dir =
       "while [ $# -gt 0 ]; do case \"$1\" in --run-dir) RUN=\"$2\"; shift;; esac; shift; done\n";
@@ -221,13 +224,21 @@ TEST(RunCommandHelpers, MetricsSummary) {
   TempDir dir;
   spit(dir.file("m.json"),
        R"({"steps": 368, "steps_to_99": 351, "planning_rounds": 17, "explored_fraction": 0.995,
-           "timing": {"wall_seconds": 12.5}, "traffic": {"total_bytes": 1234567}})");
+           "complete": true, "ticks_run": 368, "wall_seconds": 12.5,
+           "traffic": {"by_topic": {"map": {"bytes": 5}},
+                       "total": {"messages": 4321, "bytes": 1234567}}})");
   const std::string s = summarize_metrics(dir.file("m.json"));
   EXPECT_TRUE(contains(s, "steps            368 (99 % explored at step 351)")) << s;
   EXPECT_TRUE(contains(s, "planning rounds  17")) << s;
   EXPECT_TRUE(contains(s, "explored         99.5 %")) << s;
   EXPECT_TRUE(contains(s, "wall time        12.5 s (29.4 ticks/s)")) << s;
-  EXPECT_TRUE(contains(s, "traffic          1.23 MB")) << s;
+  EXPECT_TRUE(contains(s, "traffic          1.23 MB in 4321 messages")) << s;
+  EXPECT_TRUE(contains(s, "complete")) << s;
+  // steps_to_99 is null when 99 % was never reached; the line then has no "(99 % ...)".
+  spit(dir.file("n.json"), R"({"steps": 10, "steps_to_99": null, "complete": false})");
+  const std::string n = summarize_metrics(dir.file("n.json"));
+  EXPECT_TRUE(contains(n, "steps            10\n")) << n;
+  EXPECT_TRUE(contains(n, "INCOMPLETE")) << n;
   spit(dir.file("bad.json"), "{not json");
   EXPECT_THROW((void)summarize_metrics(dir.file("bad.json")), std::runtime_error);
   EXPECT_THROW((void)summarize_metrics(dir.file("none.json")), std::runtime_error);
@@ -248,10 +259,9 @@ TEST(RunCommand, SuccessWritesTheRunDirectoryPictureAndSummary) {
   EXPECT_EQ(scenario.groups(), 1u);
   EXPECT_TRUE(scenario.has_start());  // resolved, so every role uses the same one
   const std::string leader_log = slurp(run + "/logs/leader-0.log");
-  EXPECT_TRUE(std::regex_search(
-      leader_log, std::regex("args: --group 0 --scenario " + run +
-                             "/scenario.pbtxt --run-dir " + run + " --domain \\d+ --partition swarm-\\d+-\\d+")))
-      << leader_log;
+  const std::regex leader_args("args: --group 0 --scenario " + run + "/scenario.pbtxt --run-dir " +
+                               run + " --domain \\d+ --partition swarm-\\d+-\\d+");
+  EXPECT_TRUE(std::regex_search(leader_log, leader_args)) << leader_log;
   EXPECT_TRUE(contains(slurp(run + "/logs/member-0-1.log"), "--index 1"));
   EXPECT_TRUE(contains(slurp(run + "/logs/gcs.log"), "--progress "));
   EXPECT_TRUE(contains(slurp(run + "/logs/gcs.log"), "progress 100%"));
@@ -274,7 +284,8 @@ TEST(RunCommand, AFailingRoleIsNamedWithItsLogTail) {
   EXPECT_EQ(run_command(o, out, err), 1);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
   const std::string log = o.out_dir + "/logs/leader-0.log";
-  EXPECT_TRUE(contains(err.str(), "swarm run: process leader-0 failed (exit code 3); its log: " + log))
+  EXPECT_TRUE(
+      contains(err.str(), "swarm run: process leader-0 failed (exit code 3); its log: " + log))
       << err.str();
   EXPECT_TRUE(contains(err.str(), "  | no route to planner")) << err.str();
 }

@@ -25,7 +25,8 @@ class TempDir {
  public:
   TempDir() {
     path_ = fs::temp_directory_path() /
-            ("swarm-supervisor-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++));
+            ("swarm-supervisor-test-" + std::to_string(::getpid()) + "-" +
+             std::to_string(counter_++));
     fs::remove_all(path_);
     fs::create_directories(path_);
   }
@@ -163,6 +164,12 @@ TEST(Supervisor, TimeoutStopsEverything) {
 
 TEST(Supervisor, SigintStopsEverythingAndReportsInterrupted) {
   TempDir dir;
+  // A test started in the background by a shell inherits an ignored SIGINT, which the supervisor
+  // (rightly) leaves ignored; this test is about the default case.
+  struct sigaction dfl {}, before {};
+  dfl.sa_handler = SIG_DFL;
+  sigemptyset(&dfl.sa_mask);
+  ::sigaction(SIGINT, &dfl, &before);
   std::thread ctrl_c([] {
     std::this_thread::sleep_for(300ms);
     ::kill(::getpid(), SIGINT);
@@ -180,6 +187,24 @@ TEST(Supervisor, SigintStopsEverythingAndReportsInterrupted) {
   struct sigaction now {};
   ::sigaction(SIGINT, nullptr, &now);
   EXPECT_EQ(now.sa_handler, SIG_DFL);
+  ::sigaction(SIGINT, &before, nullptr);
+}
+
+TEST(Supervisor, AnIgnoredSigintStaysIgnored) {
+  TempDir dir;
+  struct sigaction ign {}, before {};
+  ign.sa_handler = SIG_IGN;
+  sigemptyset(&ign.sa_mask);
+  ::sigaction(SIGINT, &ign, &before);
+  std::thread ctrl_c([] {
+    std::this_thread::sleep_for(200ms);
+    ::kill(::getpid(), SIGINT);
+  });
+  const SupervisorResult r = run_processes({sh(dir, "a", "sleep 0.6")}, 30s);
+  ctrl_c.join();
+  EXPECT_TRUE(r.ok) << r.message;
+  EXPECT_FALSE(r.interrupted);
+  ::sigaction(SIGINT, &before, nullptr);
 }
 
 TEST(Supervisor, MissingExecutableIsAFailedStartNamingIt) {
@@ -240,7 +265,8 @@ TEST(Supervisor, ConcurrentCallsSuperviseOnlyTheirOwnChildren) {
   TempDir dir;
   SupervisorResult failing, healthy;
   std::thread t([&] {
-    failing = run_processes({sh(dir, "bad", "sleep 0.1; exit 4"), sh(dir, "x", "exec sleep 30")}, 30s);
+    failing = run_processes(
+        {sh(dir, "bad", "sleep 0.1; exit 4"), sh(dir, "x", "exec sleep 30")}, 30s);
   });
   healthy = run_processes({sh(dir, "good", "sleep 0.8; exit 0")}, 30s);
   t.join();

@@ -2,7 +2,9 @@
 // frontier snapshots like Fig. 10 of the group-frontier paper (shared/PAPERS.md section 1).
 //
 // Image layout: a band of kBandPx rows on top holds a title line and a legend; below it the map,
-// `scale` pixels per cell, with y up (cell row y = 0 is the BOTTOM row of the image). Colours:
+// `scale` pixels per cell, with y up (cell row y = 0 is the BOTTOM row of the image), starting at
+// the left edge; an image narrower than kMinImageWidthPx is widened on the right (in the band's
+// light grey) so the title stays readable. Colours:
 // unknown mid grey, free white, occupied black; each group has one colour of the Okabe-Ito
 // colour-blind-safe palette (group_colour); the start cell is a red X.
 //
@@ -33,7 +35,8 @@ inline constexpr Rgb kUnknownColour{128, 128, 128};
 inline constexpr Rgb kFreeColour{255, 255, 255};
 inline constexpr Rgb kOccupiedColour{0, 0, 0};
 inline constexpr Rgb kStartColour{230, 0, 0};
-inline constexpr int kBandPx = 40;  // title + legend rows above the map
+inline constexpr int kBandPx = 40;             // title + legend rows above the map
+inline constexpr int kMinImageWidthPx = 480;  // room for the title and the legend
 
 // Colour of group g (0-based); the palette repeats after 7 groups.
 Rgb group_colour(int group);
@@ -44,7 +47,9 @@ struct RenderGeometry {
   int height_cells = 0;
   int scale = 6;  // pixels per cell side
 
-  int image_width() const { return width_cells * scale; }
+  int image_width() const {
+    return width_cells * scale > kMinImageWidthPx ? width_cells * scale : kMinImageWidthPx;
+  }
   int image_height() const { return kBandPx + height_cells * scale; }
   // Top-left pixel of cell (x, y).
   int left(int x) const { return x * scale; }
