@@ -27,12 +27,6 @@ bool is_builtin_map(const std::string& map) {
   return std::find(names.begin(), names.end(), map) != names.end();
 }
 
-std::string map_label(const std::string& map) {
-  if (is_builtin_map(map)) return map;
-  const std::string stem = fs::path(map).stem().string();
-  return stem.empty() ? "map" : stem;
-}
-
 // "3.5,4" -> (3.5, 4); nullopt when malformed.
 std::optional<std::pair<double, double>> parse_xy(const std::string& text) {
   const auto comma = text.find(',');
@@ -120,6 +114,7 @@ PreparedRun prepare_run(const RunOptions& options) {
   swarm::scenario::Scenario s = cfg::load_scenario(scenario_path);
   const std::string scenario_dir = fs::absolute(scenario_path).parent_path().string();
   apply_overrides(s, options.overrides);
+  if (options.customize) options.customize(s);
   cfg::validate(s, scenario_path + " (with the command-line flags)");
 
   PreparedRun run{cfg::resolve_world(s, scenario_dir, scenario_path), {}};
@@ -144,7 +139,12 @@ PreparedRun prepare_run(const RunOptions& options) {
 
   l.bin_dir = options.bin_dir.empty() ? executable_dir() : options.bin_dir;
   const pid_t pid = ::getpid();
-  l.domain_id = domain_id_for(pid);
+  if (options.domain_id && (*options.domain_id < 0 || *options.domain_id > kMaxDomainId)) {
+    throw cfg::ConfigError("DDS domain id " + std::to_string(*options.domain_id) +
+                           " is out of range; Fast DDS accepts 0.." +
+                           std::to_string(kMaxDomainId));
+  }
+  l.domain_id = options.domain_id.value_or(domain_id_for(pid));
   const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
                       std::chrono::system_clock::now().time_since_epoch())
                       .count();
@@ -189,6 +189,12 @@ std::vector<ProcessSpec> build_run_processes(const RunLaunch& l,
     }
   }
   return procs;
+}
+
+std::string map_label(const std::string& map) {
+  if (is_builtin_map(map)) return map;
+  const std::string stem = fs::path(map).stem().string();
+  return stem.empty() ? "map" : stem;
 }
 
 int domain_id_for(pid_t pid) { return 1 + static_cast<int>(pid % 200); }

@@ -1,7 +1,9 @@
 // `swarm run`, in reusable pieces: scenario + flags -> run directory -> the role processes ->
 // supervise -> pictures and a summary. `swarm experiment` reuses prepare_run and
 // build_run_processes to start many runs at once (one run_processes call per run, each on its own
-// thread; every run gets its own DDS partition, so runs on one domain never hear each other).
+// thread; every concurrent run gets its own DDS domain, RunOptions::domain_id, and every run its
+// own partition, so runs never hear each other), and RunOptions::customize to change scenario
+// fields that have no flag.
 //
 //   swarm::tools::RunOptions o;           // what the flags said
 //   o.overrides.groups = 2;
@@ -18,6 +20,7 @@
 #include <chrono>
 #include <cstdint>
 #include <ctime>
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -45,6 +48,12 @@ struct RunOptions {
   std::string out_dir;  // "" = runs/<YYYYmmdd-HHMMSS>-<map>-<mode>-s<seed>
   std::chrono::seconds timeout{600};
   std::string bin_dir;  // "" = the folder of the running executable
+  // Changes further scenario fields after the flags are applied and before validation (how
+  // `swarm experiment` sets link delays, loss, caps or the map encoding); empty = none.
+  std::function<void(swarm::scenario::Scenario&)> customize;
+  // The DDS domain of the run (0..232); unset = domain_id_for(getpid()). Concurrent runs of one
+  // `swarm` process each take their own.
+  std::optional<int> domain_id;
 };
 
 // Where and how the role processes of one run talk and write.
@@ -67,10 +76,11 @@ struct PreparedRun {
 // (e.g. --start "3;4"); range checks are validate()'s.
 void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o);
 
-// Loads the scenario, applies the flags, validates, resolves the world, creates the run
-// directory (and RUN_DIR/logs) and writes RUN_DIR/scenario.pbtxt. A map given by a relative path
-// is written as an absolute path, so the roles can read it from any folder. Throws
-// config::ConfigError for every problem the user can fix (exit status 2).
+// Loads the scenario, applies the flags and options.customize, validates, resolves the world,
+// creates the run directory (and RUN_DIR/logs) and writes RUN_DIR/scenario.pbtxt. A map given by
+// a relative path is written as an absolute path, so the roles can read it from any folder.
+// Throws config::ConfigError for every problem the user can fix (exit status 2), including a
+// domain id out of range.
 [[nodiscard]] PreparedRun prepare_run(const RunOptions& options);
 
 // The processes of one run, named sim, gcs, leader-G and member-G-I (G = 0..groups-1,
@@ -81,10 +91,14 @@ void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o);
 // 1 + pid % 200: a DDS domain per swarm process, so runs started by different users or shells
 // rarely share one (the partition separates them anyway).
 [[nodiscard]] int domain_id_for(pid_t pid);
+// The largest DDS domain id Fast DDS's default port mapping allows.
+inline constexpr int kMaxDomainId = 232;
 // "swarm-<pid>-<epoch-ns>": unique per run.
 [[nodiscard]] std::string partition_name(pid_t pid, std::int64_t epoch_ns);
 // "runs/<YYYYmmdd-HHMMSS>-<map>-<mode>-s<seed>" (local time; a YAML map shows as its stem).
 [[nodiscard]] std::string default_run_dir(const swarm::scenario::Scenario& s, std::time_t now);
+// "maze1" for a built-in map, the file stem for a YAML path ("map" if it has none).
+[[nodiscard]] std::string map_label(const std::string& map);
 // The folder of /proc/self/exe.
 [[nodiscard]] std::string executable_dir();
 // The last `n` lines of a text file (fewer if it is shorter; none if it cannot be read).

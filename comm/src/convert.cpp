@@ -43,8 +43,36 @@ std::vector<std::optional<planner::Cell>> optional_cells_from_xy(const std::vect
   return cells;
 }
 
-std::vector<std::uint8_t> encode_patch(const std::vector<planner::CellChange>& changes) {
-  return planner::encode_changes(changes, kPatchEncoding);
+planner::PatchEncoding patch_encoding(int scenario_map_encoding) {
+  // The scenario's MapEncoding numbers match planner::PatchEncoding on purpose.
+  switch (scenario_map_encoding) {
+    case 0: return planner::PatchEncoding::Raw;
+    case 2: return planner::PatchEncoding::ZstdRunLength;
+    default: return planner::PatchEncoding::RunLength;
+  }
+}
+
+std::vector<std::uint8_t> encode_patch(const std::vector<planner::CellChange>& changes, planner::PatchEncoding encoding) {
+  return planner::encode_changes(changes, encoding);
+}
+
+std::vector<std::uint8_t> encode_map(const planner::OccupancyGrid& map, planner::PatchEncoding encoding) {
+  std::vector<std::uint8_t> rle = planner::encode_grid_rle(map);
+  if (encoding != planner::PatchEncoding::ZstdRunLength) return rle;
+  return planner::zstd_pack(rle.data(), rle.size());
+}
+
+void decode_map(const std::vector<std::uint8_t>& data, planner::PatchEncoding encoding, planner::OccupancyGrid& into) {
+  bool ok = false;
+  if (encoding == planner::PatchEncoding::ZstdRunLength) {
+    // An RLE pair is at most 6 bytes per cell.
+    if (auto rle = planner::zstd_unpack(data.data(), data.size(), 6 * into.size() + 16)) {
+      ok = planner::decode_grid_rle(rle->data(), rle->size(), into);
+    }
+  } else {
+    ok = planner::decode_grid_rle(data.data(), data.size(), into);
+  }
+  if (!ok) throw std::runtime_error("received a malformed global map");
 }
 
 std::vector<planner::CellChange> decode_patch(const std::vector<std::uint8_t>& data) {

@@ -58,12 +58,20 @@ std::uint32_t LinkSender::deliver_tick(LinkClass link, std::uint32_t tick, std::
 }
 
 bool link_drops(const LinkTable& table, LinkClass link, std::uint16_t sender, std::uint64_t topic_hash,
-                std::uint32_t seq, std::uint16_t receiver) {
+                std::uint32_t seq, std::uint16_t receiver, std::uint32_t attempt) {
   const double loss = table[link].loss;
   if (loss <= 0) return false;
   std::uint64_t h = hash_combine(table.seed ^ 0x5157a11ULL, topic_hash);
   h = hash_combine(h, (static_cast<std::uint64_t>(sender) << 48) ^ (static_cast<std::uint64_t>(receiver) << 32) ^ seq);
+  if (attempt > 0) h = hash_combine(h, attempt);
   return unit(h) < loss;
+}
+
+std::uint32_t lost_transmissions(const LinkTable& table, LinkClass link, std::uint16_t sender,
+                                 std::uint64_t topic_hash, std::uint32_t seq, std::uint16_t receiver) {
+  std::uint32_t lost = 0;
+  while (lost < 64 && link_drops(table, link, sender, topic_hash, seq, receiver, lost)) ++lost;
+  return lost;
 }
 
 }  // namespace swarm::comm

@@ -39,6 +39,7 @@ msgs::AgentReport Mailbox::make_report(const std::string& role, const std::strin
     t.sent_bytes(c.sent_bytes);
     t.received_messages(c.received_messages);
     t.received_bytes(c.received_bytes);
+    t.lost_transmissions(c.lost_transmissions);
     t.dropped_messages(c.dropped_messages);
     report.traffic().push_back(t);
   }
@@ -63,12 +64,16 @@ Mailbox::~Mailbox() {
   report_writer_.reset();
 }
 
-void Mailbox::arrive(const msgs::Stamp& stamp, bool keep, int order, std::function<void()> run) {
+void Mailbox::arrive(const msgs::Stamp& stamp, std::uint32_t deliver_tick, double delay_ms, bool keep, int order,
+                     std::function<void()> run) {
+  const auto due = std::chrono::steady_clock::now() +
+                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                       std::chrono::duration<double, std::milli>(delay_ms));
   {
     std::lock_guard<std::mutex> lock(mutex_);
     auto& arrivals = stamp.sender() == topology_.sim() ? sim_arrivals_ : agent_arrivals_;
     arrivals[stamp.tick()] += 1;
-    if (keep) held_.push_back({stamp.deliver_tick(), order, stamp.sender(), stamp.seq(), std::move(run)});
+    if (keep) held_.push_back({deliver_tick, due, order, stamp.sender(), stamp.seq(), std::move(run)});
   }
   arrived_.notify_all();
 }
@@ -82,6 +87,10 @@ std::uint64_t Mailbox::arrivals_counted_for(std::uint32_t k) const {
 }
 
 void Mailbox::deliver_due(std::uint32_t k, std::uint64_t expected) {
+  if (links_.realtime) {
+    deliver_due_now();
+    return;
+  }
   std::vector<Held> due;
   {
     std::unique_lock<std::mutex> lock(mutex_);
@@ -98,6 +107,24 @@ void Mailbox::deliver_due(std::uint32_t k, std::uint64_t expected) {
   }
   std::sort(due.begin(), due.end(), [](const Held& a, const Held& b) {
     if (a.deliver_tick != b.deliver_tick) return a.deliver_tick < b.deliver_tick;
+    if (a.order != b.order) return a.order < b.order;
+    if (a.sender != b.sender) return a.sender < b.sender;
+    return a.seq < b.seq;
+  });
+  for (Held& h : due) h.run();
+}
+
+void Mailbox::deliver_due_now() {
+  const auto now = std::chrono::steady_clock::now();
+  std::vector<Held> due;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto split = std::partition(held_.begin(), held_.end(), [now](const Held& h) { return h.due > now; });
+    due.assign(std::make_move_iterator(split), std::make_move_iterator(held_.end()));
+    held_.erase(split, held_.end());
+  }
+  std::sort(due.begin(), due.end(), [](const Held& a, const Held& b) {
+    if (a.due != b.due) return a.due < b.due;
     if (a.order != b.order) return a.order < b.order;
     if (a.sender != b.sender) return a.sender < b.sender;
     return a.seq < b.seq;
@@ -185,8 +212,16 @@ const msgs::Clock* LockstepAgent::begin_tick() {
                                std::to_string(stall_timeout().count()) + " s after tick " +
                                (next_tick_ ? std::to_string(*next_tick_) : std::string("start")));
     }
-    current_ = std::move(clocks_.begin()->second);
-    clocks_.erase(clocks_.begin());
+    // Real time: an agent that fell behind skips to the newest tick (a stop is never skipped).
+    auto pick = clocks_.begin();
+    if (links_.realtime) {
+      pick = std::prev(clocks_.end());
+      for (auto it = clocks_.begin(); it != clocks_.end(); ++it) {
+        if (it->second.stop()) pick = it;
+      }
+    }
+    current_ = std::move(pick->second);
+    clocks_.erase(clocks_.begin(), std::next(pick));
   }
   if (current_.stop()) return nullptr;
   tick_ = current_.tick();
@@ -263,6 +298,14 @@ void LockstepClock::wait_ready() {
 
 void LockstepClock::begin_tick(std::uint32_t k) {
   tick_ = k;
+  if (links_.realtime) {
+    // Ticks at a fixed wall rate from the first one; nobody is waited for.
+    if (k == 0) realtime_start_ = std::chrono::steady_clock::now();
+    std::this_thread::sleep_until(realtime_start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                        std::chrono::duration<double, std::milli>(k * links_.tick_ms)));
+    deliver_due_now();
+    return;
+  }
   std::uint64_t expected;
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -291,6 +334,10 @@ void LockstepClock::publish_clock(std::uint32_t k, const std::vector<msgs::Robot
 
 bool LockstepClock::wait_done(std::uint32_t k) {
   std::unique_lock<std::mutex> lock(mutex_);
+  if (links_.realtime) {
+    done_.clear();  // nobody is waited for; only the GCS's completion matters
+    return complete_;
+  }
   auto all_done = [&] {
     auto it = done_.find(k);
     if (it == done_.end()) return false;

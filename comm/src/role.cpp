@@ -31,7 +31,11 @@ LinkTable link_table(const swarm::scenario::Scenario& s) {
     p.jitter_ticks = l.jitter_ticks();
     p.loss = l.loss();
     p.bandwidth_bytes_per_s = l.bandwidth_bytes_per_s();
+    p.retransmit_ticks = l.retransmit_ticks();
+    p.delay_ms = l.delay_ms();
   };
+  t.realtime = s.realtime();
+  t.tick_ms = s.tick_ms();
   fill(t[LinkClass::SimRobot], s.links().sim_robot());
   fill(t[LinkClass::MemberLeader], s.links().member_leader());
   fill(t[LinkClass::LeaderGcs], s.links().leader_gcs());

@@ -10,11 +10,12 @@ void TrafficAccount::sent(const std::string& family, const std::string& link, st
 }
 
 void TrafficAccount::received(const std::string& family, const std::string& link, std::uint64_t bytes,
-                              bool dropped) {
+                              std::uint32_t lost, bool dropped) {
   std::lock_guard<std::mutex> lock(mutex_);
   TrafficCount& c = counts_[{family, link}];
-  c.received_messages += 1;
-  c.received_bytes += bytes;
+  if (!dropped) c.received_messages += 1;
+  c.received_bytes += bytes * (dropped ? 1 : 1 + lost);
+  c.lost_transmissions += lost;
   if (dropped) c.dropped_messages += 1;
 }
 

@@ -53,6 +53,7 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, const
       run_dir_(run_dir),
       mission_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution(),
                mission_config(setup)),
+      encoding_(comm::patch_encoding(setup.world.scenario.map_encoding())),
       progress_(progress, setup.world.scenario.max_ticks()),
       record_(record::run_record_path(run_dir)),
       round_(agent.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, setup.topology.leaders())) {
@@ -125,7 +126,10 @@ bool GcsNode::step(const msgs::Clock& clock) {
     rs.fused_tick(d.map_tick);
     rs.width(static_cast<std::uint16_t>(d.map->width()));
     rs.height(static_cast<std::uint16_t>(d.map->height()));
-    rs.map_rle(planner::encode_grid_rle(*d.map));
+    rs.encoding(static_cast<std::uint8_t>(encoding_ == planner::PatchEncoding::ZstdRunLength
+                                              ? planner::PatchEncoding::ZstdRunLength
+                                              : planner::PatchEncoding::RunLength));
+    rs.map_rle(comm::encode_map(*d.map, encoding_));
     round_.send(rs);
     record_.append(map_frame(clock.tick(), *d.start_round, mission_.fused()));
   }
@@ -172,11 +176,13 @@ void GcsNode::finish() {
       add(bt, "messages", t.sent_messages());
       add(bt, "bytes", t.sent_bytes());
       add(bt, "received_messages", t.received_messages());
+      add(bt, "lost_transmissions", t.lost_transmissions());
       add(bt, "dropped_messages", t.dropped_messages());
       bt["link"] = t.link();
       json& bl = by_link[t.link()];
       add(bl, "messages", t.sent_messages());
       add(bl, "bytes", t.sent_bytes());
+      add(bl, "lost_transmissions", t.lost_transmissions());
       add(bl, "dropped_messages", t.dropped_messages());
       total_messages += t.sent_messages();
       total_bytes += t.sent_bytes();

@@ -38,6 +38,7 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
       topology_(setup.topology),
       group_(group),
       explore_(explore_config(setup.world.scenario)),
+      encoding_(comm::patch_encoding(setup.world.scenario.map_encoding())),
       map_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution()),
       robot_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution()),
       arrived_(setup.topology.robots_per_group(), true),
@@ -53,7 +54,7 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
   // Subscription order fixes the order in which same-tick messages are handled.
   agent.subscribe<msgs::Sense>(topic::sense(agent.self()), LinkClass::SimRobot, [this](const msgs::Sense& s) {
     learn(map_.observe(robot_.sense({s.x(), s.y()}, s.ranges(), s.max_range())), true);
-  });
+  }, comm::Delivery::BestEffort);  // a lost scan is not repeated; the next one is newer
   if (!members.empty()) {
     agent.subscribe<msgs::MapPatch>(topic::patch_up(group), LinkClass::MemberLeader, [this](const msgs::MapPatch& p) {
       learn(map_.observe(comm::decode_patch(p.data())), true);
@@ -65,9 +66,7 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
   }
   agent.subscribe<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, [this](const msgs::RoundStart& r) {
     planner::OccupancyGrid global(r.width(), r.height(), map_.group().resolution());
-    if (!planner::decode_grid_rle(r.map_rle().data(), r.map_rle().size(), global)) {
-      throw std::runtime_error("received a malformed global map for round " + std::to_string(r.round()));
-    }
+    comm::decode_map(r.map_rle(), static_cast<planner::PatchEncoding>(r.encoding()), global);
     learn(map_.adopt_global(global), false);
     pending_round_ = r.round();
   });
@@ -139,7 +138,7 @@ void LeaderNode::step(const msgs::Clock& clock) {
   if (!to_gcs_.empty()) {
     msgs::MapPatch patch;
     patch.group(static_cast<std::uint16_t>(group_));
-    patch.data(comm::encode_patch(to_gcs_));
+    patch.data(comm::encode_patch(to_gcs_, encoding_));
     patch_gcs_.send(patch);
     to_gcs_.clear();
   }
@@ -147,7 +146,7 @@ void LeaderNode::step(const msgs::Clock& clock) {
     if (patch_down_ != nullptr) {
       msgs::MapPatch patch;
       patch.group(static_cast<std::uint16_t>(group_));
-      patch.data(comm::encode_patch(to_members_));
+      patch.data(comm::encode_patch(to_members_, encoding_));
       patch_down_->send(patch);
     }
     to_members_.clear();

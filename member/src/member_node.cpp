@@ -27,11 +27,12 @@ MemberNode::MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
                                                 {setup.topology.leader(group)})),
       status_(agent.advertise<msgs::MemberStatus>(topic::status(group), LinkClass::MemberLeader,
                                                   {setup.topology.leader(group)})),
-      motion_(agent.advertise<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, {setup.topology.sim()})) {
+      motion_(agent.advertise<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, {setup.topology.sim()})),
+      encoding_(comm::patch_encoding(setup.world.scenario.map_encoding())) {
   agent.subscribe<msgs::Sense>(topic::sense(agent.self()), LinkClass::SimRobot, [this](const msgs::Sense& s) {
     auto changes = robot_.sense({s.x(), s.y()}, s.ranges(), s.max_range());
     pending_up_.insert(pending_up_.end(), changes.begin(), changes.end());
-  });
+  }, comm::Delivery::BestEffort);  // a lost scan is not repeated; the next one is newer
   agent.subscribe<msgs::MapPatch>(topic::patch_down(group), LinkClass::MemberLeader,
                                   [this](const msgs::MapPatch& p) { robot_.learn(comm::decode_patch(p.data())); });
   agent.subscribe<msgs::Assignment>(topic::assign(group), LinkClass::MemberLeader, [this](const msgs::Assignment& a) {
@@ -45,7 +46,7 @@ void MemberNode::step(const msgs::Clock& /*clock*/) {
   if (!pending_up_.empty()) {
     msgs::MapPatch patch;
     patch.group(static_cast<std::uint16_t>(group_));
-    patch.data(comm::encode_patch(pending_up_));
+    patch.data(comm::encode_patch(pending_up_, encoding_));
     patch_up_.send(patch);
     pending_up_.clear();
   }

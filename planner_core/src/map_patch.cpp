@@ -1,5 +1,7 @@
 #include "swarm/planner/map_patch.hpp"
 
+#include <zstd.h>
+
 #include <algorithm>
 #include <cassert>
 #include <limits>
@@ -24,6 +26,7 @@ class Reader {
  public:
   Reader(const std::uint8_t* data, std::size_t size) : p_(data), end_(data + size) {}
   bool done() const { return p_ == end_; }
+  std::size_t remaining() const { return static_cast<std::size_t>(end_ - p_); }
 
   bool get_byte(std::uint8_t& b) {
     if (p_ == end_) return false;
@@ -87,7 +90,39 @@ std::optional<std::vector<CellChange>> decode_rle(const std::uint8_t* p, std::si
 
 }  // namespace
 
+std::vector<std::uint8_t> zstd_pack(const std::uint8_t* data, std::size_t size) {
+  std::vector<std::uint8_t> out;
+  put_varint(out, static_cast<std::uint32_t>(size));
+  const std::size_t header = out.size();
+  out.resize(header + ZSTD_compressBound(size));
+  // Level 3 (zstd's default): map patches are small; higher levels buy little here.
+  const std::size_t n = ZSTD_compress(out.data() + header, out.size() - header, data, size, 3);
+  assert(!ZSTD_isError(n) && "compressing into a buffer of compressBound bytes cannot fail");
+  out.resize(header + n);
+  return out;
+}
+
+std::optional<std::vector<std::uint8_t>> zstd_unpack(const std::uint8_t* data, std::size_t size,
+                                                     std::size_t max_size) {
+  if (data == nullptr) return std::nullopt;
+  Reader in(data, size);
+  std::uint32_t raw_size = 0;
+  if (!in.get_varint(raw_size) || raw_size > max_size) return std::nullopt;
+  const std::size_t header = size - in.remaining();
+  std::vector<std::uint8_t> out(raw_size);
+  const std::size_t n = ZSTD_decompress(out.data(), out.size(), data + header, size - header);
+  if (ZSTD_isError(n) || n != raw_size) return std::nullopt;
+  return out;
+}
+
 std::vector<std::uint8_t> encode_changes(std::vector<CellChange> changes, PatchEncoding encoding) {
+  if (encoding == PatchEncoding::ZstdRunLength) {
+    const std::vector<std::uint8_t> rle = encode_changes(std::move(changes), PatchEncoding::RunLength);
+    std::vector<std::uint8_t> out{static_cast<std::uint8_t>(PatchEncoding::ZstdRunLength)};
+    const std::vector<std::uint8_t> packed = zstd_pack(rle.data() + 1, rle.size() - 1);
+    out.insert(out.end(), packed.begin(), packed.end());
+    return out;
+  }
   std::vector<std::uint8_t> out;
   out.push_back(static_cast<std::uint8_t>(encoding));
   for ([[maybe_unused]] const CellChange& ch : changes) {
@@ -143,6 +178,12 @@ std::optional<std::vector<CellChange>> decode_changes(const std::uint8_t* data, 
   switch (data[0]) {
     case static_cast<std::uint8_t>(PatchEncoding::Raw): return decode_raw(data + 1, size - 1);
     case static_cast<std::uint8_t>(PatchEncoding::RunLength): return decode_rle(data + 1, size - 1);
+    case static_cast<std::uint8_t>(PatchEncoding::ZstdRunLength): {
+      // A run costs at least 3 bytes and yields at most kMaxPatchChanges changes in all.
+      const auto body = zstd_unpack(data + 1, size - 1, 3 * kMaxPatchChanges);
+      if (!body) return std::nullopt;
+      return decode_rle(body->data(), body->size());
+    }
     default: return std::nullopt;
   }
 }

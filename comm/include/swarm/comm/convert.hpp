@@ -17,10 +17,16 @@ std::vector<planner::Cell> from_xy(const std::vector<std::int16_t>& xy);
 std::vector<std::int16_t> to_xy(const std::vector<std::optional<planner::Cell>>& cells);
 std::vector<std::optional<planner::Cell>> optional_cells_from_xy(const std::vector<std::int16_t>& xy);
 
-// Map patches: the encoding every run uses on the wire (run-length; see planner/map_patch.hpp).
-inline constexpr planner::PatchEncoding kPatchEncoding = planner::PatchEncoding::RunLength;
-std::vector<std::uint8_t> encode_patch(const std::vector<planner::CellChange>& changes);
-// Throws std::runtime_error on a malformed patch (a peer bug, not an expected condition).
+// Map patches in the run's encoding (scenario map_encoding; see planner/map_patch.hpp).
+planner::PatchEncoding patch_encoding(int scenario_map_encoding);
+std::vector<std::uint8_t> encode_patch(const std::vector<planner::CellChange>& changes, planner::PatchEncoding encoding);
+// Throws std::runtime_error on a malformed patch (a peer bug, not an expected condition). The
+// encoding is read from the patch itself.
 std::vector<planner::CellChange> decode_patch(const std::vector<std::uint8_t>& data);
+
+// Whole global maps: run-length, zstd-compressed when the run's encoding is ZstdRunLength.
+std::vector<std::uint8_t> encode_map(const planner::OccupancyGrid& map, planner::PatchEncoding encoding);
+// Throws std::runtime_error when the bytes do not decode to a map of into's size.
+void decode_map(const std::vector<std::uint8_t>& data, planner::PatchEncoding encoding, planner::OccupancyGrid& into);
 
 }  // namespace swarm::comm

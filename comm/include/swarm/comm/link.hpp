@@ -7,9 +7,13 @@
 // - Bandwidth: each sender has one token bucket per link class; a message of B bytes occupies the
 //   link for B / rate simulated seconds after the previous one, and is delivered no earlier than
 //   the tick in which its last byte has gone out.
-// - Loss: each receiver drops a message with the link's probability, drawn from a hash of
-//   (seed, sender, topic, sequence number, receiver), so a broadcast is lost independently at each
-//   receiver and the outcome does not depend on arrival order.
+// - Loss: each receiver loses a transmission with the link's probability, drawn from a hash of
+//   (seed, sender, topic, sequence number, receiver, attempt), so a broadcast is lost
+//   independently at each receiver and the outcome does not depend on arrival order. Reliable
+//   topics behave as DDS reliability does on a lossy link: a lost transmission is repeated
+//   retransmit_ticks later, until one gets through. Best-effort topics lose the message.
+// Real-time mode counts in milliseconds of wall time instead: delay_ms, and retransmissions
+// retransmit_ticks ticks of tick_ms apart.
 // Not thread-safe: one LinkSender per sending agent, used from its own loop.
 #pragma once
 
@@ -29,13 +33,19 @@ struct LinkParams {
   std::uint32_t jitter_ticks = 0;
   double loss = 0.0;
   double bandwidth_bytes_per_s = 0.0;  // 0 = unlimited
+  std::uint32_t retransmit_ticks = 2;
+  double delay_ms = 0.0;  // real-time mode
 };
+
+enum class Delivery : std::uint8_t { Reliable, BestEffort };
 
 // The parameters of every link class in a run; Telemetry and Control are always ideal.
 struct LinkTable {
   std::array<LinkParams, kLinkClasses> params{};
   double tick_seconds = 0.2;
   std::uint64_t seed = 1;
+  bool realtime = false;
+  double tick_ms = 50.0;  // real-time mode: wall milliseconds per tick
   const LinkParams& operator[](LinkClass c) const { return params[static_cast<int>(c)]; }
   LinkParams& operator[](LinkClass c) { return params[static_cast<int>(c)]; }
 };
@@ -58,8 +68,11 @@ class LinkSender {
   std::array<double, kLinkClasses> busy_until_s_{};  // token bucket: when the link is free again
 };
 
-// Receiver side: is this message lost?
+// Receiver side: is this transmission (attempt 0 = the first) of the message lost?
 bool link_drops(const LinkTable& table, LinkClass link, std::uint16_t sender, std::uint64_t topic_hash,
-                std::uint32_t seq, std::uint16_t receiver);
+                std::uint32_t seq, std::uint16_t receiver, std::uint32_t attempt = 0);
+// How many transmissions of the message are lost before one gets through (at most 64).
+std::uint32_t lost_transmissions(const LinkTable& table, LinkClass link, std::uint16_t sender,
+                                 std::uint64_t topic_hash, std::uint32_t seq, std::uint16_t receiver);
 
 }  // namespace swarm::comm

@@ -21,6 +21,10 @@
 //   while (const msgs::Clock* clock = agent.begin_tick()) { node.step(*clock); agent.end_tick(); }
 //
 // Handlers run on the caller's thread inside begin_tick; DDS threads only count and enqueue.
+//
+// Real-time mode (LinkTable::realtime, for deployment): the clock ticks at a fixed wall rate and
+// waits for nobody; messages are held for their link's delay in milliseconds; an agent that falls
+// behind skips to the newest tick. Runs are then not reproducible, by nature.
 #pragma once
 
 #include <chrono>
@@ -57,9 +61,11 @@ class Mailbox {
   template <class T>
   class Outlet;
 
-  // Messages of type T on `topic_name` are held until due and then given to `handler`.
+  // Messages of type T on `topic_name` are held until due and then given to `handler`. Under
+  // emulated loss a reliable topic's message arrives late (retransmitted), a best-effort one not.
   template <class T>
-  void subscribe(const std::string& topic_name, LinkClass link, std::function<void(const T&)> handler);
+  void subscribe(const std::string& topic_name, LinkClass link, std::function<void(const T&)> handler,
+                 Delivery delivery = Delivery::Reliable);
 
   // An outlet stamps, emulates the link, accounts and writes. `receivers` are the agents that
   // subscribe to this topic (the barrier counts one message per receiver).
@@ -81,6 +87,8 @@ class Mailbox {
   // Blocks until `expected` messages counted for tick k are here (throws after stall_timeout()),
   // then runs the handlers of every held message due by k in deterministic order.
   void deliver_due(std::uint32_t k, std::uint64_t expected);
+  // Real-time mode: runs the handlers of every held message whose delay has passed.
+  void deliver_due_now();
   // Messages sent per receiver since the last call; resets the counts.
   std::vector<std::uint32_t> take_sent_counts();
   bool outlets_matched(std::string* missing) const;
@@ -100,6 +108,7 @@ class Mailbox {
  private:
   struct Held {
     std::uint32_t deliver_tick;
+    std::chrono::steady_clock::time_point due;  // real-time mode
     int order;  // subscription index
     AgentId sender;
     std::uint32_t seq;
@@ -112,8 +121,10 @@ class Mailbox {
     virtual const std::string& name() const = 0;
   };
 
-  // Counts one arrival for the barrier; keeps it for delivery unless the link dropped it.
-  void arrive(const msgs::Stamp& stamp, bool keep, int order, std::function<void()> run);
+  // Counts one arrival for the barrier; keeps it for delivery (at deliver_tick in lockstep, after
+  // delay_ms in real time) unless the link dropped it.
+  void arrive(const msgs::Stamp& stamp, std::uint32_t deliver_tick, double delay_ms, bool keep, int order,
+              std::function<void()> run);
 
   std::vector<Held> held_;
   std::map<std::uint32_t, std::uint64_t> agent_arrivals_;  // stamp tick -> count (from agents)
@@ -171,17 +182,24 @@ class Mailbox::Outlet : public Mailbox::OutletBase {
 };
 
 template <class T>
-void Mailbox::subscribe(const std::string& topic_name, LinkClass link, std::function<void(const T&)> handler) {
+void Mailbox::subscribe(const std::string& topic_name, LinkClass link, std::function<void(const T&)> handler,
+                        Delivery delivery) {
   const int order = subscriptions_++;
   const std::uint64_t topic_hash = hash_string(topic_name);
   const std::string family = topic::family(topic_name);
   auto reader = std::make_shared<Reader<T>>(
-      participant_, topic_name, [this, link, order, topic_hash, family, handler](T&& msg) {
+      participant_, topic_name, [this, link, order, topic_hash, family, handler, delivery](T&& msg) {
         const std::size_t bytes = wire_size(msg);
-        const bool dropped = link_drops(links_, link, msg.header().sender(), topic_hash, msg.header().seq(), self_);
-        traffic_.received(family, link_name(link), bytes, dropped);
+        const msgs::Stamp& h = msg.header();
+        const std::uint32_t lost = lost_transmissions(links_, link, h.sender(), topic_hash, h.seq(), self_);
+        const bool dropped = lost > 0 && delivery == Delivery::BestEffort;
+        traffic_.received(family, link_name(link), bytes, lost, dropped);
+        const LinkParams& p = links_[link];
+        const std::uint32_t retry_ticks = dropped ? 0 : lost * p.retransmit_ticks;
+        const double delay_ms = p.delay_ms + retry_ticks * links_.tick_ms;
         auto shared = std::make_shared<T>(std::move(msg));
-        arrive(shared->header(), !dropped, order, [handler, shared] { handler(*shared); });
+        arrive(shared->header(), shared->header().deliver_tick() + retry_ticks, delay_ms, !dropped, order,
+               [handler, shared] { handler(*shared); });
       });
   readers_.push_back(reader);
 }
@@ -246,6 +264,7 @@ class LockstepClock : public Mailbox {
   std::vector<bool> ready_;
   bool complete_ = false;
   std::vector<std::uint64_t> from_sim_;  // cumulative messages the sim sent to each agent
+  std::chrono::steady_clock::time_point realtime_start_{};
 };
 
 }  // namespace swarm::comm

@@ -17,14 +17,18 @@ struct TrafficCount {
   std::uint64_t sent_bytes = 0;
   std::uint64_t received_messages = 0;
   std::uint64_t received_bytes = 0;
-  std::uint64_t dropped_messages = 0;
+  std::uint64_t lost_transmissions = 0;  // emulated losses, retransmitted on reliable topics
+  std::uint64_t dropped_messages = 0;    // messages lost for good (best-effort topics)
 };
 
 class TrafficAccount {
  public:
   using Key = std::pair<std::string, std::string>;  // (topic family, link name)
   void sent(const std::string& family, const std::string& link, std::uint64_t bytes);
-  void received(const std::string& family, const std::string& link, std::uint64_t bytes, bool dropped);
+  // A message that arrived after `lost` lost transmissions (each counted as received bytes too:
+  // they crossed the link); `dropped` = lost for good.
+  void received(const std::string& family, const std::string& link, std::uint64_t bytes, std::uint32_t lost,
+                bool dropped);
   std::map<Key, TrafficCount> snapshot() const;
 
  private:

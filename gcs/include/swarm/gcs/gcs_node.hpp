@@ -14,6 +14,7 @@
 #include "swarm/comm/role.hpp"
 #include "swarm/gcs/mission.hpp"
 #include "swarm/gcs/progress.hpp"
+#include "swarm/planner/map_patch.hpp"
 #include "swarm/record/record.hpp"
 
 namespace swarm::gcs {
@@ -34,6 +35,7 @@ class GcsNode {
   const comm::RoleSetup& setup_;
   std::string run_dir_;
   Mission mission_;
+  planner::PatchEncoding encoding_;
   Progress progress_;
   record::RecordWriter record_;
   comm::Mailbox::Outlet<msgs::RoundStart>& round_;

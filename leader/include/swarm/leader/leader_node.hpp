@@ -13,6 +13,7 @@
 #include "swarm/leader/group_map.hpp"
 #include "swarm/member/robot_agent.hpp"
 #include "swarm/planner/explore.hpp"
+#include "swarm/planner/map_patch.hpp"
 
 namespace swarm::leader {
 
@@ -30,6 +31,7 @@ class LeaderNode {
   const comm::Topology topology_;
   int group_;
   planner::ExploreConfig explore_;
+  planner::PatchEncoding encoding_;
   GroupMap map_;
   member::RobotAgent robot_;
   std::vector<planner::CellChange> to_gcs_;

@@ -7,6 +7,7 @@
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/comm/role.hpp"
 #include "swarm/member/robot_agent.hpp"
+#include "swarm/planner/map_patch.hpp"
 
 namespace swarm::member {
 
@@ -25,6 +26,7 @@ class MemberNode {
   comm::Mailbox::Outlet<msgs::MapPatch>& patch_up_;
   comm::Mailbox::Outlet<msgs::MemberStatus>& status_;
   comm::Mailbox::Outlet<msgs::MotionCommand>& motion_;
+  planner::PatchEncoding encoding_;
   std::uint64_t assignments_ = 0;
 };
 

@@ -7,6 +7,7 @@
 //               into runs of consecutive indices with one state; per run varint(gap),
 //               varint(length), state byte, where gap = start - end of the previous run (end =
 //               one past its last index; 0 before the first run).
+//  * ZstdRunLength: varint(size of the RunLength body), then that body compressed with zstd.
 // Varints are unsigned LEB128 (as in protobuf): 7 bits per byte, low group first, high bit set on
 // all but the last byte; at most 5 bytes for 32 bits.
 // Whole grids (encode_grid_rle): (count varint, state byte) pairs over the cells in index order,
@@ -31,7 +32,7 @@
 
 namespace swarm::planner {
 
-enum class PatchEncoding : std::uint8_t { Raw = 0, RunLength = 1 };
+enum class PatchEncoding : std::uint8_t { Raw = 0, RunLength = 1, ZstdRunLength = 2 };
 
 // Decoding refuses patches that expand to more changes than this (a 4096 x 4096 map), so a few
 // hostile bytes cannot demand gigabytes.
@@ -52,5 +53,11 @@ inline constexpr std::size_t kMaxPatchChanges = std::size_t{1} << 24;
 // Fills `into` (already sized by the receiver) from encode_grid_rle bytes. Returns false, leaving
 // `into` unchanged, if the bytes are malformed or do not cover exactly into.size() cells.
 [[nodiscard]] bool decode_grid_rle(const std::uint8_t* data, std::size_t size, OccupancyGrid& into);
+
+// zstd around any byte string: varint(original size) + zstd frame. Decompression refuses more
+// than max_size bytes and malformed input (nullopt).
+[[nodiscard]] std::vector<std::uint8_t> zstd_pack(const std::uint8_t* data, std::size_t size);
+[[nodiscard]] std::optional<std::vector<std::uint8_t>> zstd_unpack(const std::uint8_t* data, std::size_t size,
+                                                                   std::size_t max_size);
 
 }  // namespace swarm::planner

@@ -1,0 +1,431 @@
+// The lockstep protocol over real Fast DDS: four participants in this one process (the loopback
+// profile, deploy/fastdds_loopback.xml), one per agent of a 1 group x 2 robots run, in one domain
+// and a partition unique to each run. Every agent runs on its own thread as its process would.
+#include "swarm/comm/lockstep.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <cstdlib>
+#include <exception>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <ostream>
+#include <set>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "swarm/comm/participant.hpp"
+
+namespace swarm::comm {
+namespace {
+
+constexpr int kDomain = 147;
+// Agent ids of Topology(1, 2): robot 0 leads group 0, robot 1 is its member.
+constexpr AgentId kLeader = 0;
+constexpr AgentId kMember = 1;
+constexpr AgentId kGcs = 2;
+constexpr AgentId kSim = 3;
+
+std::string unique_partition() {
+  static std::atomic<int> runs{0};
+  return "swarm-test-lockstep-" + std::to_string(::getpid()) + "-" + std::to_string(runs++);
+}
+
+// One run. Construct, subscribe/advertise on agent(a) and clock(), set the step functions, then
+// run(): it returns once the clock has published stop and every agent has left its loop.
+class LockstepRun {
+ public:
+  LockstepRun(const LinkTable& links, std::uint32_t max_ticks) : max_ticks_(max_ticks) {
+    // A stalled peer fails the test in 30 s instead of the default 60 (the test has 120 s).
+    ::setenv("SWARM_STALL_TIMEOUT", "30", 0);
+    const std::string partition = unique_partition();
+    for (AgentId a = 0; a < topology_.agents(); ++a) {
+      participants_.push_back(std::make_unique<Participant>(
+          DdsOptions{.domain = kDomain, .partition = partition, .name = topology_.name_of(a), .profile_path = ""}));
+    }
+    for (AgentId a = 0; a < kSim; ++a) {
+      agents_.push_back(std::make_unique<LockstepAgent>(*participants_[a], topology_, links, a));
+    }
+    clock_ = std::make_unique<LockstepClock>(*participants_[kSim], topology_, links);
+  }
+
+  LockstepAgent& agent(AgentId a) { return *agents_.at(a); }
+  LockstepClock& clock() { return *clock_; }
+
+  // Each agent's work per tick (returns "mission complete"); unset = nothing.
+  std::function<bool(const msgs::Clock&)> step[3];
+  // The simulator's work at tick k, between begin_tick(k) and publish_clock(k).
+  std::function<void(std::uint32_t)> sim_step;
+
+  void run() {
+    std::mutex failure_mutex;
+    std::exception_ptr failure;
+    auto guarded = [&](std::function<void()> body) {
+      return [&failure_mutex, &failure, body] {
+        try {
+          body();
+        } catch (...) {
+          std::lock_guard<std::mutex> lock(failure_mutex);
+          if (!failure) failure = std::current_exception();
+        }
+      };
+    };
+    std::vector<std::thread> threads;
+    threads.emplace_back(guarded([this] { run_sim(); }));
+    for (AgentId a = 0; a < kSim; ++a) {
+      threads.emplace_back(guarded([this, a] {
+        run_lockstep(*agents_[a], [this, a](const msgs::Clock& c) {
+          stepped[a].push_back(c.tick());
+          return step[a] ? step[a](c) : false;
+        });
+      }));
+    }
+    for (std::thread& t : threads) t.join();
+    if (failure) std::rethrow_exception(failure);
+  }
+
+  std::vector<std::uint32_t> stepped[3];  // the ticks each agent stepped
+  std::vector<bool> done;                 // wait_done(k) per tick
+  std::uint32_t stop_tick = 0;            // the tick of the stop clock
+
+ private:
+  void run_sim() {
+    std::vector<msgs::RobotState> robots(2);
+    clock_->wait_ready();
+    for (std::uint32_t k = 0;; ++k) {
+      clock_->begin_tick(k);
+      if (sim_step) sim_step(k);
+      clock_->publish_clock(k, robots, false);
+      const bool complete = clock_->wait_done(k);
+      done.push_back(complete);
+      if (complete || k + 1 >= max_ticks_) {
+        stop_tick = k + 1;
+        clock_->publish_clock(k + 1, robots, true);
+        return;
+      }
+    }
+  }
+
+  Topology topology_{1, 2};
+  std::uint32_t max_ticks_;
+  // Declared first, destroyed last: the agents' readers and writers live in them.
+  std::vector<std::unique_ptr<Participant>> participants_;
+  std::vector<std::unique_ptr<LockstepAgent>> agents_;
+  std::unique_ptr<LockstepClock> clock_;
+};
+
+std::vector<std::uint32_t> ticks_upto(std::uint32_t last) {
+  std::vector<std::uint32_t> v;
+  for (std::uint32_t k = 0; k <= last; ++k) v.push_back(k);
+  return v;
+}
+
+struct Seen {
+  std::uint32_t at;    // the receiver's tick when its handler ran
+  std::uint32_t sent;  // the sender's tick (from the payload)
+  friend bool operator==(const Seen& a, const Seen& b) { return a.at == b.at && a.sent == b.sent; }
+};
+void PrintTo(const Seen& s, std::ostream* os) { *os << "{at " << s.at << ", sent " << s.sent << "}"; }
+
+TEST(Lockstep, MessagesAreHandledExactlyAtTheirDeliverTick) {
+  LinkTable links;
+  links[LinkClass::MemberLeader].delay_ticks = 2;
+  links[LinkClass::SimRobot].delay_ticks = 1;
+  LockstepRun run(links, 8);  // ticks 0..7
+
+  // member -> leader every tick (delay 2): sent at t, handled at t + 1 + 2.
+  std::vector<Seen> status_at_leader;
+  std::vector<std::uint32_t> stamped_deliver;
+  run.agent(kLeader).subscribe<msgs::MemberStatus>(
+      topic::status(0), LinkClass::MemberLeader, [&](const msgs::MemberStatus& m) {
+        status_at_leader.push_back({run.agent(kLeader).tick(), m.round()});
+        EXPECT_EQ(m.header().tick(), m.round());
+        EXPECT_EQ(m.header().sender(), kMember);
+        stamped_deliver.push_back(m.header().deliver_tick());
+      });
+  auto& status = run.agent(kMember).advertise<msgs::MemberStatus>(topic::status(0), LinkClass::MemberLeader,
+                                                                   {kLeader});
+  run.step[kMember] = [&](const msgs::Clock& c) {
+    msgs::MemberStatus s;
+    s.robot(kMember);
+    s.round(c.tick());
+    status.send(s);
+    return false;
+  };
+  // sim -> leader every tick (delay 1, clock master): sent at k, handled at k + 1.
+  std::vector<Seen> sense_at_leader;
+  run.agent(kLeader).subscribe<msgs::Sense>(topic::sense(kLeader), LinkClass::SimRobot, [&](const msgs::Sense& s) {
+    sense_at_leader.push_back({run.agent(kLeader).tick(), static_cast<std::uint32_t>(s.x())});
+  });
+  auto& sense = run.clock().advertise<msgs::Sense>(topic::sense(kLeader), LinkClass::SimRobot, {kLeader});
+  run.sim_step = [&](std::uint32_t k) {
+    msgs::Sense s;
+    s.x(static_cast<std::int16_t>(k));
+    s.ranges({1.0f, 2.0f});
+    sense.send(s);
+  };
+  // leader -> sim every tick (delay 1): sent at t, handled by the simulator at t + 1 + 1.
+  std::vector<Seen> motion_at_sim;
+  run.clock().subscribe<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, [&](const msgs::MotionCommand& m) {
+    motion_at_sim.push_back({run.clock().tick(), static_cast<std::uint32_t>(m.path_xy().at(0))});
+  });
+  auto& motion = run.agent(kLeader).advertise<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, {kSim});
+  run.step[kLeader] = [&](const msgs::Clock& c) {
+    msgs::MotionCommand m;
+    m.robot(kLeader);
+    m.path_xy({static_cast<std::int16_t>(c.tick()), 0});
+    motion.send(m);
+    return false;
+  };
+
+  run.run();
+
+  // Ticks 0..7, then stop. Sent at t and due at t + 3 <= 7: t = 0..4.
+  EXPECT_EQ(status_at_leader, (std::vector<Seen>{{3, 0}, {4, 1}, {5, 2}, {6, 3}, {7, 4}}));
+  EXPECT_EQ(stamped_deliver, (std::vector<std::uint32_t>{3, 4, 5, 6, 7}));
+  // Sim messages: due at k + 1 <= 7: k = 0..6.
+  EXPECT_EQ(sense_at_leader,
+            (std::vector<Seen>{{1, 0}, {2, 1}, {3, 2}, {4, 3}, {5, 4}, {6, 5}, {7, 6}}));
+  // Motion: due at t + 2 <= 7: t = 0..5.
+  EXPECT_EQ(motion_at_sim, (std::vector<Seen>{{2, 0}, {3, 1}, {4, 2}, {5, 3}, {6, 4}, {7, 5}}));
+  for (int a = 0; a < 3; ++a) EXPECT_EQ(run.stepped[a], ticks_upto(7)) << "agent " << a;
+  EXPECT_EQ(run.done, std::vector<bool>(8, false));
+  EXPECT_EQ(run.stop_tick, 8u);
+}
+
+// One message handed to the GCS in the ordering test.
+struct Got {
+  char topic;
+  AgentId sender;
+  std::uint32_t seq;
+  std::uint32_t at;  // the GCS's tick
+  friend bool operator==(const Got& a, const Got& b) {
+    return a.topic == b.topic && a.sender == b.sender && a.seq == b.seq && a.at == b.at;
+  }
+};
+void PrintTo(const Got& g, std::ostream* os) {
+  *os << "{" << g.topic << " from " << g.sender << " seq " << g.seq << " at " << g.at << "}";
+}
+
+TEST(Lockstep, SameTickMessagesComeInSubscriptionThenSenderThenSequenceOrder) {
+  LockstepRun run(LinkTable{}, 3);
+  std::vector<Got> got;
+  // Subscribed a first, then b.
+  for (const char t : {'a', 'b'}) {
+    run.agent(kGcs).subscribe<msgs::MapPatch>(std::string("order_") + t, LinkClass::LeaderGcs,
+                                               [&, t](const msgs::MapPatch& p) {
+                                                 EXPECT_EQ(p.group(), p.header().sender());
+                                                 got.push_back({t, p.header().sender(), p.header().seq(),
+                                                                run.agent(kGcs).tick()});
+                                               });
+  }
+  for (const AgentId robot : {kLeader, kMember}) {
+    auto& a = run.agent(robot).advertise<msgs::MapPatch>("order_a", LinkClass::LeaderGcs, {kGcs});
+    auto& b = run.agent(robot).advertise<msgs::MapPatch>("order_b", LinkClass::LeaderGcs, {kGcs});
+    run.step[robot] = [&a, &b, robot](const msgs::Clock& c) {
+      if (c.tick() != 0) return false;
+      msgs::MapPatch p;
+      p.group(robot);
+      if (robot == kLeader) {
+        // Arrives last: robot 0 writes 50 ms after robot 1, b before its a's.
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        b.send(p);
+        a.send(p);
+        a.send(p);
+      } else {
+        b.send(p);
+        b.send(p);
+        a.send(p);
+      }
+      return false;
+    };
+  }
+  run.run();
+  // All six are due at tick 1: topic a (subscribed first) before b; within a topic robot 0
+  // before robot 1; within a sender by sequence number.
+  const std::vector<Got> expected = {{'a', 0, 0, 1}, {'a', 0, 1, 1}, {'a', 1, 0, 1},
+                                     {'b', 0, 0, 1}, {'b', 1, 0, 1}, {'b', 1, 1, 1}};
+  EXPECT_EQ(got, expected);
+}
+
+// Messages the member sends (5 per tick at ticks 0..7, seq 0..39) to the leader and the GCS over a
+// member_leader link with loss 0.5, on a best-effort topic; returns the sequence numbers each
+// receiver never handled.
+struct LossOutcome {
+  std::set<std::uint32_t> lost_at_leader;
+  std::set<std::uint32_t> lost_at_gcs;
+  TrafficCount leader_count;
+  TrafficCount member_count;
+};
+
+LossOutcome run_with_loss(const LinkTable& links) {
+  LockstepRun run(links, 10);
+  std::set<std::uint32_t> at_leader;
+  std::set<std::uint32_t> at_gcs;
+  run.agent(kLeader).subscribe<msgs::MemberStatus>(
+      topic::status(0), LinkClass::MemberLeader,
+      [&](const msgs::MemberStatus& m) { at_leader.insert(m.header().seq()); }, Delivery::BestEffort);
+  run.agent(kGcs).subscribe<msgs::MemberStatus>(
+      topic::status(0), LinkClass::MemberLeader,
+      [&](const msgs::MemberStatus& m) { at_gcs.insert(m.header().seq()); }, Delivery::BestEffort);
+  auto& out = run.agent(kMember).advertise<msgs::MemberStatus>(topic::status(0), LinkClass::MemberLeader,
+                                                                {kLeader, kGcs});
+  run.step[kMember] = [&](const msgs::Clock& c) {
+    if (c.tick() > 7) return false;
+    for (int i = 0; i < 5; ++i) {
+      msgs::MemberStatus s;
+      s.robot(kMember);
+      s.round(c.tick());
+      out.send(s);
+    }
+    return false;
+  };
+  run.run();
+  LossOutcome o;
+  for (std::uint32_t seq = 0; seq < 40; ++seq) {
+    if (!at_leader.count(seq)) o.lost_at_leader.insert(seq);
+    if (!at_gcs.count(seq)) o.lost_at_gcs.insert(seq);
+  }
+  o.leader_count = run.agent(kLeader).traffic().snapshot()[{"status", "member_leader"}];
+  o.member_count = run.agent(kMember).traffic().snapshot()[{"status", "member_leader"}];
+  return o;
+}
+
+TEST(Lockstep, LossDropsTheSameSequenceNumbersInEveryRun) {
+  LinkTable links;
+  links.seed = 2024;
+  links[LinkClass::MemberLeader].loss = 0.5;
+  const LossOutcome first = run_with_loss(links);
+  const LossOutcome second = run_with_loss(links);
+  EXPECT_EQ(first.lost_at_leader, second.lost_at_leader);
+  EXPECT_EQ(first.lost_at_gcs, second.lost_at_gcs);
+  // Exactly the draws of link.hpp, made independently per receiver.
+  std::set<std::uint32_t> predicted_leader;
+  std::set<std::uint32_t> predicted_gcs;
+  const std::uint64_t h = hash_string(topic::status(0));
+  for (std::uint32_t seq = 0; seq < 40; ++seq) {
+    if (link_drops(links, LinkClass::MemberLeader, kMember, h, seq, kLeader)) predicted_leader.insert(seq);
+    if (link_drops(links, LinkClass::MemberLeader, kMember, h, seq, kGcs)) predicted_gcs.insert(seq);
+  }
+  EXPECT_EQ(first.lost_at_leader, predicted_leader);
+  EXPECT_EQ(first.lost_at_gcs, predicted_gcs);
+  EXPECT_GT(predicted_leader.size(), 0u);
+  EXPECT_LT(predicted_leader.size(), 40u);
+  EXPECT_NE(predicted_leader, predicted_gcs);
+  // Traffic: all 40 were sent; the leader received those not dropped.
+  EXPECT_EQ(first.member_count.sent_messages, 40u);
+  EXPECT_EQ(first.leader_count.received_messages, 40u - predicted_leader.size());
+  EXPECT_EQ(first.leader_count.dropped_messages, predicted_leader.size());
+}
+
+// BUG (comm/include/swarm/comm/lockstep.hpp, Mailbox::subscribe): on a best-effort topic a lost
+// message is one lost transmission (nothing is repeated), and traffic counts its bytes once, but
+// subscribe passes lost_transmissions(...) - the length of the run of lost draws a reliable topic
+// would retransmit through, 1..64 - to TrafficAccount::received, so lost_transmissions counts up
+// to 64 per dropped message. Reproducer: this test (seed 2024, loss 0.5, 40 messages): the leader
+// drops 18 messages and reports 35 lost transmissions. Enable once fixed (pass dropped ? 1 : lost).
+TEST(Lockstep, DISABLED_ABestEffortDropIsOneLostTransmission) {
+  LinkTable links;
+  links.seed = 2024;
+  links[LinkClass::MemberLeader].loss = 0.5;
+  const LossOutcome o = run_with_loss(links);
+  EXPECT_EQ(o.leader_count.lost_transmissions, o.leader_count.dropped_messages);
+}
+
+TEST(Lockstep, OnAReliableTopicALostMessageArrivesRetransmitTicksLaterPerLoss) {
+  LinkTable links;
+  links.seed = 77;
+  links[LinkClass::MemberLeader].loss = 0.5;
+  links[LinkClass::MemberLeader].delay_ticks = 1;
+  links[LinkClass::MemberLeader].retransmit_ticks = 2;
+  // The member sends 3 per tick at ticks 0..4 (seq 0..14). Message seq s, sent at s / 3, is due
+  // at s / 3 + 1 + 1 + 2 * lost(s). Run long enough for the latest.
+  const std::uint64_t h = hash_string(topic::status(0));
+  std::vector<Seen> expected;
+  std::uint32_t last_due = 0;
+  std::uint32_t lost_total = 0;
+  for (std::uint32_t seq = 0; seq < 15; ++seq) {
+    const std::uint32_t lost = lost_transmissions(links, LinkClass::MemberLeader, kMember, h, seq, kLeader);
+    lost_total += lost;
+    const std::uint32_t due = seq / 3 + 2 + 2 * lost;
+    expected.push_back({due, seq});
+    last_due = std::max(last_due, due);
+  }
+  ASSERT_GT(lost_total, 0u);  // the seed makes some message late
+  // Handled in (due tick, sequence) order: one sender, one topic.
+  std::sort(expected.begin(), expected.end(),
+            [](const Seen& a, const Seen& b) { return a.at != b.at ? a.at < b.at : a.sent < b.sent; });
+
+  LockstepRun run(links, last_due + 1);
+  std::vector<Seen> got;
+  run.agent(kLeader).subscribe<msgs::MemberStatus>(topic::status(0), LinkClass::MemberLeader,
+                                                   [&](const msgs::MemberStatus& m) {
+                                                     got.push_back({run.agent(kLeader).tick(), m.header().seq()});
+                                                   });
+  auto& out = run.agent(kMember).advertise<msgs::MemberStatus>(topic::status(0), LinkClass::MemberLeader, {kLeader});
+  run.step[kMember] = [&](const msgs::Clock& c) {
+    for (int i = 0; c.tick() < 5 && i < 3; ++i) {
+      msgs::MemberStatus s;
+      out.send(s);
+    }
+    return false;
+  };
+  run.run();
+  EXPECT_EQ(got, expected);  // here Seen::sent holds the sequence number
+  const TrafficCount count = run.agent(kLeader).traffic().snapshot()[{"status", "member_leader"}];
+  EXPECT_EQ(count.received_messages, 15u);
+  EXPECT_EQ(count.lost_transmissions, lost_total);
+  EXPECT_EQ(count.dropped_messages, 0u);
+}
+
+TEST(Lockstep, ASlowSenderDoesNotLetTheReceiverActEarly) {
+  LockstepRun run(LinkTable{}, 6);
+  using Clock = std::chrono::steady_clock;
+  std::vector<Seen> at_leader;
+  Clock::time_point sent_at{};
+  std::vector<Clock::time_point> leader_tick_start;
+  run.agent(kLeader).subscribe<msgs::MemberStatus>(
+      topic::status(0), LinkClass::MemberLeader,
+      [&](const msgs::MemberStatus& m) { at_leader.push_back({run.agent(kLeader).tick(), m.round()}); });
+  auto& out = run.agent(kMember).advertise<msgs::MemberStatus>(topic::status(0), LinkClass::MemberLeader, {kLeader});
+  run.step[kMember] = [&](const msgs::Clock& c) {
+    if (c.tick() == 2) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      msgs::MemberStatus s;
+      s.round(2);
+      out.send(s);
+      sent_at = Clock::now();
+    }
+    return false;
+  };
+  run.step[kLeader] = [&](const msgs::Clock&) {
+    leader_tick_start.push_back(Clock::now());
+    return false;
+  };
+  run.run();
+  // Sent at 2 with delay 0: handled at 3, not later; and tick 3 began only after it was sent.
+  EXPECT_EQ(at_leader, (std::vector<Seen>{{3, 2}}));
+  ASSERT_EQ(leader_tick_start.size(), 6u);
+  EXPECT_GE(leader_tick_start[3], sent_at);
+  EXPECT_GE(leader_tick_start[3] - leader_tick_start[2], std::chrono::milliseconds(150));
+}
+
+TEST(Lockstep, TheRunStopsWhenTheClockPublishesStop) {
+  LockstepRun run(LinkTable{}, 100);
+  // The GCS reports the mission complete at tick 4: the simulator stops the run there.
+  run.step[kGcs] = [](const msgs::Clock& c) { return c.tick() == 4; };
+  run.run();
+  EXPECT_EQ(run.done, (std::vector<bool>{false, false, false, false, true}));
+  EXPECT_EQ(run.stop_tick, 5u);
+  for (int a = 0; a < 3; ++a) EXPECT_EQ(run.stepped[a], ticks_upto(4)) << "agent " << a;
+}
+
+}  // namespace
+}  // namespace swarm::comm
