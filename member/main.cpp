@@ -16,7 +16,9 @@ int main(int argc, char** argv) {
     const comm::AgentId self = setup.topology.robot(options.group, options.index);
     comm::LockstepAgent agent(participant, setup.topology, setup.links, self);
     member::MemberNode node(agent, setup, options.group, options.index);
+    const std::string me = setup.topology.name_of(self);
     comm::run_lockstep(agent, [&](const msgs::Clock& clock) {
+      if (setup.kill_at_tick && clock.tick() >= *setup.kill_at_tick) comm::crash_now(me, clock.tick());
       node.step(clock);
       return false;
     });

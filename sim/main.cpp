@@ -20,6 +20,10 @@ int main(int argc, char** argv) {
     const std::uint32_t last = node.run();
     const auto t1 = std::chrono::steady_clock::now();
     clock.send_report("sim", node.report_json());
+    for (const auto& l : clock.losses()) {
+      std::printf("sim: %s stopped answering at tick %u; DDS declared it lost after %.2f s\n",
+                  setup.topology.name_of(l.agent).c_str(), l.tick, l.detection_seconds);
+    }
     std::printf("sim: %u ticks; discovery + run %.2f s, report %.2f s\n", last + 1,
                 std::chrono::duration<double>(t1 - t0).count(),
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count());

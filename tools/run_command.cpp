@@ -10,6 +10,7 @@
 #include <deque>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -104,6 +105,30 @@ void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o) {
   if (o.mode) s.mutable_explore()->set_mode(cfg::parse_mode(*o.mode));
   if (o.seed) s.set_seed(*o.seed);
   if (o.max_ticks) s.set_max_ticks(*o.max_ticks);
+  if (o.realtime) s.set_realtime(*o.realtime);
+  if (o.tick_ms) s.set_tick_ms(*o.tick_ms);
+  // Names are checked against the run's groups by validate(); here only the shape.
+  const std::regex kill_form(R"(([a-z]+-[0-9]+(?:-[0-9]+)?)@(?:tick:)?([0-9]+))");
+  for (const std::string& k : o.kills) {
+    std::smatch m;
+    if (!std::regex_match(k, m, kill_form)) {
+      throw cfg::ConfigError("--kill: expected AGENT@TICK, e.g. --kill member-1-2@100 (got '" + k + "')");
+    }
+    auto* f = s.add_faults();
+    f->set_agent(m[1]);
+    f->set_kill_at_tick(static_cast<std::uint32_t>(std::stoul(m[2])));
+  }
+  const std::regex cut_form(R"(([a-z]+-[0-9]+(?:-[0-9]+)?)@(?:tick:)?([0-9]+)-([0-9]+))");
+  for (const std::string& c : o.cuts) {
+    std::smatch m;
+    if (!std::regex_match(c, m, cut_form)) {
+      throw cfg::ConfigError("--cut: expected AGENT@FROM-TO, e.g. --cut leader-1@80-180 (got '" + c + "')");
+    }
+    auto* f = s.add_faults();
+    f->set_agent(m[1]);
+    f->set_cut_from_tick(static_cast<std::uint32_t>(std::stoul(m[2])));
+    f->set_cut_to_tick(static_cast<std::uint32_t>(std::stoul(m[3])));
+  }
 }
 
 PreparedRun prepare_run(const RunOptions& options) {
@@ -186,6 +211,11 @@ std::vector<ProcessSpec> build_run_processes(const RunLaunch& l,
     for (std::uint32_t i = 1; i < s.robots_per_group(); ++i) {
       procs.push_back(spec("member-" + std::to_string(g) + "-" + std::to_string(i), "swarm-member",
                            {"--group", std::to_string(g), "--index", std::to_string(i)}));
+    }
+  }
+  for (const auto& f : s.faults()) {
+    for (ProcessSpec& p : procs) {
+      if (p.name == f.agent() && f.has_kill_at_tick()) p.killed_on_purpose = true;
     }
   }
   return procs;

@@ -40,6 +40,11 @@ struct RunOverrides {
   std::optional<std::string> mode;  // group-frontier | baseline | ideal
   std::optional<std::uint64_t> seed;
   std::optional<std::uint32_t> max_ticks;
+  std::optional<bool> realtime;          // --realtime: ticks at a wall rate, delays in ms
+  std::optional<std::uint32_t> tick_ms;  // --tick-ms
+  // Fault injection: "member-G-I@T" (crash at tick T), "leader-G@A-B" (links cut A..B).
+  std::vector<std::string> kills;
+  std::vector<std::string> cuts;
 };
 
 struct RunOptions {

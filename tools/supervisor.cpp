@@ -352,7 +352,8 @@ class Supervisor {
       if (r < 0 && errno == EINTR) continue;
       c.running = false;
       if (r < 0) continue;  // someone else reaped it; nothing to report
-      const bool failed = !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+      const bool planned = c.spec->killed_on_purpose && WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
+      const bool failed = !(WIFEXITED(status) && WEXITSTATUS(status) == 0) && !planned;
       if (failed && !stopping_) {
         result_.failed_name = c.spec->name;
         result_.log_path = c.spec->log_path;

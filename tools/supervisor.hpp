@@ -37,6 +37,8 @@ struct ProcessSpec {
   std::vector<std::string> argv;  // argv[0] is the executable's path (execv: no PATH search)
   std::string log_path;           // created or truncated; its folder must exist
   bool echo_stdout = false;       // also copy the child's stdout to ours
+  // Fault injection: this child is meant to be killed by SIGKILL; that death does not fail the run.
+  bool killed_on_purpose = false;
 };
 
 struct SupervisorResult {

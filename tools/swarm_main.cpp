@@ -1,16 +1,20 @@
 // `swarm`: the one command a user needs. Parses flags and hands over to one function per
-// subcommand (run_command.hpp, commands.hpp). Exit statuses: 0 ok, 1 the run failed, 2 a bad
+// subcommand (run_command.hpp, commands.hpp, experiment_command.hpp). Exit statuses: 0 ok, 1 the run failed, 2 a bad
 // flag / scenario / run directory, 130 interrupted.
 #include <CLI/CLI.hpp>
 
+#include <array>
 #include <iostream>
 
 #include "commands.hpp"
+#include "experiment_command.hpp"
 #include "run_command.hpp"
 
 int main(int argc, char** argv) {
   using namespace swarm::tools;
-  CLI::App app{"swarm: multi-robot exploration over DDS: run a swarm, draw its record, benchmark"};
+  CLI::App app{
+      "swarm: multi-robot exploration over DDS: run a swarm, run experiments, draw, report, "
+      "benchmark"};
   app.require_subcommand(1);
 
   RunOptions run;
@@ -34,6 +38,13 @@ int main(int argc, char** argv) {
   auto* mode_opt = run_cmd->add_option("--mode", mode, "group-frontier | baseline | ideal");
   auto* seed_opt = run_cmd->add_option("--seed", seed, "Random seed");
   auto* ticks_opt = run_cmd->add_option("--max-ticks", max_ticks, "Stop, incomplete, at this tick");
+  bool realtime = false;
+  std::uint32_t tick_ms = 0;
+  auto* realtime_opt = run_cmd->add_flag("--realtime", realtime,
+                                         "Real-time mode: ticks at a wall rate, link delays in ms (delay_ms)");
+  auto* tick_ms_opt = run_cmd->add_option("--tick-ms", tick_ms, "Real-time tick length in milliseconds");
+  run_cmd->add_option("--kill", o.kills, "Crash a member at a tick, e.g. member-1-2@100 (repeatable)");
+  run_cmd->add_option("--cut", o.cuts, "Cut an agent's links for ticks A..B, e.g. leader-1@80-180 (repeatable)");
   run_cmd->add_option("--out", run.out_dir,
                       "Run directory; default runs/<time>-<map>-<mode>-s<seed>");
   run_cmd->add_option("--timeout", timeout_s, "Wall-clock limit in seconds (0 = none)")
@@ -59,6 +70,63 @@ int main(int argc, char** argv) {
                          "([planner|mission] [Google Benchmark flags])");
   bench_cmd->prefix_command();
 
+  // `swarm experiment KIND`: one subcommand per kind, the same flags on each.
+  CLI::App* experiment_cmd = app.add_subcommand(
+      "experiment", "Run many swarms in parallel and table, plot and save the results");
+  experiment_cmd->require_subcommand(1);
+  const std::array<std::pair<ExperimentKind, const char*>, 4> kinds = {{
+      {ExperimentKind::kExplore,
+       "Paper's Table 2: group-frontier vs baseline vs ideal on open, maze1, maze2 (5 seeds)"},
+      {ExperimentKind::kLatency,
+       "Steps vs leader<->GCS and member<->leader link delay (maze1, 3 seeds)"},
+      {ExperimentKind::kBandwidth,
+       "Map-change encodings' bytes, and steps vs a leader<->GCS bandwidth cap (maze1, 3 seeds)"},
+      {ExperimentKind::kLoss, "Steps and completion vs message loss on every link (maze1, 3 seeds)"},
+  }};
+  std::array<ExperimentOptions, 4> experiment;
+  std::array<std::int64_t, 4> seeds_flag{}, jobs_flag{};
+  std::array<long, 4> experiment_timeout{};
+  std::array<CLI::App*, 4> kind_cmd{};
+  std::array<CLI::Option*, 4> seeds_opt{}, jobs_opt{};
+  for (std::size_t k = 0; k < kinds.size(); ++k) {
+    ExperimentOptions& e = experiment[k];
+    e.kind = kinds[k].first;
+    experiment_timeout[k] = 600;
+    CLI::App* c = experiment_cmd->add_subcommand(kind_name(e.kind), kinds[k].second);
+    kind_cmd[k] = c;
+    seeds_opt[k] = c->add_option("--seeds", seeds_flag[k],
+                                 "Number of seeds (seeds 1..N); default " +
+                                     std::to_string(default_seeds(e.kind)));
+    std::string maps, methods;
+    for (const auto& m : default_maps(e.kind)) maps += (maps.empty() ? "" : ",") + m;
+    for (const auto& m : default_methods(e.kind)) methods += (methods.empty() ? "" : ",") + m;
+    c->add_option("--maps", e.maps,
+                  "Comma-separated built-in maps (open, maze1, maze2, small) or YAML files; "
+                  "default " + maps)
+        ->delimiter(',');
+    c->add_option("--methods", e.methods,
+                  "Comma-separated: group-frontier, baseline, ideal; default " + methods)
+        ->delimiter(',');
+    jobs_opt[k] = c->add_option("--jobs", jobs_flag[k], "Runs at once; default the core count");
+    c->add_option("--out", e.out_dir,
+                  "Experiment directory; default runs/experiment-" + kind_name(e.kind) + "-<time>");
+    c->add_option("--scenario", e.scenario_path,
+                  "Base scenario file; default DATA/scenarios/default.pbtxt");
+    c->add_option("--timeout", experiment_timeout[k], "Wall-clock limit per run in seconds (0 = none)")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+  }
+
+  ReportOptions report;
+  CLI::App* report_cmd = app.add_subcommand(
+      "report", "Rebuild an experiment's (or run directories') tables and plots without re-running");
+  report_cmd->add_option("dirs", report.dirs,
+                         "An experiment directory, or run directories / folders of them")
+      ->required();
+  report_cmd->add_option("--out", report.out_dir,
+                         "Where to write; default the experiment directory, or "
+                         "runs/report-<time> for run directories");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -73,6 +141,8 @@ int main(int argc, char** argv) {
     if (mode_opt->count()) o.mode = mode;
     if (seed_opt->count()) o.seed = seed;
     if (ticks_opt->count()) o.max_ticks = max_ticks;
+    if (realtime_opt->count()) o.realtime = realtime;
+    if (tick_ms_opt->count()) o.tick_ms = tick_ms;
     run.timeout = std::chrono::seconds(timeout_s);
     return run_command(run, std::cout, std::cerr);
   }
@@ -80,5 +150,14 @@ int main(int argc, char** argv) {
     if (tick_opt->count()) render.tick = tick;
     return render_command(render, std::cout, std::cerr);
   }
+  for (std::size_t k = 0; k < kinds.size(); ++k) {
+    if (!kind_cmd[k]->parsed()) continue;
+    ExperimentOptions& e = experiment[k];
+    if (seeds_opt[k]->count()) e.seeds = seeds_flag[k];
+    if (jobs_opt[k]->count()) e.jobs = jobs_flag[k];
+    e.timeout = std::chrono::seconds(experiment_timeout[k]);
+    return experiment_command(e, std::cout, std::cerr);
+  }
+  if (report_cmd->parsed()) return report_command(report, std::cout, std::cerr);
   return bench_command(executable_dir(), bench_cmd->remaining(), std::cerr);
 }

@@ -67,6 +67,19 @@ bool link_drops(const LinkTable& table, LinkClass link, std::uint16_t sender, st
   return unit(h) < loss;
 }
 
+std::uint32_t after_cuts(const LinkTable& table, LinkClass link, std::uint16_t sender, std::uint16_t receiver,
+                         std::uint32_t tick, std::uint32_t deliver_tick) {
+  if (link != LinkClass::MemberLeader && link != LinkClass::LeaderGcs) return deliver_tick;
+  for (const LinkCut& c : table.cuts) {
+    const bool involved = c.agent == sender || c.agent == receiver;
+    // Sent while cut, or due while cut: it waits for the link to heal.
+    if (involved && ((tick >= c.from && tick < c.to) || (deliver_tick >= c.from && deliver_tick < c.to))) {
+      deliver_tick = std::max(deliver_tick, c.to);
+    }
+  }
+  return deliver_tick;
+}
+
 std::uint32_t lost_transmissions(const LinkTable& table, LinkClass link, std::uint16_t sender,
                                  std::uint64_t topic_hash, std::uint32_t seq, std::uint16_t receiver) {
   std::uint32_t lost = 0;

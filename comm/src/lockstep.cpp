@@ -174,7 +174,7 @@ void wait_for_discovery(const std::string& who, Pred ready) {
 LockstepAgent::LockstepAgent(Participant& participant, const Topology& topology, const LinkTable& links,
                              AgentId self)
     : Mailbox(participant, topology, links, self) {
-  done_writer_ = std::make_unique<Writer<msgs::Done>>(participant, topic::kDone);
+  done_writer_ = std::make_unique<Writer<msgs::Done>>(participant, topic::kDone, "swarm_heartbeat_writer");
   clock_reader_ = std::make_unique<Reader<msgs::Clock>>(participant, topic::kClock, [this](msgs::Clock&& c) {
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -245,32 +245,96 @@ void run_lockstep(LockstepAgent& agent, const std::function<bool(const msgs::Clo
 }
 
 // ---------------------------------------------------------------------------------------------
+// Reads the agents' Done heartbeats and DDS's verdict on their liveliness.
+class LockstepClock::HeartbeatListener : public eprosima::fastdds::dds::DataReaderListener {
+ public:
+  HeartbeatListener(LockstepClock& clock, Participant& p) : clock_(clock), participant_(p) {
+    using namespace eprosima::fastdds::dds;
+    auto* t = p.topic<PubSubTypeOf<msgs::Done>::type>(topic::kDone);
+    reader_ = p.subscriber()->create_datareader_with_profile(
+        t, "swarm_heartbeat_reader", this, StatusMask::data_available() << StatusMask::liveliness_changed() << StatusMask::subscription_matched());
+    if (reader_ == nullptr) throw std::runtime_error("cannot create the DDS reader for topic done");
+  }
+  ~HeartbeatListener() override {
+    reader_->set_listener(nullptr);
+    participant_.subscriber()->delete_datareader(reader_);
+  }
+  void on_data_available(eprosima::fastdds::dds::DataReader* reader) override {
+    msgs::Done sample;
+    eprosima::fastdds::dds::SampleInfo info;
+    while (reader->take_next_sample(&sample, &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) {
+      if (info.valid_data) clock_.on_done(std::move(sample), info.publication_handle);
+    }
+  }
+  void on_liveliness_changed(eprosima::fastdds::dds::DataReader*,
+                             const eprosima::fastdds::dds::LivelinessChangedStatus& status) override {
+    if (status.not_alive_count_change > 0) clock_.on_liveliness_lost(status.last_publication_handle);
+  }
+  // A crashed process's writer disappears when its participant's lease runs out.
+  void on_subscription_matched(eprosima::fastdds::dds::DataReader*,
+                               const eprosima::fastdds::dds::SubscriptionMatchedStatus& status) override {
+    if (status.current_count_change < 0) clock_.on_liveliness_lost(status.last_publication_handle);
+  }
+
+ private:
+  LockstepClock& clock_;
+  Participant& participant_;
+  eprosima::fastdds::dds::DataReader* reader_ = nullptr;
+};
+
 LockstepClock::LockstepClock(Participant& participant, const Topology& topology, const LinkTable& links)
     : Mailbox(participant, topology, links, topology.sim()),
       from_agents_(topology.agents(), 0),
       ready_(topology.agents(), false),
-      from_sim_(topology.agents(), 0) {
+      from_sim_(topology.agents(), 0),
+      lost_(topology.agents(), false) {
   ready_[topology.sim()] = true;
   clock_writer_ = std::make_unique<Writer<msgs::Clock>>(participant, topic::kClock);
-  done_reader_ = std::make_unique<Reader<msgs::Done>>(participant, topic::kDone, [this](msgs::Done&& d) {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (d.agent() >= topology_.agents()) return;
-      if (d.tick() == kReadyTick) {
-        ready_[d.agent()] = true;
-      } else {
-        auto& seen = done_[d.tick()];
-        if (seen.empty()) seen.assign(topology_.agents(), false);
-        seen[d.agent()] = true;
-        for (std::size_t a = 0; a < d.sent().size() && a < from_agents_.size(); ++a) from_agents_[a] += d.sent()[a];
-        if (d.mission_complete()) complete_ = true;
-      }
-    }
-    arrived_.notify_all();
-  });
+  heartbeat_ = std::make_unique<HeartbeatListener>(*this, participant);
 }
 
-LockstepClock::~LockstepClock() { done_reader_.reset(); }
+void LockstepClock::on_done(msgs::Done&& d, const eprosima::fastdds::dds::InstanceHandle_t& writer) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (d.agent() >= topology_.agents()) return;
+    writer_agent_[writer] = d.agent();
+    if (d.tick() == kReadyTick) {
+      ready_[d.agent()] = true;
+    } else {
+      auto& seen = done_[d.tick()];
+      if (seen.empty()) seen.assign(topology_.agents(), false);
+      seen[d.agent()] = true;
+      for (std::size_t a = 0; a < d.sent().size() && a < from_agents_.size(); ++a) from_agents_[a] += d.sent()[a];
+      if (d.mission_complete()) complete_ = true;
+    }
+  }
+  arrived_.notify_all();
+}
+
+void LockstepClock::on_liveliness_lost(const eprosima::fastdds::dds::InstanceHandle_t& writer) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto it = writer_agent_.find(writer);
+    // After the stop every agent leaves; that is not a loss.
+    if (stopped_ || it == writer_agent_.end() || lost_[it->second]) return;
+    lost_[it->second] = true;
+    const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - waiting_since_).count();
+    losses_.push_back({it->second, tick_, waited});
+  }
+  arrived_.notify_all();
+}
+
+std::vector<AgentLoss> LockstepClock::losses() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return losses_;
+}
+
+bool LockstepClock::is_lost(AgentId a) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return lost_[a];
+}
+
+LockstepClock::~LockstepClock() { heartbeat_.reset(); }
 
 void LockstepClock::wait_ready() {
   const auto deadline = std::chrono::steady_clock::now() + stall_timeout();
@@ -329,6 +393,10 @@ void LockstepClock::publish_clock(std::uint32_t k, const std::vector<msgs::Robot
   }
   clock.expected(expected);
   clock.robots(robots);
+  if (stop) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopped_ = true;
+  }
   clock_writer_->write(clock);
 }
 
@@ -338,11 +406,12 @@ bool LockstepClock::wait_done(std::uint32_t k) {
     done_.clear();  // nobody is waited for; only the GCS's completion matters
     return complete_;
   }
+  waiting_since_ = std::chrono::steady_clock::now();
   auto all_done = [&] {
     auto it = done_.find(k);
-    if (it == done_.end()) return false;
     for (int a = 0; a < topology_.agents(); ++a) {
-      if (a != topology_.sim() && !it->second[a]) return false;
+      if (a == topology_.sim() || lost_[a]) continue;
+      if (it == done_.end() || !it->second[a]) return false;
     }
     return true;
   };
@@ -351,6 +420,7 @@ bool LockstepClock::wait_done(std::uint32_t k) {
     auto it = done_.find(k);
     for (int a = 0; a < topology_.agents(); ++a) {
       if (a == topology_.sim()) continue;
+      if (lost_[a]) continue;
       if (it == done_.end() || !it->second[a]) missing += (missing.empty() ? "" : ", ") + topology_.name_of(static_cast<AgentId>(a));
     }
     throw std::runtime_error("sim: tick " + std::to_string(k) + " never finished in " +

@@ -1,5 +1,7 @@
 #include "swarm/comm/role.hpp"
 
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
@@ -22,7 +24,7 @@ void add_role_flags(CLI::App& app, RoleOptions& o, RoleKind kind) {
   }
 }
 
-LinkTable link_table(const swarm::scenario::Scenario& s) {
+LinkTable link_table(const swarm::scenario::Scenario& s, const Topology& topology) {
   LinkTable t;
   t.tick_seconds = s.tick_seconds();
   t.seed = s.seed();
@@ -36,6 +38,10 @@ LinkTable link_table(const swarm::scenario::Scenario& s) {
   };
   t.realtime = s.realtime();
   t.tick_ms = s.tick_ms();
+  for (const auto& f : s.faults()) {
+    const auto agent = topology.agent_named(f.agent());
+    if (agent && f.has_cut_from_tick() && f.has_cut_to_tick()) t.cuts.push_back({*agent, f.cut_from_tick(), f.cut_to_tick()});
+  }
   fill(t[LinkClass::SimRobot], s.links().sim_robot());
   fill(t[LinkClass::MemberLeader], s.links().member_leader());
   fill(t[LinkClass::LeaderGcs], s.links().leader_gcs());
@@ -59,12 +65,24 @@ RoleSetup load_role(const RoleOptions& o, RoleKind kind, const std::string& name
                               std::to_string(setup.topology.robots_per_group() - 1) +
                               " (index 0 is the leader, run by swarm-leader)");
   }
-  setup.links = link_table(s);
+  setup.links = link_table(s, setup.topology);
+  if (kind == RoleKind::Member) {
+    const std::string me = setup.topology.name_of(setup.topology.robot(o.group, o.index));
+    for (const auto& f : s.faults()) {
+      if (f.agent() == me && f.has_kill_at_tick()) setup.kill_at_tick = f.kill_at_tick();
+    }
+  }
   setup.dds.domain = o.domain;
   setup.dds.partition = o.partition;
   setup.dds.name = name;
   setup.dds.profile_path = o.profile;
   return setup;
+}
+
+void crash_now(const std::string& who, std::uint32_t tick) {
+  std::cerr << who << ": crashing at tick " << tick << " (fault injection: kill)" << std::endl;
+  std::raise(SIGKILL);
+  std::abort();
 }
 
 int run_role(CLI::App& app, int argc, char** argv, const std::string& role, const std::function<int()>& body) {

@@ -38,6 +38,13 @@ std::string Topology::name_of(AgentId a) const {
   return "member-" + std::to_string(g) + "-" + std::to_string(i);
 }
 
+std::optional<AgentId> Topology::agent_named(const std::string& name) const {
+  for (int a = 0; a < agents(); ++a) {
+    if (name_of(static_cast<AgentId>(a)) == name) return static_cast<AgentId>(a);
+  }
+  return std::nullopt;
+}
+
 namespace topic {
 std::string family(const std::string& name) {
   // Strip a trailing "_<digits>" or "_g<digits>".

@@ -151,6 +151,53 @@ void validate_link(Problems& p, const std::string& name, const swarm::scenario::
   // delay_ticks and jitter_ticks are unsigned: every value is a valid delay.
 }
 
+// "leader-G" -> {G, 0}, "member-G-I" -> {G, I}; nullopt for anything else.
+std::optional<std::pair<long, long>> robot_name(const std::string& name) {
+  auto number = [](const std::string& t, long& out) {
+    if (t.empty() || t.size() > 6 || !std::all_of(t.begin(), t.end(), ::isdigit)) return false;
+    out = std::stol(t);
+    return true;
+  };
+  long g = 0, i = 0;
+  if (name.rfind("leader-", 0) == 0 && number(name.substr(7), g)) return std::make_pair(g, 0L);
+  if (name.rfind("member-", 0) == 0) {
+    const std::string rest = name.substr(7);
+    const auto dash = rest.find('-');
+    if (dash != std::string::npos && number(rest.substr(0, dash), g) && number(rest.substr(dash + 1), i)) {
+      return std::make_pair(g, i);
+    }
+  }
+  return std::nullopt;
+}
+
+void validate_fault(Problems& p, const Scenario& s, int index) {
+  const auto& f = s.faults(index);
+  const std::string field = "faults[" + std::to_string(index) + "]";
+  const auto who = robot_name(f.agent());
+  const bool member = who && who->second >= 1 && who->second < static_cast<long>(s.robots_per_group());
+  const bool known = who && who->first < static_cast<long>(s.groups()) && (who->second == 0 || member);
+  if (!known) {
+    p.add(field + ".agent",
+          "name a robot of this run: leader-G (G < " + std::to_string(s.groups()) + ") or member-G-I (1 <= I < " +
+              std::to_string(s.robots_per_group()) + ")",
+          "\"" + f.agent() + "\"");
+    return;
+  }
+  if (!f.has_kill_at_tick() && !f.has_cut_from_tick() && !f.has_cut_to_tick()) {
+    p.add(field, "say kill_at_tick, or cut_from_tick and cut_to_tick", "neither");
+  }
+  if (f.has_kill_at_tick()) {
+    if (!member) p.add(field + ".agent", "be a member to be killed (a group cannot lose its leader)", f.agent());
+    p.at_least(field + ".kill_at_tick", 1, f.kill_at_tick());
+  }
+  if (f.has_cut_from_tick() || f.has_cut_to_tick()) {
+    if (!f.has_cut_from_tick() || !f.has_cut_to_tick() || f.cut_from_tick() >= f.cut_to_tick()) {
+      p.add(field, "give cut_from_tick < cut_to_tick",
+            std::to_string(f.cut_from_tick()) + " .. " + std::to_string(f.cut_to_tick()));
+    }
+  }
+}
+
 std::string normalise_mode(std::string s) {
   for (char& c : s) {
     c = c == '_' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -336,6 +383,8 @@ void validate(const Scenario& s, const std::string& source) {
   validate_link(p, "sim_robot", s.links().sim_robot());
   validate_link(p, "member_leader", s.links().member_leader());
   validate_link(p, "leader_gcs", s.links().leader_gcs());
+
+  for (int i = 0; i < s.faults_size(); ++i) validate_fault(p, s, i);
 
   p.throw_if_any();
 }

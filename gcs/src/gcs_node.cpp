@@ -56,7 +56,16 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, const
       encoding_(comm::patch_encoding(setup.world.scenario.map_encoding())),
       progress_(progress, setup.world.scenario.max_ticks()),
       record_(record::run_record_path(run_dir)),
-      round_(agent.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, setup.topology.leaders())) {
+      round_(agent.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, setup.topology.leaders())),
+      last_heard_(setup.topology.groups(), 0),
+      unreachable_since_(setup.topology.groups()),
+      // A heartbeat sent at t is seen at t + 1 + delay (+ jitter): give it two ticks of slack.
+      unreachable_after_ticks_(3 + setup.links[LinkClass::LeaderGcs].delay_ticks +
+                               setup.links[LinkClass::LeaderGcs].jitter_ticks),
+      robot_lost_at_(setup.topology.robots()) {
+  agent.subscribe<msgs::Heartbeat>(topic::kHeartbeat, LinkClass::LeaderGcs, [this](const msgs::Heartbeat& h) {
+    if (h.group() < last_heard_.size()) last_heard_[h.group()] = agent_.tick();
+  });
   agent.subscribe<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, [this](const msgs::MapPatch& p) {
     mission_.fuse(p.group(), comm::decode_patch(p.data()));
   });
@@ -134,14 +143,30 @@ bool GcsNode::step(const msgs::Clock& clock) {
     record_.append(map_frame(clock.tick(), *d.start_round, mission_.fused()));
   }
   if (d.complete && !complete_tick_) complete_tick_ = clock.tick();
-  progress_.update(clock.tick(), mission_.mapped_fraction(), mission_.round(), mission_.frontier_cells());
+
+  std::string note;
+  for (std::size_t r = 0; r < robot_lost_at_.size(); ++r) {
+    if (!robot_lost_at_[r] && !clock.robots()[r].alive()) robot_lost_at_[r] = clock.tick();
+    if (robot_lost_at_[r]) note += setup_.topology.name_of(static_cast<comm::AgentId>(r)) + " lost ";
+  }
+  for (int g = 0; g < setup_.topology.groups(); ++g) {
+    const bool silent = clock.tick() > last_heard_[g] + unreachable_after_ticks_;
+    if (silent && !unreachable_since_[g]) unreachable_since_[g] = last_heard_[g] + 1;
+    if (!silent && unreachable_since_[g]) {
+      unreachable_.emplace_back(g, *unreachable_since_[g], clock.tick());
+      unreachable_since_[g].reset();
+    }
+    if (unreachable_since_[g]) note += "leader-" + std::to_string(g) + " unreachable ";
+  }
+  progress_.update(clock.tick(), mission_.mapped_fraction(), mission_.round(), mission_.frontier_cells(), note);
   return d.complete;
 }
 
 void GcsNode::finish() {
   const double wall = std::chrono::duration<double>(last_tick_time_ - first_tick_time_).count();
-  // Every agent but the GCS reports once the run has stopped.
-  const int expected = setup_.topology.agents() - 1;
+  // Every living agent but the GCS reports once the run has stopped.
+  int expected = setup_.topology.agents() - 1;
+  for (const auto& lost : robot_lost_at_) expected -= lost ? 1 : 0;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(15);
   while (std::chrono::steady_clock::now() < deadline) {
     {
@@ -188,6 +213,26 @@ void GcsNode::finish() {
       total_bytes += t.sent_bytes();
     }
   }
+  json unreachable = json::array();
+  for (int g = 0; g < setup_.topology.groups(); ++g) {
+    if (unreachable_since_[g]) unreachable_.emplace_back(g, *unreachable_since_[g], last_tick_ + 1);
+  }
+  for (const auto& [g, from, to] : unreachable_) {
+    unreachable.push_back({{"agent", "leader-" + std::to_string(g)}, {"from_tick", from}, {"to_tick", to}});
+  }
+  json agents_lost = json::array();
+  for (std::size_t r = 0; r < robot_lost_at_.size(); ++r) {
+    if (!robot_lost_at_[r]) continue;
+    const std::string name = setup_.topology.name_of(static_cast<comm::AgentId>(r));
+    json entry = {{"agent", name}, {"marked_lost_at_tick", *robot_lost_at_[r]}};
+    for (const auto& l : sim_extra.value("agents_lost", json::array())) {
+      if (l.value("agent", "") == name) {
+        entry["stopped_answering_at_tick"] = l["missed_tick"];
+        entry["detection_seconds"] = l["detection_seconds"];
+      }
+    }
+    agents_lost.push_back(entry);
+  }
   json rounds = json::array();
   for (std::size_t i = 0; i < mission_.round_ticks().size(); ++i) {
     rounds.push_back({{"round", i + 1}, {"tick", mission_.round_ticks()[i]}});
@@ -220,6 +265,7 @@ void GcsNode::finish() {
       {"timings", {{"planning_seconds_total", planning_seconds},
                    {"planning_ms_per_group_round",
                     mission_.round() > 0 ? 1000.0 * planning_seconds / (mission_.round() * setup_.topology.groups()) : 0.0}}},
+      {"faults", {{"agents_lost", agents_lost}, {"unreachable", unreachable}}},
       {"agents", agents},
       {"reports_missing", missing}};
   std::ofstream(run_dir_ + "/metrics.json") << metrics.dump(2) << "\n";

@@ -12,13 +12,15 @@ Progress::Style Progress::parse(const std::string& name) {
   return Style::Plain;
 }
 
-void Progress::update(std::uint32_t tick, double mapped, std::uint32_t round, std::size_t frontier_cells) {
+void Progress::update(std::uint32_t tick, double mapped, std::uint32_t round, std::size_t frontier_cells,
+                      const std::string& note) {
   if (style_ == Style::None) return;
   if (style_ == Style::Plain) {
-    if (round == last_round_) return;
+    if (round == last_round_ && note == last_note_) return;
     last_round_ = round;
-    std::printf("tick %5u  round %3u  mapped %5.1f%%  frontier cells %zu\n", tick, round, 100.0 * mapped,
-                frontier_cells);
+    last_note_ = note;
+    std::printf("tick %5u  round %3u  mapped %5.1f%%  frontier cells %zu%s%s\n", tick, round, 100.0 * mapped,
+                frontier_cells, note.empty() ? "" : "  ", note.c_str());
     std::fflush(stdout);
     return;
   }
@@ -30,8 +32,9 @@ void Progress::update(std::uint32_t tick, double mapped, std::uint32_t round, st
   char bar[kWidth + 1];
   for (int i = 0; i < kWidth; ++i) bar[i] = i < filled ? '#' : '-';
   bar[kWidth] = '\0';
-  std::printf("\r[%s] mapped %5.1f%% | tick %5u/%u | round %3u | frontier %5zu ", bar, 100.0 * mapped, tick,
-              max_ticks_, round, frontier_cells);
+  // Padding clears what a longer previous note left on the line.
+  std::printf("\r[%s] mapped %5.1f%% | tick %5u/%u | round %3u | frontier %5zu %-28s", bar, 100.0 * mapped, tick,
+              max_ticks_, round, frontier_cells, note.c_str());
   std::fflush(stdout);
 }
 

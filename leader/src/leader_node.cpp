@@ -1,6 +1,7 @@
 #include "swarm/leader/leader_node.hpp"
 
 #include <chrono>
+#include <cstdio>
 
 #include <nlohmann/json.hpp>
 
@@ -42,9 +43,11 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
       map_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution()),
       robot_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution()),
       arrived_(setup.topology.robots_per_group(), true),
+      alive_(setup.topology.robots_per_group(), true),
       patch_gcs_(agent.advertise<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, {topology_.gcs()})),
       group_status_(agent.advertise<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs, {topology_.gcs()})),
       plan_report_(agent.advertise<msgs::PlanReport>(topic::kPlanReport, LinkClass::Telemetry, {topology_.gcs()})),
+      heartbeat_(agent.advertise<msgs::Heartbeat>(topic::kHeartbeat, LinkClass::LeaderGcs, {topology_.gcs()})),
       motion_(agent.advertise<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, {topology_.sim()})) {
   const auto members = topology_.members(group);
   if (!members.empty()) {
@@ -86,11 +89,19 @@ void LeaderNode::plan(std::uint32_t round, const msgs::Clock& clock) {
   in.group_map = &map_.group();
   for (int g = 0; g < topology_.groups(); ++g) in.leader_positions.push_back(cell_of(clock.robots()[topology_.leader(g)]));
   in.group = group_;
+  // Only the living robots get waypoints (K-Means with k = living members); index 0, the leader,
+  // is always alive.
+  std::vector<int> living;
   for (int i = 0; i < topology_.robots_per_group(); ++i) {
+    if (!alive_[i]) continue;
+    living.push_back(i);
     in.member_positions.push_back(cell_of(clock.robots()[topology_.robot(group_, i)]));
   }
   in.round = static_cast<int>(round);
-  const planner::ExplorePlan plan = planner::plan_group_exploration(in, explore_);
+  planner::ExplorePlan plan = planner::plan_group_exploration(in, explore_);
+  std::vector<std::optional<Cell>> waypoints(topology_.robots_per_group());
+  for (std::size_t j = 0; j < living.size(); ++j) waypoints[living[j]] = plan.waypoints[j];
+  plan.waypoints = waypoints;
   planning_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ++rounds_planned_;
   if (plan.plan_case == planner::PlanCase::GroupFrontier) ++case_a_;
@@ -118,6 +129,20 @@ void LeaderNode::plan(std::uint32_t round, const msgs::Clock& clock) {
 }
 
 void LeaderNode::step(const msgs::Clock& clock) {
+  // A member the simulator lost is done for: nobody waits for it and it gets no waypoints.
+  for (int i = 1; i < topology_.robots_per_group(); ++i) {
+    if (alive_[i] && !clock.robots()[topology_.robot(group_, i)].alive()) {
+      alive_[i] = false;
+      arrived_[i] = true;
+      const std::string name = topology_.name_of(topology_.robot(group_, i));
+      members_lost_.emplace_back(name, clock.tick());
+      std::fprintf(stderr, "%s: %s lost at tick %u; planning without it\n",
+                   topology_.name_of(agent_.self()).c_str(), name.c_str(), clock.tick());
+    }
+  }
+  msgs::Heartbeat beat;
+  beat.group(static_cast<std::uint16_t>(group_));
+  heartbeat_.send(beat);
   if (pending_round_) {
     plan(*pending_round_, clock);
     pending_round_.reset();
@@ -154,7 +179,10 @@ void LeaderNode::step(const msgs::Clock& clock) {
 }
 
 std::string LeaderNode::report_json() const {
+  nlohmann::json lost = nlohmann::json::array();
+  for (const auto& [name, tick] : members_lost_) lost.push_back({{"agent", name}, {"noticed_at_tick", tick}});
   return nlohmann::json{{"rounds_planned", rounds_planned_},
+                        {"members_lost", lost},
                         {"case_a_rounds", case_a_},
                         {"case_b_rounds", case_b_},
                         {"planning_seconds", planning_seconds_},

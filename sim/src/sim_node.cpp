@@ -20,13 +20,14 @@ LidarConfig lidar_of(const comm::RoleSetup& setup) {
 SimNode::SimNode(comm::LockstepClock& clock, const comm::RoleSetup& setup)
     : clock_(clock),
       world_(setup.world.truth, setup.world.robot_cells, lidar_of(setup)),
-      max_ticks_(setup.world.scenario.max_ticks()) {
+      max_ticks_(setup.world.scenario.max_ticks()),
+      alive_(setup.world.robot_cells.size(), true) {
   const comm::Topology& t = setup.topology;
   for (comm::AgentId r : t.robot_ids()) {
     sense_.push_back(&clock.advertise<msgs::Sense>(topic::sense(r), LinkClass::SimRobot, {r}));
   }
   clock.subscribe<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, [this, &t](const msgs::MotionCommand& m) {
-    if (t.is_robot(m.robot())) world_.command(m.robot(), comm::from_xy(m.path_xy()));
+    if (t.is_robot(m.robot()) && alive_[m.robot()]) world_.command(m.robot(), comm::from_xy(m.path_xy()));
   });
 }
 
@@ -36,7 +37,7 @@ std::vector<msgs::RobotState> SimNode::states() const {
     msgs::RobotState s;
     s.x(static_cast<std::int16_t>(c.x));
     s.y(static_cast<std::int16_t>(c.y));
-    s.alive(true);
+    s.alive(alive_[out.size()]);
     out.push_back(s);
   }
   return out;
@@ -47,8 +48,15 @@ std::uint32_t SimNode::run() {
   std::vector<float> ranges;
   for (std::uint32_t k = 0;; ++k) {
     clock_.begin_tick(k);
+    for (std::size_t r = 0; r < alive_.size(); ++r) {
+      if (alive_[r] && clock_.is_lost(static_cast<comm::AgentId>(r))) {
+        alive_[r] = false;
+        world_.command(static_cast<int>(r), {});  // a dead robot stands where it died
+      }
+    }
     if (k > 0) world_.move();
     for (std::size_t r = 0; r < sense_.size(); ++r) {
+      if (!alive_[r]) continue;
       world_.scan(static_cast<int>(r), ranges);
       msgs::Sense s;
       s.x(static_cast<std::int16_t>(world_.robots()[r].x));
@@ -74,7 +82,14 @@ std::uint32_t SimNode::run() {
 std::string SimNode::report_json() const {
   nlohmann::json curve = nlohmann::json::array();
   for (const auto& [tick, f] : curve_) curve.push_back({tick, f});
+  nlohmann::json losses = nlohmann::json::array();
+  for (const auto& l : clock_.losses()) {
+    losses.push_back({{"agent", clock_.topology().name_of(l.agent)},
+                      {"missed_tick", l.tick},
+                      {"detection_seconds", l.detection_seconds}});
+  }
   return nlohmann::json{{"last_tick", last_tick_},
+                        {"agents_lost", losses},
                         {"steps_to_99", steps_to_99_ ? nlohmann::json(*steps_to_99_) : nlohmann::json(nullptr)},
                         {"explored_fraction", world_.explored_fraction()},
                         {"reachable_free_cells", world_.reachable_free_cells()},

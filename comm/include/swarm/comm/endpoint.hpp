@@ -29,9 +29,10 @@ std::size_t wire_size(const T& sample) {
 template <class T>
 class Writer {
  public:
-  Writer(Participant& p, const std::string& topic_name) : participant_(p) {
+  Writer(Participant& p, const std::string& topic_name, const std::string& profile = "swarm_writer")
+      : participant_(p) {
     auto* t = p.topic<typename PubSubTypeOf<T>::type>(topic_name);
-    writer_ = p.publisher()->create_datawriter_with_profile(t, "swarm_writer");
+    writer_ = p.publisher()->create_datawriter_with_profile(t, profile);
     if (writer_ == nullptr) throw std::runtime_error("cannot create a DDS writer for topic " + topic_name);
   }
   ~Writer() { participant_.publisher()->delete_datawriter(writer_); }

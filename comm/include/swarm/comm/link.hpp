@@ -20,6 +20,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace swarm::comm {
 
@@ -39,6 +40,14 @@ struct LinkParams {
 
 enum class Delivery : std::uint8_t { Reliable, BestEffort };
 
+// An agent's radio links (member<->leader, leader<->GCS) are down for ticks [from, to): what
+// it sends or is sent meanwhile is held and arrives when the link heals, at tick `to`.
+struct LinkCut {
+  std::uint16_t agent = 0;
+  std::uint32_t from = 0;
+  std::uint32_t to = 0;
+};
+
 // The parameters of every link class in a run; Telemetry and Control are always ideal.
 struct LinkTable {
   std::array<LinkParams, kLinkClasses> params{};
@@ -46,6 +55,7 @@ struct LinkTable {
   std::uint64_t seed = 1;
   bool realtime = false;
   double tick_ms = 50.0;  // real-time mode: wall milliseconds per tick
+  std::vector<LinkCut> cuts;
   const LinkParams& operator[](LinkClass c) const { return params[static_cast<int>(c)]; }
   LinkParams& operator[](LinkClass c) { return params[static_cast<int>(c)]; }
 };
@@ -71,6 +81,11 @@ class LinkSender {
 // Receiver side: is this transmission (attempt 0 = the first) of the message lost?
 bool link_drops(const LinkTable& table, LinkClass link, std::uint16_t sender, std::uint64_t topic_hash,
                 std::uint32_t seq, std::uint16_t receiver, std::uint32_t attempt = 0);
+// The earliest tick a message stamped `tick` between these agents on `link` may arrive, given
+// the run's cuts (`deliver_tick` when no cut applies).
+std::uint32_t after_cuts(const LinkTable& table, LinkClass link, std::uint16_t sender, std::uint16_t receiver,
+                         std::uint32_t tick, std::uint32_t deliver_tick);
+
 // How many transmissions of the message are lost before one gets through (at most 64).
 std::uint32_t lost_transmissions(const LinkTable& table, LinkClass link, std::uint16_t sender,
                                  std::uint64_t topic_hash, std::uint32_t seq, std::uint16_t receiver);

@@ -197,9 +197,10 @@ void Mailbox::subscribe(const std::string& topic_name, LinkClass link, std::func
         const LinkParams& p = links_[link];
         const std::uint32_t retry_ticks = dropped ? 0 : lost * p.retransmit_ticks;
         const double delay_ms = p.delay_ms + retry_ticks * links_.tick_ms;
+        const std::uint32_t deliver =
+            after_cuts(links_, link, h.sender(), self_, h.tick(), h.deliver_tick() + retry_ticks);
         auto shared = std::make_shared<T>(std::move(msg));
-        arrive(shared->header(), shared->header().deliver_tick() + retry_ticks, delay_ms, !dropped, order,
-               [handler, shared] { handler(*shared); });
+        arrive(shared->header(), deliver, delay_ms, !dropped, order, [handler, shared] { handler(*shared); });
       });
   readers_.push_back(reader);
 }
@@ -239,6 +240,14 @@ class LockstepAgent : public Mailbox {
 // `step` returns true when the mission is complete (only the GCS ever says so).
 void run_lockstep(LockstepAgent& agent, const std::function<bool(const msgs::Clock&)>& step);
 
+// An agent that stopped answering: it missed Done(tick) and DDS reported its heartbeat writer not
+// alive (lease 1 s, deploy/fastdds_loopback.xml) after `detection_seconds` of waiting.
+struct AgentLoss {
+  AgentId agent = 0;
+  std::uint32_t tick = 0;
+  double detection_seconds = 0;
+};
+
 // The simulator's side: it owns the clock and the barrier counts.
 class LockstepClock : public Mailbox {
  public:
@@ -251,13 +260,20 @@ class LockstepClock : public Mailbox {
   void begin_tick(std::uint32_t k);
   // Publishes Clock(k) with the barrier counts; call after sending this tick's sensor data.
   void publish_clock(std::uint32_t k, const std::vector<msgs::RobotState>& robots, bool stop);
-  // Blocks until every agent has finished tick k; returns true when the GCS reported the mission
-  // complete. Throws, naming the agents it waited for, after stall_timeout().
+  // Blocks until every living agent has finished tick k; returns true when the GCS reported the
+  // mission complete. An agent whose heartbeat DDS declares lost is no longer waited for (see
+  // losses()). Throws, naming the agents it waited for, after stall_timeout().
   bool wait_done(std::uint32_t k);
+  std::vector<AgentLoss> losses() const;
+  bool is_lost(AgentId a) const;
 
  private:
+  class HeartbeatListener;
+  void on_done(msgs::Done&& d, const eprosima::fastdds::dds::InstanceHandle_t& writer);
+  void on_liveliness_lost(const eprosima::fastdds::dds::InstanceHandle_t& writer);
+
   std::unique_ptr<Writer<msgs::Clock>> clock_writer_;
-  std::unique_ptr<Reader<msgs::Done>> done_reader_;
+  std::unique_ptr<HeartbeatListener> heartbeat_;
   // guarded by mutex_:
   std::vector<std::uint64_t> from_agents_;        // cumulative messages agents sent to each agent
   std::map<std::uint32_t, std::vector<bool>> done_;  // tick -> which agents reported
@@ -265,6 +281,11 @@ class LockstepClock : public Mailbox {
   bool complete_ = false;
   std::vector<std::uint64_t> from_sim_;  // cumulative messages the sim sent to each agent
   std::chrono::steady_clock::time_point realtime_start_{};
+  std::map<eprosima::fastdds::dds::InstanceHandle_t, AgentId> writer_agent_;
+  std::vector<bool> lost_;
+  std::vector<AgentLoss> losses_;
+  bool stopped_ = false;
+  std::chrono::steady_clock::time_point waiting_since_{};
 };
 
 }  // namespace swarm::comm

@@ -22,6 +22,7 @@ SWARM_PUBSUB(RoundStart);
 SWARM_PUBSUB(Assignment);
 SWARM_PUBSUB(MemberStatus);
 SWARM_PUBSUB(GroupStatus);
+SWARM_PUBSUB(Heartbeat);
 SWARM_PUBSUB(PlanReport);
 SWARM_PUBSUB(AgentReport);
 #undef SWARM_PUBSUB

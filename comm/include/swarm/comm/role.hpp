@@ -13,6 +13,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -45,12 +46,17 @@ struct RoleSetup {
   Topology topology{1, 1};
   LinkTable links;
   DdsOptions dds;
+  // The tick at which a fault makes this agent's process crash, if any.
+  std::optional<std::uint32_t> kill_at_tick;
 };
 
 // Loads and resolves the scenario, checks the role's ids against it. Throws config::ConfigError.
 RoleSetup load_role(const RoleOptions& options, RoleKind kind, const std::string& name);
 
-LinkTable link_table(const swarm::scenario::Scenario& scenario);
+LinkTable link_table(const swarm::scenario::Scenario& scenario, const Topology& topology);
+
+// Fault injection: the process crashes as a SIGKILL would, after saying so on stderr.
+[[noreturn]] void crash_now(const std::string& who, std::uint32_t tick);
 
 // Parses argv, runs body, and maps exceptions to the exit codes above.
 int run_role(CLI::App& app, int argc, char** argv, const std::string& role, const std::function<int()>& body);

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,8 @@ class Topology {
 
   // "gcs", "sim", "leader-1", "member-1-2": the names used for logs and reports.
   std::string name_of(AgentId a) const;
+  // The inverse of name_of; nullopt for a name that is not an agent of this topology.
+  std::optional<AgentId> agent_named(const std::string& name) const;
 
  private:
   int groups_;
@@ -54,6 +57,7 @@ inline const std::string kMotion = "motion";
 inline const std::string kPatchGcs = "patch_gcs";
 inline const std::string kRound = "round";
 inline const std::string kGroupStatus = "group_status";
+inline const std::string kHeartbeat = "heartbeat";
 inline const std::string kPlanReport = "plan_report";
 inline const std::string kReport = "report";
 inline std::string sense(AgentId robot) { return "sense_" + std::to_string(robot); }

@@ -9,6 +9,8 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/comm/role.hpp"
@@ -42,6 +44,13 @@ class GcsNode {
   std::unique_ptr<comm::Reader<msgs::AgentReport>> reports_reader_;
   std::mutex reports_mutex_;
   std::map<comm::AgentId, msgs::AgentReport> reports_;
+
+  // Reachability of each group's leader, judged from its per-tick heartbeat.
+  std::vector<std::uint32_t> last_heard_;
+  std::vector<std::optional<std::uint32_t>> unreachable_since_;
+  std::vector<std::tuple<int, std::uint32_t, std::uint32_t>> unreachable_;  // (group, from, to)
+  std::uint32_t unreachable_after_ticks_ = 3;
+  std::vector<std::optional<std::uint32_t>> robot_lost_at_;  // first tick the clock said dead
 
   std::uint32_t last_tick_ = 0;
   std::optional<std::uint32_t> complete_tick_;

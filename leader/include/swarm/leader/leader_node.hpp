@@ -39,6 +39,7 @@ class LeaderNode {
   std::optional<std::uint32_t> pending_round_;
   std::uint32_t round_ = 0;
   std::vector<bool> arrived_;
+  std::vector<bool> alive_;  // per robot of the group, from the clock's shared robot states
   bool group_reported_ = true;
 
   comm::Mailbox::Outlet<msgs::MapPatch>& patch_gcs_;
@@ -46,6 +47,7 @@ class LeaderNode {
   comm::Mailbox::Outlet<msgs::Assignment>* assign_ = nullptr;
   comm::Mailbox::Outlet<msgs::GroupStatus>& group_status_;
   comm::Mailbox::Outlet<msgs::PlanReport>& plan_report_;
+  comm::Mailbox::Outlet<msgs::Heartbeat>& heartbeat_;
   comm::Mailbox::Outlet<msgs::MotionCommand>& motion_;
 
   // Numbers for the run's metrics (wall-clock planning time is not part of the deterministic record).
@@ -53,6 +55,7 @@ class LeaderNode {
   std::uint64_t case_a_ = 0;
   std::uint64_t case_b_ = 0;
   double planning_seconds_ = 0;
+  std::vector<std::pair<std::string, std::uint32_t>> members_lost_;  // (name, tick noticed)
 };
 
 }  // namespace swarm::leader

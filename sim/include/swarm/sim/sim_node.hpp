@@ -29,6 +29,7 @@ class SimNode {
   std::vector<comm::Mailbox::Outlet<msgs::Sense>*> sense_;
   std::optional<std::uint32_t> steps_to_99_;
   std::vector<std::pair<std::uint32_t, double>> curve_;  // (tick, explored fraction)
+  std::vector<bool> alive_;
   std::uint32_t last_tick_ = 0;
   bool complete_ = false;
 };

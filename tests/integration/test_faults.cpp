@@ -1,0 +1,74 @@
+// Faults without Docker: a member crashes, a leader's links are cut and heal; and real-time mode.
+// The same runtime paths serve the docker-compose deployment (deploy/).
+#include <gtest/gtest.h>
+
+#include "run_swarm.hpp"
+
+namespace swarm::test {
+namespace {
+
+const std::string kSmall = "run --scenario " + source_path("scenarios/small.pbtxt");
+
+// member-1-1 crashes at tick 30: the simulator notices through DDS (its heartbeat writer vanishes
+// when its participant's 2 s lease runs out), every process sees it marked dead at the next tick,
+// its leader plans without it, and the mission still completes.
+TEST(Faults, KilledMemberIsNoticedAndTheMissionCompletes) {
+  const std::string dir = fresh_dir("kill_member") + "/run";
+  const CommandResult r = run_swarm(kSmall + " --kill member-1-1@30 --out " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto m = read_json(dir + "/metrics.json");
+  EXPECT_TRUE(m["complete"].get<bool>());
+  EXPECT_GE(m["explored_fraction"].get<double>(), 0.99);
+  const auto& lost = m["faults"]["agents_lost"];
+  ASSERT_EQ(lost.size(), 1u) << lost;
+  EXPECT_EQ(lost[0]["agent"], "member-1-1");
+  EXPECT_EQ(lost[0]["stopped_answering_at_tick"], 30);
+  EXPECT_EQ(lost[0]["marked_lost_at_tick"], 31);
+  // The bound: the 2 s participant lease of deploy/fastdds_loopback.xml, plus slack for a busy CI.
+  EXPECT_LT(lost[0]["detection_seconds"].get<double>(), 6.0);
+  const auto& noticed = m["agents"]["leader-1"]["members_lost"];
+  ASSERT_EQ(noticed.size(), 1u);
+  EXPECT_EQ(noticed[0]["agent"], "member-1-1");
+  EXPECT_EQ(noticed[0]["noticed_at_tick"], 31);
+  // The dead member never reports; everybody else does.
+  EXPECT_EQ(m["reports_missing"], nlohmann::json::array({"member-1-1"}));
+}
+
+// leader-1's links are down for ticks 20..60: the GCS shows it unreachable meanwhile, and what
+// the group mapped while cut reaches the GCS after the link heals (nothing is lost).
+TEST(Faults, CutLeaderIsUnreachableThenCatchesUp) {
+  const std::string dir = fresh_dir("cut_leader") + "/run";
+  const CommandResult r = run_swarm(kSmall + " --cut leader-1@20-60 --out " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("leader-1 unreachable"), std::string::npos) << r.output;
+  const auto m = read_json(dir + "/metrics.json");
+  EXPECT_TRUE(m["complete"].get<bool>());
+  const auto& unreachable = m["faults"]["unreachable"];
+  ASSERT_EQ(unreachable.size(), 1u) << unreachable;
+  EXPECT_EQ(unreachable[0]["agent"], "leader-1");
+  // Its last heartbeat before the cut was sent at 19 and seen at 20; the first after it is seen at 60.
+  EXPECT_GE(unreachable[0]["from_tick"].get<int>(), 19);
+  EXPECT_LE(unreachable[0]["from_tick"].get<int>(), 22);
+  EXPECT_EQ(unreachable[0]["to_tick"], 60);
+  const auto& patches = m["traffic"]["by_topic"]["patch_gcs"];
+  EXPECT_EQ(patches["messages"], patches["received_messages"]);
+  EXPECT_TRUE(m["reports_missing"].empty());
+}
+
+// Real-time mode: wall-rate ticks and millisecond delays; the metrics carry the same fields.
+TEST(RealTime, SmallMissionCompletes) {
+  const std::string dir = fresh_dir("realtime") + "/run";
+  const CommandResult r = run_swarm(kSmall + " --realtime --tick-ms 20 --out " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto m = read_json(dir + "/metrics.json");
+  EXPECT_TRUE(m["complete"].get<bool>());
+  for (const char* key : {"steps", "steps_to_99", "planning_rounds", "explored_fraction", "wall_seconds",
+                          "ticks_per_second", "traffic"}) {
+    EXPECT_TRUE(m.contains(key)) << key;
+  }
+  // 20 ms ticks: the clock runs at about 50 ticks/s, never faster.
+  EXPECT_LT(m["ticks_per_second"].get<double>(), 55.0);
+}
+
+}  // namespace
+}  // namespace swarm::test
