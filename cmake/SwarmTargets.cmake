@@ -24,3 +24,23 @@ function(swarm_add_gtest)
   gtest_discover_tests(${T_NAME} PROPERTIES LABELS "${T_LABELS}" TIMEOUT ${T_TIMEOUT}
                        DISCOVERY_TIMEOUT 30)
 endfunction()
+
+# swarm_library(<name> SOURCES <files...> [PUBLIC <targets...>] [PRIVATE <targets...>])
+# A static library swarm_<name>, alias swarm::<name>, with the folder's include/ as its public
+# include directory (headers live in include/swarm/<name>/).
+function(swarm_library name)
+  cmake_parse_arguments(L "" "" "SOURCES;PUBLIC;PRIVATE" ${ARGN})
+  add_library(swarm_${name} STATIC ${L_SOURCES})
+  add_library(swarm::${name} ALIAS swarm_${name})
+  swarm_target_defaults(swarm_${name})
+  target_include_directories(swarm_${name} PUBLIC
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:include>)
+  target_link_libraries(swarm_${name} PUBLIC ${L_PUBLIC} PRIVATE ${L_PRIVATE})
+endfunction()
+
+# swarm_role(<executable> <library>): a role process, main.cpp beside its library.
+function(swarm_role exe lib)
+  add_executable(${exe} main.cpp)
+  swarm_target_defaults(${exe})
+  target_link_libraries(${exe} PRIVATE ${lib})
+endfunction()
