@@ -21,8 +21,16 @@ function(swarm_add_gtest)
   if(NOT T_TIMEOUT)
     set(T_TIMEOUT 120)
   endif()
-  gtest_discover_tests(${T_NAME} PROPERTIES LABELS "${T_LABELS}" TIMEOUT ${T_TIMEOUT}
-                       DISCOVERY_TIMEOUT 30)
+  gtest_discover_tests(${T_NAME} TEST_LIST ${T_NAME}_TESTS DISCOVERY_TIMEOUT 30)
+  # gtest_discover_tests flattens list-valued PROPERTIES (LABELS "unit;dds" would become the
+  # words "unit dds", i.e. label unit and a stray argument), so labels and timeout are set from a
+  # file ctest includes after the discovered tests.
+  set(props ${CMAKE_CURRENT_BINARY_DIR}/${T_NAME}_properties.cmake)
+  file(WRITE ${props}
+       "foreach(t IN LISTS ${T_NAME}_TESTS)\n"
+       "  set_tests_properties(\"\${t}\" PROPERTIES LABELS \"${T_LABELS}\" TIMEOUT ${T_TIMEOUT})\n"
+       "endforeach()\n")
+  set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${props})
 endfunction()
 
 # swarm_library(<name> SOURCES <files...> [PUBLIC <targets...>] [PRIVATE <targets...>])

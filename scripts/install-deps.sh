@@ -10,6 +10,7 @@ packages=(
   libprotobuf-dev protobuf-compiler
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libzstd-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  debootstrap  # deploy/base-image.sh: the Debian base image where no registry is reachable
 )
 
 missing=()

@@ -25,6 +25,7 @@
 #pragma once
 
 #include <cstdint>
+#include <ctime>
 #include <optional>
 #include <string>
 #include <utility>
@@ -49,6 +50,10 @@ struct RunSetting {
   std::optional<swarm::scenario::MapEncoding> map_encoding;
   std::optional<double> leader_gcs_bandwidth_bytes_per_s;  // 0 = unlimited
   std::optional<double> loss;                              // the same on every link
+
+  static RunSetting delays(std::uint32_t leader_gcs, std::uint32_t member_leader);
+  static RunSetting encoding_and_cap(swarm::scenario::MapEncoding e, double bytes_per_s);
+  static RunSetting every_link_loss(double loss);
 
   void apply(swarm::scenario::Scenario& s) const;
   friend bool operator==(const RunSetting&, const RunSetting&) = default;
@@ -129,7 +134,12 @@ struct RunNumbers {
 
   // map_bytes / (robots x ticks_run x tick_seconds); 0 when that is 0.
   [[nodiscard]] double map_bytes_per_robot_second() const;
+  // The GCS declared the map complete, but the simulator's ground truth says less than
+  // kCompleteExploredFraction was seen: the run's steps mean nothing.
+  [[nodiscard]] bool ended_early() const;
 };
+
+inline constexpr double kCompleteExploredFraction = 0.99;
 
 struct RunRow {
   ExperimentRun run;
@@ -172,5 +182,8 @@ std::vector<std::string> write_outputs(const std::string& dir, const ExperimentO
 // complete, steps, steps_to_99, planning_rounds, explored_percent, ticks_run, wall_seconds,
 // traffic_bytes, map_bytes, map_bytes_per_robot_second, log, failure.
 [[nodiscard]] std::vector<std::string> csv_header(ExperimentKind kind);
+
+// "YYYYmmdd-HHMMSS" in local time, for default output directory names.
+[[nodiscard]] std::string local_timestamp(std::time_t now);
 
 }  // namespace swarm::tools

@@ -16,6 +16,7 @@ constexpr double kTitleScale = 0.75;
 constexpr double kPanelTitleScale = 0.62;
 constexpr double kLabelScale = 0.55;
 constexpr double kTickScale = 0.5;
+constexpr double kValueScale = 0.45;
 // Plot area margins inside a panel.
 constexpr int kLeft = 86, kRight = 24, kTop = 44, kBottom = 70;
 
@@ -96,6 +97,21 @@ std::string tick_label(double v, double step) {
   return buf;
 }
 
+// "609", "4.5", "0.25", "12.3k": a bar's value, short.
+std::string value_label(double v) {
+  char buf[32];
+  if (std::fabs(v) >= 10000) {
+    std::snprintf(buf, sizeof buf, "%.1fk", v / 1000.0);
+  } else if (std::fabs(v) >= 100) {
+    std::snprintf(buf, sizeof buf, "%.0f", v);
+  } else if (std::fabs(v) >= 1) {
+    std::snprintf(buf, sizeof buf, "%.1f", v);
+  } else {
+    std::snprintf(buf, sizeof buf, "%.2f", v);
+  }
+  return buf;
+}
+
 double value_top(const PlotSeries& s, std::size_t i) {
   const double v = s.values[i];
   if (!std::isfinite(v)) return 0;
@@ -114,11 +130,13 @@ struct Frame {
 
 // Panel title, y grid + ticks + label, axes, x label. Returns where values go.
 Frame draw_axes(cv::Mat& img, const cv::Rect& panel, const std::string& title,
-                const std::string& y_label, const std::string& x_label, double max_value) {
+                const std::string& y_label, const std::string& x_label, double max_value,
+                double y_max) {
   Frame f;
   f.area = cv::Rect(panel.x + kLeft, panel.y + kTop, panel.width - kLeft - kRight,
                     panel.height - kTop - kBottom);
   f.ticks = nice_ticks(max_value);
+  if (y_max > 0) f.ticks = {nice_ticks(y_max).step, y_max};
   put_centred(img, title, f.area.x + f.area.width / 2, panel.y + 26, kPanelTitleScale,
               panel.width - 12, 1);
   for (int k = 0;; ++k) {
@@ -161,7 +179,7 @@ void draw_panel(cv::Mat& img, const cv::Rect& panel, const BarPanel& p) {
       max_value = std::max(max_value, value_top(s, i));
     }
   }
-  const Frame f = draw_axes(img, panel, p.title, p.y_label, p.x_label, max_value);
+  const Frame f = draw_axes(img, panel, p.title, p.y_label, p.x_label, max_value, p.y_max);
   const int groups = std::max<int>(1, static_cast<int>(p.groups.size()));
   const double group_w = static_cast<double>(f.area.width) / groups;
   const int n = std::max<int>(1, static_cast<int>(p.series.size()));
@@ -178,8 +196,16 @@ void draw_panel(cv::Mat& img, const cv::Rect& panel, const BarPanel& p) {
       if (x1 > x0 && base >= y) {
         cv::rectangle(img, cv::Point(x0, y), cv::Point(x1, base), bgr(series.colour), cv::FILLED);
       }
-      error_bar(img, f, (x0 + x1) / 2, v, error_at(series, g),
-                std::max(2, static_cast<int>(bar_w / 5)));
+      const double e = error_at(series, g);
+      error_bar(img, f, (x0 + x1) / 2, v, e, std::max(2, static_cast<int>(bar_w / 5)));
+      // The value above the bar (and its error bar), when it fits the bar's width.
+      const std::string label = value_label(series.values[g]);
+      double scale = kValueScale;
+      while (scale > 0.34 && text_size(label, scale).width > x1 - x0 + 4) scale -= 0.03;
+      if (text_size(label, scale).width <= x1 - x0 + 4) {
+        const int top = f.y_of(v + (std::isfinite(e) && e > 0 ? e : 0.0));
+        put_centred(img, label, (x0 + x1) / 2, std::max(f.area.y - 2, top - 5), scale);
+      }
     }
     const int centre = static_cast<int>(std::lround(f.area.x + (g + 0.5) * group_w));
     cv::line(img, {centre, f.area.y + f.area.height}, {centre, f.area.y + f.area.height + 5}, kAxis,
@@ -196,7 +222,7 @@ void draw_panel(cv::Mat& img, const cv::Rect& panel, const LinePanel& p) {
       max_value = std::max(max_value, value_top(s, i));
     }
   }
-  const Frame f = draw_axes(img, panel, p.title, p.y_label, p.x_label, max_value);
+  const Frame f = draw_axes(img, panel, p.title, p.y_label, p.x_label, max_value, p.y_max);
   const int n = std::max<int>(1, static_cast<int>(p.x_ticks.size()));
   const double step = static_cast<double>(f.area.width) / n;
   const int series_count = static_cast<int>(p.series.size());
@@ -209,7 +235,8 @@ void draw_panel(cv::Mat& img, const cv::Rect& panel, const LinePanel& p) {
   for (int s = 0; s < series_count; ++s) {
     const PlotSeries& series = p.series[s];
     // Series side by side around each x position, so error bars do not hide one another.
-    const double dodge = (s - (series_count - 1) / 2.0) * std::min(8.0, step / (2.0 * series_count));
+    const double dodge =
+        (s - (series_count - 1) / 2.0) * std::min(8.0, step / (2.0 * series_count));
     std::vector<cv::Point> points;
     auto flush = [&] {
       if (points.size() >= 2) {
@@ -227,7 +254,15 @@ void draw_panel(cv::Mat& img, const cv::Rect& panel, const LinePanel& p) {
     }
     flush();
     for (int i = 0; i < static_cast<int>(p.x_ticks.size()); ++i) {
-      if (i >= static_cast<int>(series.values.size()) || !std::isfinite(series.values[i])) continue;
+      if (i >= static_cast<int>(series.values.size()) || !std::isfinite(series.values[i])) {
+        // No value here (no run counted): say so above the axis, in the series' colour.
+        const int x = static_cast<int>(std::lround(f.area.x + (i + 0.5) * step));
+        const std::string na = "n/a";
+        cv::putText(img, na, {x - text_size(na, kTickScale).width / 2,
+                              f.area.y + f.area.height - 8 - 16 * s},
+                    kFont, kTickScale, bgr(series.colour), 1, cv::LINE_AA);
+        continue;
+      }
       const double v = std::max(0.0, series.values[i]);
       const int x = static_cast<int>(std::lround(f.area.x + (i + 0.5) * step + dodge));
       error_bar(img, f, x, v, error_at(series, i), 4);
@@ -250,7 +285,9 @@ void draw_legend(cv::Mat& img, const Figure& figure, int y) {
     std::visit([&](const auto& panel) { add(panel.series); }, p);
   }
   int total = 0;
-  for (const auto& [name, colour] : entries) total += 18 + 6 + text_size(name, kLabelScale).width + 24;
+  for (const auto& [name, colour] : entries) {
+    total += 18 + 6 + text_size(name, kLabelScale).width + 24;
+  }
   int x = std::max(8, (img.cols - total) / 2);
   for (const auto& [name, colour] : entries) {
     cv::rectangle(img, cv::Rect(x, y - 13, 18, 14), bgr(colour), cv::FILLED);
@@ -264,7 +301,7 @@ void draw_legend(cv::Mat& img, const Figure& figure, int y) {
 
 AxisTicks nice_ticks(double max_value) {
   if (!std::isfinite(max_value) || max_value <= 0) return {0.2, 1.0};
-  const double raw = max_value / 5.0;
+  const double raw = max_value / 7.0;  // about 7 intervals
   const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
   double step = magnitude * 10;
   for (double m : {1.0, 2.0, 2.5, 5.0, 10.0}) {

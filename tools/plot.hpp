@@ -15,8 +15,9 @@
 //   swarm::tools::Figure f{"Exploration (mean ± std over 5 seeds)", {steps}};
 //   swarm::tools::write_figure_png(f, "table2.png");  // 640 x (kFigureBandPx + 480) pixels
 //
-// A value that is NaN is not drawn (a bar is left out, a line skips the point); an error that is
-// NaN or 0 draws no error bar. Text is ASCII ('±' is drawn as "+/-"). Thread-safe.
+// A value that is NaN is not drawn (a bar is left out; a line skips the point and writes "n/a"
+// in its colour above the axis there); an error that is NaN or 0 draws no error bar. Text is
+// drawn in ASCII ('±' becomes "+/-", '↔' becomes "<->"). Thread-safe.
 #pragma once
 
 #include <cstdint>
@@ -43,6 +44,7 @@ struct BarPanel {
   std::vector<std::string> groups;  // x tick labels, one per group of bars
   std::vector<PlotSeries> series;   // one bar per series in each group
   std::string x_label;              // optional
+  double y_max = 0;                 // > 0: the y axis ends here (100 for percentages); 0 = auto
 };
 
 struct LinePanel {
@@ -51,6 +53,7 @@ struct LinePanel {
   std::vector<std::string> x_ticks;  // one label per x position
   std::vector<PlotSeries> series;    // one line per series
   std::string x_label;
+  double y_max = 0;                  // > 0: the y axis ends here; 0 = from the values
 };
 
 using Panel = std::variant<BarPanel, LinePanel>;

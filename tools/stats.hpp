@@ -1,7 +1,7 @@
 // Summary statistics for experiment tables: mean, sample standard deviation, relative change.
 //
 //   swarm::tools::Summary s = swarm::tools::summarize({368, 402, 351});
-//   // s.n == 3, s.mean == 373.67, s.std == 25.8 (sample std, n - 1 in the denominator)
+//   // s.n == 3, s.mean == 373.67, s.std == 25.97 (sample std, n - 1 in the denominator)
 //   auto pct = swarm::tools::percent_change(s.mean, 626.0);  // -40.3: 40.3 % fewer than 626
 //
 // Pure functions, thread-safe.

@@ -1,6 +1,6 @@
 // `swarm`: the one command a user needs. Parses flags and hands over to one function per
-// subcommand (run_command.hpp, commands.hpp, experiment_command.hpp). Exit statuses: 0 ok, 1 the run failed, 2 a bad
-// flag / scenario / run directory, 130 interrupted.
+// subcommand (run_command.hpp, commands.hpp, experiment_command.hpp). Exit statuses: 0 ok, 1 the
+// run failed, 2 a bad flag / scenario / run directory, 130 interrupted.
 #include <CLI/CLI.hpp>
 
 #include <array>
@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
   for (std::size_t k = 0; k < kinds.size(); ++k) {
     ExperimentOptions& e = experiment[k];
     e.kind = kinds[k].first;
-    experiment_timeout[k] = 600;
+    experiment_timeout[k] = static_cast<long>(e.timeout.count());
     CLI::App* c = experiment_cmd->add_subcommand(kind_name(e.kind), kinds[k].second);
     kind_cmd[k] = c;
     seeds_opt[k] = c->add_option("--seeds", seeds_flag[k],
@@ -112,7 +112,8 @@ int main(int argc, char** argv) {
                   "Experiment directory; default runs/experiment-" + kind_name(e.kind) + "-<time>");
     c->add_option("--scenario", e.scenario_path,
                   "Base scenario file; default DATA/scenarios/default.pbtxt");
-    c->add_option("--timeout", experiment_timeout[k], "Wall-clock limit per run in seconds (0 = none)")
+    c->add_option("--timeout", experiment_timeout[k],
+                  "Wall-clock limit per run in seconds (0 = none); a stuck run fails")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
   }

@@ -27,7 +27,9 @@ void TextTable::add_row(std::vector<std::string> cells) {
 std::string TextTable::render() const {
   std::vector<std::size_t> width(header_.size(), 0);
   auto measure = [&](const std::vector<std::string>& cells) {
-    for (std::size_t i = 0; i < cells.size(); ++i) width[i] = std::max(width[i], display_width(cells[i]));
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      width[i] = std::max(width[i], display_width(cells[i]));
+    }
   };
   measure(header_);
   for (const Line& l : lines_) {

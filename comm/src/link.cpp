@@ -26,7 +26,7 @@ std::uint64_t mix64(std::uint64_t x) {
 std::uint64_t hash_combine(std::uint64_t seed, std::uint64_t value) { return mix64(seed ^ mix64(value)); }
 
 std::uint64_t hash_string(const std::string& s) {
-  std::uint64_t h = 1469598103934665603ULL;
+  std::uint64_t h = 14695981039346656037ULL;  // FNV-1a 64 offset basis
   for (unsigned char c : s) h = (h ^ c) * 1099511628211ULL;
   return h;
 }
@@ -46,8 +46,10 @@ std::uint32_t LinkSender::deliver_tick(LinkClass link, std::uint32_t tick, std::
     double& busy = busy_until_s_[static_cast<int>(link)];
     const double now = tick * table_.tick_seconds;
     busy = std::max(busy, now) + static_cast<double>(bytes) / p.bandwidth_bytes_per_s;
+    // Acted on in the tick during which its last byte arrives (an unlimited link's message,
+    // "arriving" at once, is acted on at tick + lag).
     const auto done_tick = static_cast<std::uint32_t>(std::ceil(busy / table_.tick_seconds - 1e-9));
-    ready = std::max(ready, done_tick + lag);
+    ready = std::max(ready, done_tick);
   }
   std::uint32_t jitter = 0;
   if (p.jitter_ticks > 0) {

@@ -140,6 +140,14 @@ std::vector<std::uint32_t> Mailbox::take_sent_counts() {
 }
 
 bool Mailbox::outlets_matched(std::string* missing) const {
+  for (const auto& r : readers_) {
+    if (r.matched() < r.writers) {
+      if (missing != nullptr) {
+        *missing = r.name + " (" + std::to_string(r.matched()) + " of " + std::to_string(r.writers) + " writers)";
+      }
+      return false;
+    }
+  }
   for (const auto& o : outlets_) {
     if (o->matched() < o->expected_readers()) {
       if (missing != nullptr) {
@@ -188,12 +196,16 @@ LockstepAgent::~LockstepAgent() { clock_reader_.reset(); }
 
 void LockstepAgent::announce_ready() {
   wait_for_discovery(topology_.name_of(self_), [&](std::string* missing) {
-    if (done_writer_->matched() < 1) {
-      *missing = "the simulator (done)";
+    if (done_writer_->matched() < 1 || clock_reader_->matched() < 1) {
+      *missing = "the simulator (done, clock)";
       return false;
     }
     return outlets_matched(missing);
   });
+  say_ready();
+}
+
+void LockstepAgent::say_ready() {
   msgs::Done hello;
   hello.agent(self_);
   hello.tick(kReadyTick);
@@ -207,7 +219,16 @@ const msgs::Clock* LockstepAgent::begin_tick() {
       if (clocks_.empty()) return false;
       return !next_tick_ || clocks_.begin()->first >= *next_tick_ || clocks_.begin()->second.stop();
     };
-    if (!arrived_.wait_for(lock, stall_timeout(), has_next)) {
+    // Before the first clock, repeat the ready announcement: the simulator's reader may have
+    // matched this agent's writer after the first one was written.
+    const auto deadline = std::chrono::steady_clock::now() + stall_timeout();
+    while (!next_tick_ && !has_next() && std::chrono::steady_clock::now() < deadline) {
+      if (arrived_.wait_for(lock, std::chrono::milliseconds(100), has_next)) break;
+      lock.unlock();
+      say_ready();
+      lock.lock();
+    }
+    if (!arrived_.wait_until(lock, deadline, has_next)) {
       throw std::runtime_error(topology_.name_of(self_) + ": no clock from the simulator for " +
                                std::to_string(stall_timeout().count()) + " s after tick " +
                                (next_tick_ ? std::to_string(*next_tick_) : std::string("start")));
@@ -254,6 +275,11 @@ class LockstepClock::HeartbeatListener : public eprosima::fastdds::dds::DataRead
     reader_ = p.subscriber()->create_datareader_with_profile(
         t, "swarm_heartbeat_reader", this, StatusMask::data_available() << StatusMask::liveliness_changed() << StatusMask::subscription_matched());
     if (reader_ == nullptr) throw std::runtime_error("cannot create the DDS reader for topic done");
+  }
+  int matched() const {
+    eprosima::fastdds::dds::SubscriptionMatchedStatus status;
+    reader_->get_subscription_matched_status(status);
+    return status.current_count;
   }
   ~HeartbeatListener() override {
     reader_->set_listener(nullptr);
@@ -347,7 +373,8 @@ void LockstepClock::wait_ready() {
     bool outlets_ok = true;
     if (missing.empty()) {
       lock.unlock();
-      outlets_ok = outlets_matched(&missing) && clock_writer_->matched() >= topology_.agents() - 1;
+      outlets_ok = outlets_matched(&missing) && clock_writer_->matched() >= topology_.agents() - 1 &&
+                   heartbeat_->matched() >= topology_.agents() - 1;
       if (outlets_ok) return;
       if (missing.empty()) missing = "clock readers";
       lock.lock();

@@ -65,14 +65,16 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, const
       robot_lost_at_(setup.topology.robots()) {
   agent.subscribe<msgs::Heartbeat>(topic::kHeartbeat, LinkClass::LeaderGcs, [this](const msgs::Heartbeat& h) {
     if (h.group() < last_heard_.size()) last_heard_[h.group()] = agent_.tick();
-  });
+  }, comm::Delivery::Reliable, setup.topology.groups());
   agent.subscribe<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, [this](const msgs::MapPatch& p) {
     mission_.fuse(p.group(), comm::decode_patch(p.data()));
-  });
+  }, comm::Delivery::Reliable, setup.topology.groups());
   agent.subscribe<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs,
-                                     [this](const msgs::GroupStatus& s) { mission_.group_arrived(s.group(), s.round()); });
+                                     [this](const msgs::GroupStatus& s) { mission_.group_arrived(s.group(), s.round()); },
+                                     comm::Delivery::Reliable, setup.topology.groups());
   agent.subscribe<msgs::PlanReport>(topic::kPlanReport, LinkClass::Telemetry,
-                                    [this](const msgs::PlanReport& p) { on_plan(p); });
+                                    [this](const msgs::PlanReport& p) { on_plan(p); }, comm::Delivery::Reliable,
+                                    setup.topology.groups());
   reports_reader_ = std::make_unique<comm::Reader<msgs::AgentReport>>(
       agent.participant(), topic::kReport, [this](msgs::AgentReport&& r) {
         std::lock_guard<std::mutex> lock(reports_mutex_);

@@ -57,22 +57,22 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
   // Subscription order fixes the order in which same-tick messages are handled.
   agent.subscribe<msgs::Sense>(topic::sense(agent.self()), LinkClass::SimRobot, [this](const msgs::Sense& s) {
     learn(map_.observe(robot_.sense({s.x(), s.y()}, s.ranges(), s.max_range())), true);
-  }, comm::Delivery::BestEffort);  // a lost scan is not repeated; the next one is newer
+  }, comm::Delivery::BestEffort, 1);  // a lost scan is not repeated; the next one is newer
   if (!members.empty()) {
     agent.subscribe<msgs::MapPatch>(topic::patch_up(group), LinkClass::MemberLeader, [this](const msgs::MapPatch& p) {
       learn(map_.observe(comm::decode_patch(p.data())), true);
-    });
+    }, comm::Delivery::Reliable, static_cast<int>(members.size()));
     agent.subscribe<msgs::MemberStatus>(topic::status(group), LinkClass::MemberLeader,
                                         [this](const msgs::MemberStatus& s) {
                                           if (s.round() == round_) arrived_[topology_.index_of(s.robot())] = true;
-                                        });
+                                        }, comm::Delivery::Reliable, static_cast<int>(members.size()));
   }
   agent.subscribe<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, [this](const msgs::RoundStart& r) {
     planner::OccupancyGrid global(r.width(), r.height(), map_.group().resolution());
     comm::decode_map(r.map_rle(), static_cast<planner::PatchEncoding>(r.encoding()), global);
     learn(map_.adopt_global(global), false);
     pending_round_ = r.round();
-  });
+  }, comm::Delivery::Reliable, 1);
 }
 
 void LeaderNode::learn(const std::vector<planner::CellChange>& fresh, bool own_observation) {

@@ -32,14 +32,15 @@ MemberNode::MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
   agent.subscribe<msgs::Sense>(topic::sense(agent.self()), LinkClass::SimRobot, [this](const msgs::Sense& s) {
     auto changes = robot_.sense({s.x(), s.y()}, s.ranges(), s.max_range());
     pending_up_.insert(pending_up_.end(), changes.begin(), changes.end());
-  }, comm::Delivery::BestEffort);  // a lost scan is not repeated; the next one is newer
+  }, comm::Delivery::BestEffort, 1);  // a lost scan is not repeated; the next one is newer
   agent.subscribe<msgs::MapPatch>(topic::patch_down(group), LinkClass::MemberLeader,
-                                  [this](const msgs::MapPatch& p) { robot_.learn(comm::decode_patch(p.data())); });
+                                  [this](const msgs::MapPatch& p) { robot_.learn(comm::decode_patch(p.data())); },
+                                  comm::Delivery::Reliable, 1);
   agent.subscribe<msgs::Assignment>(topic::assign(group), LinkClass::MemberLeader, [this](const msgs::Assignment& a) {
     const auto waypoints = comm::optional_cells_from_xy(a.waypoints_xy());
     ++assignments_;
     robot_.assign(a.round(), index_ < static_cast<int>(waypoints.size()) ? waypoints[index_] : std::nullopt);
-  });
+  }, comm::Delivery::Reliable, 1);
 }
 
 void MemberNode::step(const msgs::Clock& /*clock*/) {

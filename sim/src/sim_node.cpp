@@ -28,7 +28,7 @@ SimNode::SimNode(comm::LockstepClock& clock, const comm::RoleSetup& setup)
   }
   clock.subscribe<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, [this, &t](const msgs::MotionCommand& m) {
     if (t.is_robot(m.robot()) && alive_[m.robot()]) world_.command(m.robot(), comm::from_xy(m.path_xy()));
-  });
+  }, comm::Delivery::Reliable, t.robots());
 }
 
 std::vector<msgs::RobotState> SimNode::states() const {

@@ -25,12 +25,8 @@ TEST(Link, Mix64IsTheSplitmix64Finaliser) {
   EXPECT_NE(hash_combine(1, 2), hash_combine(2, 1));
 }
 
-// BUG (comm/src/link.cpp, hash_string): the offset basis is written 1469598103934665603, the
-// FNV-1a 64 basis 14695981039346656037 (0xcbf29ce484222325) with its last digit dropped, so
-// hash_string is not the FNV-1a link.hpp promises: hash_string("") returns 1469598103934665603.
-// Every topic hash, and with it every jitter and loss draw, differs from what another FNV-1a
-// implementation (an analysis script re-deriving the drops, say) computes. Enable once fixed.
-TEST(Link, DISABLED_HashStringIsFnv1a64) {
+// Regression: the offset basis once lost its last digit, so hash_string was not FNV-1a.
+TEST(Link, HashStringIsFnv1a64) {
   // The offset basis for "", and the published value for "a".
   EXPECT_EQ(hash_string(""), 0xcbf29ce484222325ULL);
   EXPECT_EQ(hash_string("a"), 0xaf63dc4c8601ec8cULL);
@@ -83,21 +79,21 @@ TEST(Link, JitterStaysWithinItsRangeAndIsReproducible) {
 TEST(Link, BandwidthQueuesMessagesBehindEachOther) {
   // 100 B/s, 0.2 s per tick: a 30-byte message occupies the link 0.3 s = 1.5 ticks. Three sent at
   // tick 0 leave one after another; their last bytes are out 1.5, 3.0 and 4.5 ticks after the
-  // start of tick 0, so they are complete at the tick boundaries 2, 3 and 5. An agent's message
-  // is acted on one tick after that (nothing sent at t is seen before t + 1): 3, 4, 6. The clock
-  // master has no such lag: 2, 3, 5.
+  // start of tick 0, so they arrive during ticks 1, 2 and 4 and are acted on at the boundaries
+  // 2, 3 and 5 (later than t + 1, so the one-tick lag adds nothing), for an agent and for the
+  // clock master alike.
   LinkTable table;
   table.tick_seconds = 0.2;
   table[LinkClass::MemberLeader].bandwidth_bytes_per_s = 100.0;
   LinkSender agent(table);
-  EXPECT_EQ(agent.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 0, false), 3u);
-  EXPECT_EQ(agent.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 1, false), 4u);
-  EXPECT_EQ(agent.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 2, false), 6u);
+  EXPECT_EQ(agent.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 0, false), 2u);
+  EXPECT_EQ(agent.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 1, false), 3u);
+  EXPECT_EQ(agent.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 2, false), 5u);
   // Each link class has its own bucket: an unlimited class is not held up by the queue.
   EXPECT_EQ(agent.deliver_tick(LinkClass::LeaderGcs, 0, 30, kTopic, 0, false), 1u);
   // Once the queue has drained (0.9 s < tick 10 = 2.0 s) a message starts at its own tick:
-  // 2.0 + 0.3 = 2.3 s = 11.5 ticks -> boundary 12, + 1 = 13.
-  EXPECT_EQ(agent.deliver_tick(LinkClass::MemberLeader, 10, 30, kTopic, 3, false), 13u);
+  // 2.0 + 0.3 = 2.3 s = 11.5 ticks -> boundary 12.
+  EXPECT_EQ(agent.deliver_tick(LinkClass::MemberLeader, 10, 30, kTopic, 3, false), 12u);
 
   LinkSender sim(table);
   EXPECT_EQ(sim.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 0, true), 2u);
@@ -107,9 +103,9 @@ TEST(Link, BandwidthQueuesMessagesBehindEachOther) {
   // The delay is added after the queue.
   table[LinkClass::MemberLeader].delay_ticks = 2;
   LinkSender delayed(table);
-  EXPECT_EQ(delayed.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 0, false), 5u);
-  EXPECT_EQ(delayed.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 1, false), 6u);
-  EXPECT_EQ(delayed.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 2, false), 8u);
+  EXPECT_EQ(delayed.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 0, false), 4u);
+  EXPECT_EQ(delayed.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 1, false), 5u);
+  EXPECT_EQ(delayed.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 2, false), 7u);
 }
 
 TEST(Link, LossDropsItsShareDeterministicallyAndIndependentlyPerReceiver) {

@@ -76,6 +76,13 @@ class Reader : private eprosima::fastdds::dds::DataReaderListener {
   Reader(const Reader&) = delete;
   Reader& operator=(const Reader&) = delete;
 
+  // Writers this reader has matched (its side of discovery).
+  int matched() const {
+    eprosima::fastdds::dds::SubscriptionMatchedStatus status;
+    reader_->get_subscription_matched_status(status);
+    return status.current_count;
+  }
+
  private:
   void on_data_available(eprosima::fastdds::dds::DataReader* reader) override {
     T sample;

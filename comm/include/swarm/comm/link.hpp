@@ -5,8 +5,8 @@
 //   agents act in parallel within a tick, so nothing sent at t can be seen at t. The simulator's
 //   scans are the exception: taken at the start of tick t, they are seen at t + delay.
 // - Bandwidth: each sender has one token bucket per link class; a message of B bytes occupies the
-//   link for B / rate simulated seconds after the previous one, and is delivered no earlier than
-//   the tick in which its last byte has gone out.
+//   link for B / rate simulated seconds after the previous one, and is acted on no earlier than
+//   the tick during which its last byte arrives (its end time rounded up to a tick boundary).
 // - Loss: each receiver loses a transmission with the link's probability, drawn from a hash of
 //   (seed, sender, topic, sequence number, receiver, attempt), so a broadcast is lost
 //   independently at each receiver and the outcome does not depend on arrival order. Reliable

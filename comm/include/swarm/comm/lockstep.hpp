@@ -22,6 +22,12 @@
 //
 // Handlers run on the caller's thread inside begin_tick; DDS threads only count and enqueue.
 //
+// Start-up: discovery is not symmetric in time. A writer may see its reader a few milliseconds
+// before the reader sees the writer, and a VOLATILE reader misses what was written meanwhile. So
+// an agent announces itself ready only once its writers have matched their readers AND its
+// readers have matched their writers (subscribe's `writers`), and it repeats the announcement
+// until the first clock comes (the simulator's reader may be the late side).
+//
 // Real-time mode (LinkTable::realtime, for deployment): the clock ticks at a fixed wall rate and
 // waits for nobody; messages are held for their link's delay in milliseconds; an agent that falls
 // behind skips to the newest tick. Runs are then not reproducible, by nature.
@@ -63,9 +69,11 @@ class Mailbox {
 
   // Messages of type T on `topic_name` are held until due and then given to `handler`. Under
   // emulated loss a reliable topic's message arrives late (retransmitted), a best-effort one not.
+  // `writers`: how many agents write this topic in the run; readiness waits until this reader has
+  // matched them all (0 = do not wait).
   template <class T>
   void subscribe(const std::string& topic_name, LinkClass link, std::function<void(const T&)> handler,
-                 Delivery delivery = Delivery::Reliable);
+                 Delivery delivery = Delivery::Reliable, int writers = 0);
 
   // An outlet stamps, emulates the link, accounts and writes. `receivers` are the agents that
   // subscribe to this topic (the barrier counts one message per receiver).
@@ -91,6 +99,7 @@ class Mailbox {
   void deliver_due_now();
   // Messages sent per receiver since the last call; resets the counts.
   std::vector<std::uint32_t> take_sent_counts();
+  // Every outlet sees its readers and every reader its writers (see Start-up above).
   bool outlets_matched(std::string* missing) const;
   std::uint64_t arrivals_counted_for(std::uint32_t k) const;  // caller holds mutex_
 
@@ -114,6 +123,12 @@ class Mailbox {
     std::uint32_t seq;
     std::function<void()> run;
   };
+  struct ReaderEntry {
+    std::shared_ptr<void> reader;
+    std::function<int()> matched;
+    int writers;
+    std::string name;
+  };
   struct OutletBase {
     virtual ~OutletBase() = default;
     virtual int matched() const = 0;
@@ -130,7 +145,7 @@ class Mailbox {
   std::map<std::uint32_t, std::uint64_t> agent_arrivals_;  // stamp tick -> count (from agents)
   std::map<std::uint32_t, std::uint64_t> sim_arrivals_;    // stamp tick -> count (from the sim)
   std::vector<std::uint32_t> sent_counts_;
-  std::vector<std::shared_ptr<void>> readers_;
+  std::vector<ReaderEntry> readers_;
   std::deque<std::unique_ptr<OutletBase>> outlets_;
   std::unique_ptr<Writer<msgs::AgentReport>> report_writer_;
   int subscriptions_ = 0;
@@ -183,7 +198,7 @@ class Mailbox::Outlet : public Mailbox::OutletBase {
 
 template <class T>
 void Mailbox::subscribe(const std::string& topic_name, LinkClass link, std::function<void(const T&)> handler,
-                        Delivery delivery) {
+                        Delivery delivery, int writers) {
   const int order = subscriptions_++;
   const std::uint64_t topic_hash = hash_string(topic_name);
   const std::string family = topic::family(topic_name);
@@ -193,7 +208,8 @@ void Mailbox::subscribe(const std::string& topic_name, LinkClass link, std::func
         const msgs::Stamp& h = msg.header();
         const std::uint32_t lost = lost_transmissions(links_, link, h.sender(), topic_hash, h.seq(), self_);
         const bool dropped = lost > 0 && delivery == Delivery::BestEffort;
-        traffic_.received(family, link_name(link), bytes, lost, dropped);
+        // A best-effort message is given up after its first lost transmission.
+        traffic_.received(family, link_name(link), bytes, dropped ? 1 : lost, dropped);
         const LinkParams& p = links_[link];
         const std::uint32_t retry_ticks = dropped ? 0 : lost * p.retransmit_ticks;
         const double delay_ms = p.delay_ms + retry_ticks * links_.tick_ms;
@@ -202,7 +218,7 @@ void Mailbox::subscribe(const std::string& topic_name, LinkClass link, std::func
         auto shared = std::make_shared<T>(std::move(msg));
         arrive(shared->header(), deliver, delay_ms, !dropped, order, [handler, shared] { handler(*shared); });
       });
-  readers_.push_back(reader);
+  readers_.push_back({reader, [reader] { return reader->matched(); }, writers, topic_name});
 }
 
 template <class T>
@@ -229,6 +245,8 @@ class LockstepAgent : public Mailbox {
   void end_tick(bool mission_complete = false);
 
  private:
+  void say_ready();
+
   std::unique_ptr<Writer<msgs::Done>> done_writer_;
   std::unique_ptr<Reader<msgs::Clock>> clock_reader_;
   std::map<std::uint32_t, msgs::Clock> clocks_;  // guarded by mutex_

@@ -1,0 +1,137 @@
+// `swarm experiment` and `swarm report` through the real `swarm` command: a small explore
+// experiment (map small, 2 seeds, every method) runs for real, every run completes, the CSV has
+// one row per run, and `swarm report` rebuilds the same table and CSV byte for byte. Bad input
+// exits 2 saying what is accepted.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "run_swarm.hpp"
+
+namespace swarm::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> out;
+  std::string cell;
+  std::istringstream in(text);
+  while (std::getline(in, cell, sep)) out.push_back(cell);
+  return out;
+}
+
+bool contains(const std::string& haystack, const std::string& needle) {
+  return haystack.find(needle) != std::string::npos;
+}
+
+// One experiment (1 map x 3 methods x 2 seeds = 6 runs of 2 x 2 robots), then its report: one
+// test, since ctest runs every test in a process of its own.
+TEST(ExperimentExplore, EveryRunCompletesAndReportRebuildsTheSameTableAndCsv) {
+  const std::string dir = fresh_dir("experiment_explore") + "/exp";
+  const CommandResult result =
+      run_swarm("experiment explore --maps small --seeds 2 --jobs 2 --scenario " +
+                source_path("scenarios/small.pbtxt") + " --out " + dir);
+
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  for (const char* f :
+       {"experiment.json", "results.csv", "results.json", "table.txt", "table2.png"}) {
+    EXPECT_TRUE(fs::exists(dir + "/" + f)) << f;
+  }
+  // A progress line per run, then the table.
+  EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '['), 6) << result.output;
+  EXPECT_TRUE(contains(result.output, "6 runs: 6 ok (6 complete), 0 failed")) << result.output;
+
+  const auto lines = split(slurp(dir + "/results.csv"), '\n');
+  ASSERT_EQ(lines.size(), 1u + 6u) << slurp(dir + "/results.csv");
+  const auto header = split(lines[0], ',');
+  const std::vector<std::string> expected = {
+      "run", "map", "method", "seed", "status", "complete", "steps", "steps_to_99",
+      "planning_rounds", "explored_percent", "ticks_run", "wall_seconds", "traffic_bytes",
+      "map_bytes", "map_bytes_per_robot_second", "log", "failure"};
+  EXPECT_EQ(header, expected);
+  auto col = [&](const char* name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  std::vector<std::string> methods;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    auto cells = split(lines[i], ',');
+    cells.resize(header.size());  // trailing empty cells
+    EXPECT_EQ(cells[col("map")], "small") << lines[i];
+    EXPECT_EQ(cells[col("status")], "ok") << lines[i];
+    EXPECT_EQ(cells[col("complete")], "true") << lines[i];
+    EXPECT_GT(std::stoi(cells[col("steps")]), 10) << lines[i];
+    EXPECT_GE(std::stoi(cells[col("planning_rounds")]), 1) << lines[i];
+    EXPECT_GE(std::stod(cells[col("explored_percent")]), 99.0) << lines[i];
+    EXPECT_TRUE(fs::exists(dir + "/" + cells[col("run")] + "/metrics.json")) << lines[i];
+    methods.push_back(cells[col("method")]);
+  }
+  for (const char* m : {"group-frontier", "baseline", "ideal"}) {
+    EXPECT_EQ(std::count(methods.begin(), methods.end(), m), 2) << m;
+  }
+  // Seed 1 of every method keeps its map and a mid-run frontier snapshot.
+  int pictures = 0;
+  for (const auto& e : fs::directory_iterator(dir + "/pictures")) {
+    pictures += e.path().extension() == ".png";
+  }
+  EXPECT_EQ(pictures, 6);
+
+  // `swarm report` on the experiment directory: the same bytes.
+  const std::string table = slurp(dir + "/table.txt");
+  const std::string csv = slurp(dir + "/results.csv");
+  const std::string json = slurp(dir + "/results.json");
+  ASSERT_FALSE(table.empty());
+  EXPECT_TRUE(contains(result.output, table)) << "the experiment printed its table";
+
+  const std::string out = dir + "/../report";
+  const CommandResult r = run_swarm("report " + dir + " --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.substr(0, table.size()), table);
+  EXPECT_EQ(slurp(out + "/table.txt"), table);
+  EXPECT_EQ(slurp(out + "/results.csv"), csv);
+  EXPECT_EQ(slurp(out + "/results.json"), json);
+  EXPECT_TRUE(fs::exists(out + "/table2.png"));
+
+  // Plain run directories give the same explore table, grouped by mode and map.
+  const CommandResult plain = run_swarm("report " + dir + "/runs --out " + dir + "/../plain");
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  EXPECT_TRUE(contains(plain.output, "6 runs: 6 ok (6 complete), 0 failed")) << plain.output;
+}
+
+TEST(ExperimentBadInput, ExitsTwoSayingWhatIsAccepted) {
+  const std::string dir = fresh_dir("experiment_bad_input");
+  struct Case {
+    std::string args;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {"experiment explore --maps atlantis --out " + dir + "/a", "unknown map 'atlantis'; accepted"},
+      {"experiment latency --methods greedy --out " + dir + "/b",
+       "unknown method 'greedy'; accepted: group-frontier, baseline, ideal"},
+      {"experiment explore --seeds 0 --out " + dir + "/c", "--seeds 0"},
+      {"experiment loss --seeds 0 --out " + dir + "/c", "--seeds 0"},
+      {"experiment bandwidth --out /proc/swarm-cannot-write-here", "--out DIR"},
+      {"report " + dir, "holds no runs"},
+      {"report " + dir + "/missing", "is not a directory"},
+      {"experiment", "A subcommand is required"},
+  };
+  for (const Case& c : cases) {
+    const CommandResult r = run_swarm(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.output;
+    EXPECT_TRUE(contains(r.output, c.says)) << c.args << "\n" << r.output;
+  }
+  EXPECT_FALSE(fs::exists(dir + "/a/experiment.json"));
+}
+
+}  // namespace
+}  // namespace swarm::test

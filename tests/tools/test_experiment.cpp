@@ -1,0 +1,308 @@
+// `swarm experiment` / `swarm report` without running a swarm: plans, the manifest, the tables and
+// CSV computed from fabricated run directories, failed runs, and bad input.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "experiment.hpp"
+#include "experiment_command.hpp"
+#include "swarm/config/scenario.hpp"
+
+using namespace swarm::tools;
+namespace fs = std::filesystem;
+
+namespace {
+
+class TempDir {
+ public:
+  TempDir() {
+    path_ = fs::temp_directory_path() /
+            ("swarm-experiment-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() { fs::remove_all(path_); }
+  std::string str() const { return path_.string(); }
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  static inline int counter_ = 0;
+  fs::path path_;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void spit(const std::string& path, const std::string& text) {
+  fs::create_directories(fs::path(path).parent_path());
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+}
+
+bool contains(const std::string& haystack, const std::string& needle) {
+  return haystack.find(needle) != std::string::npos;
+}
+
+// A run directory as the GCS leaves it (only what the experiment reads).
+void fake_run(const std::string& dir, const std::string& map, const std::string& mode, int seed,
+              int steps, int rounds, bool complete = true, double explored = 0.999) {
+  std::ostringstream m;
+  m << R"({"scenario": "default", "map": ")" << map << R"(", "mode": ")" << mode
+    << R"(", "seed": )" << seed << R"(, "groups": 3, "robots_per_group": 3, "robots": 9, "steps": )"
+    << steps << R"(, "steps_to_99": )" << steps - 10 << R"(, "planning_rounds": )" << rounds
+    << R"(, "explored_fraction": )" << explored << R"(, "complete": )" << (complete ? "true" : "false")
+    << R"(, "ticks_run": )" << steps + 1 << R"(, "wall_seconds": 2.5,
+    "traffic": {"by_topic": {"patch_up": {"bytes": 1000}, "patch_gcs": {"bytes": 500},
+                             "sense": {"bytes": 99999}},
+                "total": {"messages": 10, "bytes": 101499}}})";
+  spit(dir + "/metrics.json", m.str());
+  spit(dir + "/scenario.pbtxt", "map: \"" + map + "\"\ntick_seconds: 0.2\n");
+}
+
+ExperimentPlan explore_plan(std::uint32_t seeds) {
+  swarm::scenario::Scenario base;
+  return make_plan(ExperimentKind::kExplore, {"open", "maze1"}, {"group-frontier", "baseline"},
+                   seeds, base, "");
+}
+
+// Fills DIR with the runs of explore_plan(2): group-frontier 10 % faster; one baseline run failed.
+ExperimentPlan fake_explore(const std::string& dir) {
+  ExperimentPlan plan = explore_plan(2);
+  for (ExperimentRun& r : plan.runs) {
+    if (r.method == "baseline" && r.map == "maze1" && r.seed == 2) {
+      r.status = RunStatus::kFailed;
+      r.failure = "process leader-1 failed (exit code 3)";
+      r.log = r.dir + "/logs/leader-1.log";
+      continue;
+    }
+    const int base = r.map == "open" ? 200 : 600;
+    const int steps = (r.method == "baseline" ? base : base * 9 / 10) + static_cast<int>(r.seed) * 4;
+    fake_run(dir + "/" + r.dir, r.map, r.method, static_cast<int>(r.seed), steps, steps / 20);
+    r.status = RunStatus::kOk;
+  }
+  write_manifest(dir, plan);
+  return plan;
+}
+
+}  // namespace
+
+TEST(ExperimentPlan, ExploreRunsEveryMapMethodAndSeedWithPicturesForSeedOne) {
+  const ExperimentPlan p = explore_plan(3);
+  ASSERT_EQ(p.runs.size(), 2u * 2u * 3u);
+  EXPECT_EQ(p.runs[0].dir, "runs/open-group-frontier-s1");
+  EXPECT_TRUE(p.runs[0].pictures);
+  EXPECT_FALSE(p.runs[1].pictures);
+  EXPECT_EQ(p.runs.back().dir, "runs/maze1-baseline-s3");
+}
+
+TEST(ExperimentPlan, SweepsShareTheirZeroPoint) {
+  swarm::scenario::Scenario base;
+  base.mutable_explore()->set_replan_threshold_steps(20);
+  const ExperimentPlan lat = make_plan(ExperimentKind::kLatency, {"maze1"}, {"group-frontier"}, 1, base, "");
+  EXPECT_EQ(lat.leader_gcs_delays_ticks, (std::vector<std::uint32_t>{0, 10, 20, 40, 80}));
+  EXPECT_EQ(lat.member_leader_delays_ticks, (std::vector<std::uint32_t>{0, 1, 5, 10}));
+  EXPECT_EQ(lat.runs.size(), 5u + 4u - 1u);  // (0, 0) once
+  EXPECT_EQ(lat.runs[1].dir, "runs/maze1-group-frontier-lg10-ml0-s1");
+  const ExperimentPlan bw = make_plan(ExperimentKind::kBandwidth, {"maze1"}, {"group-frontier"}, 1, base, "");
+  EXPECT_EQ(bw.runs.size(), 3u + 4u - 1u);  // RUN_LENGTH uncapped once
+  const ExperimentPlan loss = make_plan(ExperimentKind::kLoss, {"maze1"}, {"baseline"}, 2, base, "");
+  EXPECT_EQ(loss.runs.size(), 3u * 2u);
+  EXPECT_EQ(loss.runs[2].dir, "runs/maze1-baseline-loss5-s1");
+}
+
+TEST(RunSetting, AppliesToTheScenario) {
+  swarm::scenario::Scenario s;
+  RunSetting::delays(40, 5).apply(s);
+  EXPECT_EQ(s.links().leader_gcs().delay_ticks(), 40u);
+  EXPECT_EQ(s.links().member_leader().delay_ticks(), 5u);
+  RunSetting::encoding_and_cap(swarm::scenario::ZSTD_RUN_LENGTH, 16000).apply(s);
+  EXPECT_EQ(s.map_encoding(), swarm::scenario::ZSTD_RUN_LENGTH);
+  EXPECT_DOUBLE_EQ(s.links().leader_gcs().bandwidth_bytes_per_s(), 16000);
+  RunSetting::every_link_loss(0.2).apply(s);
+  EXPECT_DOUBLE_EQ(s.links().sim_robot().loss(), 0.2);
+  EXPECT_DOUBLE_EQ(s.links().member_leader().loss(), 0.2);
+  EXPECT_DOUBLE_EQ(s.links().leader_gcs().loss(), 0.2);
+}
+
+TEST(ExperimentManifest, RoundTrips) {
+  TempDir dir;
+  swarm::scenario::Scenario base;
+  ExperimentPlan p = make_plan(ExperimentKind::kBandwidth, {"maze1"}, {"group-frontier"}, 2, base, "/x.pbtxt");
+  p.runs[1].status = RunStatus::kFailed;
+  p.runs[1].failure = "timeout";
+  write_manifest(dir.str(), p);
+  const ExperimentPlan q = read_manifest(dir.str());
+  EXPECT_EQ(q.kind, ExperimentKind::kBandwidth);
+  EXPECT_EQ(q.scenario, "/x.pbtxt");
+  EXPECT_EQ(q.encodings, p.encodings);
+  EXPECT_EQ(q.leader_gcs_caps_bytes_per_s, p.leader_gcs_caps_bytes_per_s);
+  ASSERT_EQ(q.runs.size(), p.runs.size());
+  for (std::size_t i = 0; i < p.runs.size(); ++i) {
+    EXPECT_EQ(q.runs[i].dir, p.runs[i].dir);
+    EXPECT_TRUE(q.runs[i].setting == p.runs[i].setting) << i;
+    EXPECT_EQ(q.runs[i].status, p.runs[i].status);
+  }
+  spit(dir.file("experiment.json"), "{ not json");
+  EXPECT_THROW((void)read_manifest(dir.str()), swarm::config::ConfigError);
+}
+
+TEST(ExperimentAnalysis, ExploreTableCsvAndFailedRuns) {
+  TempDir dir;
+  const ExperimentPlan plan = fake_explore(dir.str());
+  const auto rows = load_rows(dir.str(), plan);
+  const ExperimentOutputs o = analyze_experiment(plan, rows);
+
+  // CSV: the header and one row per run, the failed one marked with its log.
+  std::istringstream csv(o.csv);
+  std::string line;
+  std::vector<std::string> lines;
+  while (std::getline(csv, line)) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 1u + plan.runs.size());
+  for (const std::string& l : lines) {
+    EXPECT_EQ(std::count(l.begin(), l.end(), ','), 16) << l;  // 17 columns, no quoted commas here
+  }
+  EXPECT_EQ(lines[0],
+            "run,map,method,seed,status,complete,steps,steps_to_99,planning_rounds,explored_percent,"
+            "ticks_run,wall_seconds,traffic_bytes,map_bytes,map_bytes_per_robot_second,log,failure");
+  // open gf seed 1: 200*0.9 + 4 = 184 steps; map bytes 1500 / (9 robots x 185 ticks x 0.2 s).
+  EXPECT_EQ(lines[1], "runs/open-group-frontier-s1,open,group-frontier,1,ok,true,184,174,9,99.90,185,"
+                      "2.50,101499,1500,4.5,,");
+  EXPECT_EQ(lines[8], "runs/maze1-baseline-s2,maze1,baseline,2,failed,,,,,,,,,,,"
+                      "runs/maze1-baseline-s2/logs/leader-1.log,process leader-1 failed (exit code 3)");
+
+  // Table: means, the change against the baseline and the failed run marked and listed.
+  EXPECT_TRUE(contains(o.table, "8 runs: 7 ok (7 complete), 1 failed")) << o.table;
+  EXPECT_TRUE(contains(o.table, "186.0 ± 2.8")) << o.table;  // open gf: 184, 188
+  EXPECT_TRUE(contains(o.table, "604.0 ± 0.0*")) << o.table;  // maze1 baseline: seed 1 only
+  EXPECT_TRUE(contains(o.table, "1/2 (1 failed)")) << o.table;
+  EXPECT_TRUE(contains(o.table, "FAILED runs/maze1-baseline-s2: process leader-1 failed")) << o.table;
+  // open: 186 vs 206 = -9.7 %; maze1: 546 vs 604 = -9.6 %.
+  EXPECT_TRUE(contains(o.table, "-9.7 %")) << o.table;
+  EXPECT_TRUE(contains(o.table, "-9.6 %")) << o.table;
+  EXPECT_TRUE(contains(o.table, "fewer steps than baseline on every map: yes")) << o.table;
+  EXPECT_TRUE(contains(o.table, ">= 25 % fewer steps than baseline on the maze maps (maze1, mean of the per-map changes): NO"))
+      << o.table;
+  ASSERT_EQ(o.figures.size(), 1u);
+  EXPECT_EQ(o.figures[0].first, "table2.png");
+  EXPECT_TRUE(contains(o.json, "\"steps_change_vs_baseline_percent\""));
+}
+
+// A run the GCS declared complete with a third of the map unseen is left out and marked; a run
+// stopped at max_ticks counts, marked as a lower bound.
+TEST(ExperimentAnalysis, EndedEarlyAndIncompleteRunsAreMarked) {
+  TempDir dir;
+  ExperimentPlan plan = explore_plan(2);
+  for (ExperimentRun& r : plan.runs) {
+    const bool early = r.method == "group-frontier" && r.map == "open" && r.seed == 1;
+    const bool stopped = r.method == "baseline" && r.map == "maze1" && r.seed == 2;
+    fake_run(dir.str() + "/" + r.dir, r.map, r.method, static_cast<int>(r.seed),
+             stopped ? 3000 : 300, 15, !stopped, early ? 0.33 : 0.999);
+    r.status = RunStatus::kOk;
+  }
+  const ExperimentOutputs o = analyze_experiment(plan, load_rows(dir.str(), plan));
+  EXPECT_TRUE(contains(o.table, "8 runs: 7 ok (6 complete), 0 failed, 1 ended early")) << o.table;
+  EXPECT_TRUE(contains(o.table, "300.0 ± 0.0!")) << o.table;  // open gf: seed 2 only
+  EXPECT_TRUE(contains(o.table, "1/2 (1 ended early)")) << o.table;
+  EXPECT_TRUE(contains(o.table, "1650.0 ± 1909.2+")) << o.table;  // maze1 baseline: 300, 3000
+  EXPECT_TRUE(contains(o.table, "ENDED EARLY runs/open-group-frontier-s1: complete at step 300 "
+                                "with 33.0 % explored"))
+      << o.table;
+  EXPECT_TRUE(contains(o.csv, "runs/open-group-frontier-s1,open,group-frontier,1,ended_early,true,"))
+      << o.csv;
+  EXPECT_TRUE(contains(o.csv, "runs/maze1-baseline-s2,maze1,baseline,2,ok,false,3000,")) << o.csv;
+}
+
+TEST(ReportCommand, ReproducesTheExperimentOutputsByteForByte) {
+  TempDir dir;
+  const std::string exp = dir.file("exp");
+  const ExperimentPlan plan = fake_explore(exp);
+  const ExperimentOutputs first = analyze_experiment(plan, load_rows(exp, plan));
+  write_outputs(exp, first);
+  const std::string csv = slurp(exp + "/results.csv");
+  const std::string json = slurp(exp + "/results.json");
+
+  std::ostringstream out, err;
+  ReportOptions r;
+  r.dirs = {exp};
+  EXPECT_EQ(report_command(r, out, err), 0) << err.str();
+  EXPECT_EQ(out.str().substr(0, first.table.size()), first.table);
+  EXPECT_EQ(slurp(exp + "/results.csv"), csv);
+  EXPECT_EQ(slurp(exp + "/results.json"), json);
+  EXPECT_EQ(slurp(exp + "/table.txt"), first.table);
+  EXPECT_TRUE(fs::exists(exp + "/table2.png"));
+
+  // Plain run directories: grouped by mode and map.
+  std::ostringstream out2, err2;
+  ReportOptions plain;
+  plain.dirs = {exp + "/runs"};
+  plain.out_dir = dir.file("plain");
+  EXPECT_EQ(report_command(plain, out2, err2), 0) << err2.str();
+  EXPECT_TRUE(contains(out2.str(), "7 runs: 7 ok (7 complete), 0 failed")) << out2.str();
+  EXPECT_TRUE(contains(out2.str(), "group-frontier vs baseline")) << out2.str();
+  EXPECT_TRUE(fs::exists(dir.file("plain/results.csv")));
+}
+
+TEST(ReportCommand, BadInputExits2SayingWhatIsAccepted) {
+  TempDir dir;
+  std::ostringstream out, err;
+  ReportOptions r;
+  r.dirs = {dir.str()};  // empty: no runs
+  EXPECT_EQ(report_command(r, out, err), 2);
+  EXPECT_TRUE(contains(err.str(), "holds no runs")) << err.str();
+  EXPECT_TRUE(contains(err.str(), "experiment.json")) << err.str();
+  r.dirs = {dir.file("missing")};
+  EXPECT_EQ(report_command(r, out, err), 2);
+  EXPECT_TRUE(contains(err.str(), "is not a directory")) << err.str();
+  spit(dir.file("exp/experiment.json"), "[]");
+  r.dirs = {dir.file("exp")};
+  EXPECT_EQ(report_command(r, out, err), 2);
+  EXPECT_TRUE(contains(err.str(), "damaged")) << err.str();
+}
+
+TEST(ExperimentCommand, BadInputExits2SayingWhatIsAccepted) {
+  TempDir dir;
+  auto run = [&](ExperimentOptions o) {
+    std::ostringstream out, err;
+    o.bin_dir = dir.str();  // never reached
+    const int code = experiment_command(o, out, err);
+    return std::make_pair(code, err.str());
+  };
+  ExperimentOptions o;
+  o.out_dir = dir.file("out");
+  o.maps = {"atlantis"};
+  auto [code, msg] = run(o);
+  EXPECT_EQ(code, 2);
+  EXPECT_TRUE(contains(msg, "unknown map 'atlantis'")) << msg;
+  EXPECT_TRUE(contains(msg, "maze1")) << msg;
+
+  o.maps = {};
+  o.methods = {"greedy"};
+  std::tie(code, msg) = run(o);
+  EXPECT_EQ(code, 2);
+  EXPECT_TRUE(contains(msg, "unknown method 'greedy'; accepted: group-frontier, baseline, ideal")) << msg;
+
+  o.methods = {};
+  o.seeds = 0;
+  std::tie(code, msg) = run(o);
+  EXPECT_EQ(code, 2);
+  EXPECT_TRUE(contains(msg, "--seeds 0")) << msg;
+
+  o.seeds = 1;
+  o.jobs = 0;
+  std::tie(code, msg) = run(o);
+  EXPECT_EQ(code, 2);
+  EXPECT_TRUE(contains(msg, "--jobs 0")) << msg;
+
+  o.jobs = std::nullopt;
+  spit(dir.file("file"), "x");
+  o.out_dir = dir.file("file") + "/out";  // a folder inside a regular file
+  std::tie(code, msg) = run(o);
+  EXPECT_EQ(code, 2);
+  EXPECT_TRUE(contains(msg, "--out DIR")) << msg;
+  EXPECT_FALSE(fs::exists(dir.file("out")));
+}

@@ -1,0 +1,116 @@
+// Shared pieces of the per-kind analyses (experiment_explore.cpp, experiment_latency.cpp,
+// experiment_bandwidth.cpp, experiment_loss.cpp): selecting the runs of one table cell, their
+// statistics and how cells, markers and footnotes are written. Internal to swarm_tools_lib.
+#pragma once
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "experiment.hpp"
+#include "stats.hpp"
+
+namespace swarm::tools::analysis {
+
+// What the per-kind analysis adds to the common CSV and run list.
+struct KindOutputs {
+  std::string table;
+  nlohmann::json aggregates = nlohmann::json::array();
+  nlohmann::json findings = nlohmann::json::object();
+  std::vector<std::pair<std::string, Figure>> figures;
+};
+
+void analyze_explore(const ExperimentPlan& plan, const std::vector<RunRow>& rows, KindOutputs& out);
+void analyze_latency(const ExperimentPlan& plan, const std::vector<RunRow>& rows, KindOutputs& out);
+void analyze_bandwidth(const ExperimentPlan& plan, const std::vector<RunRow>& rows,
+                       KindOutputs& out);
+void analyze_loss(const ExperimentPlan& plan, const std::vector<RunRow>& rows, KindOutputs& out);
+
+// The settings a kind sweeps, in table order (make_plan runs each for every map and method).
+[[nodiscard]] std::vector<RunSetting> settings_of(const ExperimentPlan& plan);
+
+enum class Metric {
+  kSteps,
+  kRounds,
+  kStepsTo99,
+  kExploredPercent,
+  kTrafficBytes,
+  kMapBytes,
+  kMapBytesPerRobotSecond,
+};
+
+// The runs of one table cell.
+struct Cell {
+  int planned = 0;
+  int failed = 0;
+  int incomplete = 0;              // ran to max_ticks: their steps are a lower bound
+  int ended_early = 0;             // RunNumbers::ended_early(): left out of ok
+  std::vector<const RunRow*> ok;  // the runs whose numbers count
+
+  [[nodiscard]] int complete() const { return static_cast<int>(ok.size()) - incomplete; }
+};
+
+[[nodiscard]] Cell cell_of(const std::vector<RunRow>& rows,
+                           const std::function<bool(const RunRow&)>& in_cell);
+// Runs of (map, method) with exactly `setting`.
+[[nodiscard]] Cell cell_of(const std::vector<RunRow>& rows, const std::string& map,
+                           const std::string& method, const RunSetting& setting);
+
+[[nodiscard]] Summary summary_of(const Cell& c, Metric m);
+// "mean ± std" plus markers: "*" some runs failed (left out), "!" some runs ended early (left
+// out), "+" some runs incomplete (counted with max_ticks).
+[[nodiscard]] std::string format_cell(const Cell& c, Metric m, int decimals);
+// "5/5", or "2/5 (2 failed, 1 ended early)"; counts complete runs of the planned ones.
+[[nodiscard]] std::string completion_text(const Cell& c);
+[[nodiscard]] nlohmann::json summary_json(const Summary& s);
+[[nodiscard]] nlohmann::json cell_json(const Cell& c);  // runs, ok, failed, complete counts
+[[nodiscard]] nlohmann::json optional_json(const std::optional<double>& v);
+
+// One table row: `label`, then f(setting) for each setting.
+[[nodiscard]] std::vector<std::string> row_over(
+    const std::string& label, const std::vector<RunSetting>& settings,
+    const std::function<std::string(const RunSetting&)>& f);
+
+// A sweep over one scenario field (latency, bandwidth cap, loss): its settings in column order.
+struct Sweep {
+  std::string heading;               // first header cell, e.g. "loss on every link, maze1"
+  std::vector<std::string> columns;  // one header per setting
+  std::vector<RunSetting> settings;
+  std::size_t reference = 0;         // the column the "vs <reference_name>" rows compare with
+  std::string reference_name;        // e.g. "no loss"
+};
+
+// Steps, planning rounds (and steps to 99 % when asked) of every method over the sweep on `map`,
+// each with "METHOD vs <reference>" rows and "METHOD vs baseline" rows (when the baseline is
+// among the methods), then the complete runs.
+[[nodiscard]] std::string sweep_table(const Sweep& sweep, const ExperimentPlan& plan,
+                                      const std::vector<RunRow>& rows, const std::string& map,
+                                      bool with_steps_to_99);
+
+// Mean (values) ± std (errors) of `m` over the sweep's settings for one method on `map`.
+[[nodiscard]] PlotSeries sweep_series(const Sweep& sweep, const std::vector<RunRow>& rows,
+                                      const std::string& map, const std::string& method,
+                                      Colour colour, const std::string& name, Metric m);
+
+// The lines under every table: what the markers mean (only those used) and each failed run with
+// its log.
+[[nodiscard]] std::string footnotes(const std::vector<RunRow>& rows);
+// "seeds 1-5" / "seeds 1, 3, 4" over every planned run; "groups x robots" when all agree.
+[[nodiscard]] std::string seeds_text(const std::vector<RunRow>& rows);
+[[nodiscard]] std::string team_text(const std::vector<RunRow>& rows);
+// "45 runs: 44 ok (43 complete), 1 failed" (and ", 2 ended early" when some did).
+[[nodiscard]] std::string runs_text(const std::vector<RunRow>& rows);
+
+// Okabe-Ito colours: group-frontier blue, baseline vermillion, ideal bluish green; others grey
+// shades in order.
+[[nodiscard]] Colour method_colour(const std::string& method, int index);
+
+[[nodiscard]] std::string format_number(double v, int decimals);
+// "4 kB/s", "unlimited".
+[[nodiscard]] std::string format_rate(double bytes_per_s);
+// "1.23 MB".
+[[nodiscard]] std::string format_bytes(double bytes);
+[[nodiscard]] std::string encoding_name(swarm::scenario::MapEncoding e);
+
+}  // namespace swarm::tools::analysis
