@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     gcs::GcsNode node(agent, setup, options.run_dir, gcs::Progress::parse(options.progress));
     comm::run_lockstep(agent, [&](const msgs::Clock& clock) { return node.step(clock); });
     node.finish();
+    comm::mark_work_done("gcs");
     return 0;
   });
 }

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
       return false;
     });
     agent.send_report("leader", node.report_json());
+    comm::mark_work_done("leader");
     return 0;
   });
 }

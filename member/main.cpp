@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
       return false;
     });
     agent.send_report("member", node.report_json());
+    comm::mark_work_done("member");
     return 0;
   });
 }

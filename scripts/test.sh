@@ -7,4 +7,4 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
 cd build
-exec ctest --output-on-failure --timeout 600 "$@"
+exec ctest --output-on-failure --timeout 600 -j "${SWARM_TEST_JOBS:-2}" "$@"

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
     const std::uint32_t last = node.run();
     const auto t1 = std::chrono::steady_clock::now();
     clock.send_report("sim", node.report_json());
+    comm::mark_work_done("sim");
     for (const auto& l : clock.losses()) {
       std::printf("sim: %s stopped answering at tick %u; DDS declared it lost after %.2f s\n",
                   setup.topology.name_of(l.agent).c_str(), l.tick, l.detection_seconds);

@@ -22,6 +22,7 @@ MissionConfig mission_config(const comm::RoleSetup& setup) {
   const auto& s = setup.world.scenario;
   MissionConfig c;
   c.groups = setup.topology.groups();
+  c.start_cells = setup.world.robot_cells;
   c.replan_threshold = s.explore().replan_threshold_steps();
   // Ideal mode is the paper's "no delay" comparison: the map fused now is used now.
   c.map_delay_rounds = s.explore().mode() == swarm::scenario::IDEAL ? 0 : s.explore().global_map_delay_rounds();

@@ -40,7 +40,9 @@ Mission::Decision Mission::tick(std::uint32_t k, const std::vector<planner::Cell
     start = all_arrived || k - round_start_ >= config_.replan_threshold;
   }
   if (round_ > 0) {
-    frontier_cells_ = planner::reachable_frontiers(fused_, robots).size();
+    std::vector<planner::Cell> seeds = config_.start_cells;
+    seeds.insert(seeds.end(), robots.begin(), robots.end());
+    frontier_cells_ = planner::reachable_frontiers(fused_, seeds).size();
     d.complete = frontier_cells_ == 0;
   }
   if (start && !d.complete) {

@@ -5,7 +5,8 @@
 // reached the GCS; round r ends when every group reported its waypoints done, or after
 // replan_threshold ticks. Delay model (Fig. 2): the global map fused at the start of round r is
 // distributed for planning at round r + global_map_delay_rounds (1 in the paper, 0 = ideal).
-// Complete: round 1 has started and the fused map has no frontier the robots can reach.
+// Complete: round 1 has started and the fused map has no frontier reachable from the robots'
+// start cells or their current cells.
 //
 //   Mission m(w, h, res, {.groups = 3, .replan_threshold = 20, .map_delay_rounds = 1});
 //   m.fuse(group, changes); m.group_arrived(group, round);
@@ -23,6 +24,10 @@ namespace swarm::gcs {
 
 struct MissionConfig {
   int groups = 3;
+  // Where the robots started: every explored region connects to these cells, so completion is
+  // judged from them too (under leader<->GCS delay the robots' current cells may still be
+  // unknown in the fused map, and a search from there alone would find no frontier at all).
+  std::vector<planner::Cell> start_cells;
   std::uint32_t replan_threshold = 20;
   std::uint32_t map_delay_rounds = 1;
 };
