@@ -313,7 +313,8 @@ LockstepClock::LockstepClock(Participant& participant, const Topology& topology,
       from_agents_(topology.agents(), 0),
       ready_(topology.agents(), false),
       from_sim_(topology.agents(), 0),
-      lost_(topology.agents(), false) {
+      lost_(topology.agents(), false),
+      last_heard_(topology.agents(), std::chrono::steady_clock::now()) {
   ready_[topology.sim()] = true;
   clock_writer_ = std::make_unique<Writer<msgs::Clock>>(participant, topic::kClock);
   heartbeat_ = std::make_unique<HeartbeatListener>(*this, participant);
@@ -324,6 +325,7 @@ void LockstepClock::on_done(msgs::Done&& d, const eprosima::fastdds::dds::Instan
     std::lock_guard<std::mutex> lock(mutex_);
     if (d.agent() >= topology_.agents()) return;
     writer_agent_[writer] = d.agent();
+    last_heard_[d.agent()] = std::chrono::steady_clock::now();
     if (d.tick() == kReadyTick) {
       ready_[d.agent()] = true;
     } else {
@@ -344,7 +346,8 @@ void LockstepClock::on_liveliness_lost(const eprosima::fastdds::dds::InstanceHan
     // After the stop every agent leaves; that is not a loss.
     if (stopped_ || it == writer_agent_.end() || lost_[it->second]) return;
     lost_[it->second] = true;
-    const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - waiting_since_).count();
+    const double waited =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - last_heard_[it->second]).count();
     losses_.push_back({it->second, tick_, waited});
   }
   arrived_.notify_all();
@@ -433,7 +436,6 @@ bool LockstepClock::wait_done(std::uint32_t k) {
     done_.clear();  // nobody is waited for; only the GCS's completion matters
     return complete_;
   }
-  waiting_since_ = std::chrono::steady_clock::now();
   auto all_done = [&] {
     auto it = done_.find(k);
     for (int a = 0; a < topology_.agents(); ++a) {

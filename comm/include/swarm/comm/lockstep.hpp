@@ -258,8 +258,8 @@ class LockstepAgent : public Mailbox {
 // `step` returns true when the mission is complete (only the GCS ever says so).
 void run_lockstep(LockstepAgent& agent, const std::function<bool(const msgs::Clock&)>& step);
 
-// An agent that stopped answering: it missed Done(tick) and DDS reported its heartbeat writer not
-// alive (lease 1 s, deploy/fastdds_loopback.xml) after `detection_seconds` of waiting.
+// An agent that stopped answering: DDS reported its heartbeat writer gone (participant lease 2 s,
+// deploy/fastdds_loopback.xml) `detection_seconds` after its last Done, during `tick`.
 struct AgentLoss {
   AgentId agent = 0;
   std::uint32_t tick = 0;
@@ -303,7 +303,7 @@ class LockstepClock : public Mailbox {
   std::vector<bool> lost_;
   std::vector<AgentLoss> losses_;
   bool stopped_ = false;
-  std::chrono::steady_clock::time_point waiting_since_{};
+  std::vector<std::chrono::steady_clock::time_point> last_heard_;  // per agent: its latest Done
 };
 
 }  // namespace swarm::comm
