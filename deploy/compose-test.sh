@@ -286,9 +286,12 @@ check_results() {
   for s in "${!expected_exit[@]}"; do [[ ${expected_exit[$s]} == 137 ]] && killed+=("\"$s\""); done
   local want missing
   want="[$(IFS=,; echo "${killed[*]}")]"
-  missing=$(sed -n '/^  "reports_missing": \[/,/^  \]/p' "$dir/metrics.json" | tr -d ' \n' |
-            sed 's/^"reports_missing"://; s/,$//')
-  [[ $missing == "[]," || $missing == "" ]] && missing="[]"
+  # An empty array is written on one line ("reports_missing": []), a full one over several.
+  missing=$(top_value reports_missing "$dir/metrics.json")
+  if [[ $missing != "[]" ]]; then
+    missing=$(sed -n '/^  "reports_missing": \[/,/^  \]/p' "$dir/metrics.json" | tr -d ' \n' |
+              sed 's/^"reports_missing"://; s/,$//')
+  fi
   if [[ $missing != "$want" ]]; then
     echo "compose-test: agents whose report never reached the GCS (reports_missing): $missing" \
       "(expected $want)" >&2

@@ -28,7 +28,7 @@ fs::path path_of(const std::string& name) {
 
 TEST(ShippedScenarios, AreThereAll) {
   EXPECT_EQ(shipped(),
-            (std::vector<std::string>{"default", "maze1", "maze2", "open", "small"}));
+            (std::vector<std::string>{"default", "deploy_faults", "maze1", "maze2", "open", "small"}));
 }
 
 class Shipped : public ::testing::TestWithParam<std::string> {};

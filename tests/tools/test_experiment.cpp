@@ -109,7 +109,7 @@ TEST(ExperimentPlan, SweepsShareTheirZeroPoint) {
   EXPECT_EQ(lat.runs.size(), 5u + 4u - 1u);  // (0, 0) once
   EXPECT_EQ(lat.runs[1].dir, "runs/maze1-group-frontier-lg10-ml0-s1");
   const ExperimentPlan bw = make_plan(ExperimentKind::kBandwidth, {"maze1"}, {"group-frontier"}, 1, base, "");
-  EXPECT_EQ(bw.runs.size(), 3u + 4u - 1u);  // RUN_LENGTH uncapped once
+  EXPECT_EQ(bw.runs.size(), 3u + 4u - 1u);  // the default encoding uncapped: shared by both parts
   const ExperimentPlan loss = make_plan(ExperimentKind::kLoss, {"maze1"}, {"baseline"}, 2, base, "");
   EXPECT_EQ(loss.runs.size(), 3u * 2u);
   EXPECT_EQ(loss.runs[2].dir, "runs/maze1-baseline-loss5-s1");
