@@ -101,17 +101,9 @@ void Mailbox::deliver_due(std::uint32_t k, std::uint64_t expected) {
           << " s (a peer process stalled or died)";
       throw std::runtime_error(msg.str());
     }
-    auto split = std::partition(held_.begin(), held_.end(), [k](const Held& h) { return h.deliver_tick > k; });
-    due.assign(std::make_move_iterator(split), std::make_move_iterator(held_.end()));
-    held_.erase(split, held_.end());
+    due = take_held([k](const Held& h) { return h.deliver_tick <= k; });
   }
-  std::sort(due.begin(), due.end(), [](const Held& a, const Held& b) {
-    if (a.deliver_tick != b.deliver_tick) return a.deliver_tick < b.deliver_tick;
-    if (a.order != b.order) return a.order < b.order;
-    if (a.sender != b.sender) return a.sender < b.sender;
-    return a.seq < b.seq;
-  });
-  for (Held& h : due) h.run();
+  run_in_order(due, [](const Held& h) { return h.deliver_tick; });
 }
 
 void Mailbox::deliver_due_now() {
@@ -119,12 +111,22 @@ void Mailbox::deliver_due_now() {
   std::vector<Held> due;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    auto split = std::partition(held_.begin(), held_.end(), [now](const Held& h) { return h.due > now; });
-    due.assign(std::make_move_iterator(split), std::make_move_iterator(held_.end()));
-    held_.erase(split, held_.end());
+    due = take_held([now](const Held& h) { return h.due <= now; });
   }
-  std::sort(due.begin(), due.end(), [](const Held& a, const Held& b) {
-    if (a.due != b.due) return a.due < b.due;
+  run_in_order(due, [](const Held& h) { return h.due; });
+}
+
+std::vector<Mailbox::Held> Mailbox::take_held(const std::function<bool(const Held&)>& is_due) {
+  auto split = std::partition(held_.begin(), held_.end(), [&](const Held& h) { return !is_due(h); });
+  std::vector<Held> due(std::make_move_iterator(split), std::make_move_iterator(held_.end()));
+  held_.erase(split, held_.end());
+  return due;
+}
+
+template <class Key>
+void Mailbox::run_in_order(std::vector<Held>& due, Key key) {
+  std::sort(due.begin(), due.end(), [&](const Held& a, const Held& b) {
+    if (key(a) != key(b)) return key(a) < key(b);
     if (a.order != b.order) return a.order < b.order;
     if (a.sender != b.sender) return a.sender < b.sender;
     return a.seq < b.seq;

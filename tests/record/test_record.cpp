@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "swarm_test/files.hpp"
 #include "swarm/record/file_hash.hpp"
 #include "swarm/record/record.hpp"
 #include "swarm/record/render.hpp"
@@ -18,22 +19,7 @@ using namespace swarm::record;
 
 namespace {
 
-class TempDir {
- public:
-  TempDir() {
-    path_ = fs::temp_directory_path() /
-            ("swarm-record-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  std::string str() const { return path_.string(); }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  static inline int counter_ = 0;
-  fs::path path_;
-};
+using swarm::test::TempDir;
 
 // The MapVersion encoding of run_record.proto, written here from the spec so the test checks the
 // format rather than the decoder against itself: (count varint, value byte) pairs, row-major
@@ -138,10 +124,7 @@ void write_all(const std::string& path, const std::vector<Frame>& frames) {
   w.close();
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using swarm::test::slurp;
 
 void spit(const std::string& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "swarm_test/files.hpp"
 #include "commands.hpp"
 #include "run_command.hpp"
 #include "swarm/record/record.hpp"
@@ -21,33 +22,11 @@ namespace cfg = swarm::config;
 
 namespace {
 
-class TempDir {
- public:
-  TempDir() {
-    path_ = fs::temp_directory_path() /
-            ("swarm-run-command-test-" + std::to_string(::getpid()) + "-" +
-             std::to_string(counter_++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  std::string str() const { return path_.string(); }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
+using swarm::test::TempDir;
 
- private:
-  static inline int counter_ = 0;
-  fs::path path_;
-};
+using swarm::test::slurp;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void spit(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-}
+using swarm::test::spit;
 
 bool contains(const std::string& haystack, const std::string& needle) {
   return haystack.find(needle) != std::string::npos;

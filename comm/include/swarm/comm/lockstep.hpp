@@ -136,6 +136,13 @@ class Mailbox {
     virtual const std::string& name() const = 0;
   };
 
+  // The held messages `is_due` selects, removed from held_ (caller holds mutex_).
+  std::vector<Held> take_held(const std::function<bool(const Held&)>& is_due);
+  // Runs them in the one deterministic order: `key` (deliver tick, or due time in real time),
+  // then subscription order, sender, sequence number.
+  template <class Key>
+  static void run_in_order(std::vector<Held>& due, Key key);
+
   // Counts one arrival for the barrier; keeps it for delivery (at deliver_tick in lockstep, after
   // delay_ms in real time) unless the link dropped it.
   void arrive(const msgs::Stamp& stamp, std::uint32_t deliver_tick, double delay_ms, bool keep, int order,
