@@ -310,17 +310,6 @@ std::string format_rate(double bytes_per_s) {
   return buf;
 }
 
-std::string format_bytes(double bytes) {
-  const char* units[] = {"B", "kB", "MB", "GB"};
-  int u = 0;
-  while (bytes >= 1000.0 && u < 3) {
-    bytes /= 1000.0;
-    ++u;
-  }
-  char buf[32];
-  std::snprintf(buf, sizeof buf, u == 0 ? "%.0f %s" : "%.2f %s", bytes, units[u]);
-  return buf;
-}
 
 std::string encoding_name(swarm::scenario::MapEncoding e) {
   return swarm::scenario::MapEncoding_Name(e);

@@ -109,8 +109,6 @@ struct Sweep {
 [[nodiscard]] std::string format_number(double v, int decimals);
 // "4 kB/s", "unlimited".
 [[nodiscard]] std::string format_rate(double bytes_per_s);
-// "1.23 MB".
-[[nodiscard]] std::string format_bytes(double bytes);
 [[nodiscard]] std::string encoding_name(swarm::scenario::MapEncoding e);
 
 }  // namespace swarm::tools::analysis

@@ -120,7 +120,7 @@ std::string progress_line(const ExperimentPlan& plan, const ExperimentRun& run,
                 o.wall_seconds);
   line += buf;
   if (plan.kind == ExperimentKind::kBandwidth) {
-    line += ", map traffic " + analysis::format_bytes(n->map_bytes);
+    line += ", map traffic " + format_bytes(n->map_bytes);
   }
   if (!o.picture_error.empty()) line += " (picture failed: " + o.picture_error + ")";
   return line;

@@ -49,17 +49,6 @@ std::optional<std::pair<double, double>> parse_xy(const std::string& text) {
   return std::make_pair(*x, *y);
 }
 
-std::string format_bytes(double bytes) {
-  const char* units[] = {"B", "kB", "MB", "GB", "TB"};
-  int u = 0;
-  while (bytes >= 1000.0 && u < 4) {
-    bytes /= 1000.0;
-    ++u;
-  }
-  char buf[32];
-  std::snprintf(buf, sizeof buf, u == 0 ? "%.0f %s" : "%.2f %s", bytes, units[u]);
-  return buf;
-}
 
 // The number at a JSON pointer ("/traffic/total/bytes"); nullopt if absent, null or not a number.
 std::optional<double> number_at(const nlohmann::json& root, const char* pointer) {
@@ -81,6 +70,18 @@ void write_text_file(const std::string& path, const std::string& text) {
 }
 
 }  // namespace
+
+std::string format_bytes(double bytes) {
+  const char* units[] = {"B", "kB", "MB", "GB", "TB"};
+  int u = 0;
+  while (bytes >= 1000.0 && u < 4) {
+    bytes /= 1000.0;
+    ++u;
+  }
+  char buf[32];
+  std::snprintf(buf, sizeof buf, u == 0 ? "%.0f %s" : "%.2f %s", bytes, units[u]);
+  return buf;
+}
 
 void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o) {
   if (o.map) {

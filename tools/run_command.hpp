@@ -115,6 +115,9 @@ inline constexpr int kMaxDomainId = 232;
 // missing or null are left out. Throws std::runtime_error if the file is missing or not JSON.
 [[nodiscard]] std::string summarize_metrics(const std::string& metrics_json_path);
 
+// "512 B", "3.41 kB", "5.82 MB": byte counts for people (powers of 1000).
+[[nodiscard]] std::string format_bytes(double bytes);
+
 // The whole `swarm run`: returns the process exit status; messages go to `out` and `err`.
 int run_command(const RunOptions& options, std::ostream& out, std::ostream& err);
 

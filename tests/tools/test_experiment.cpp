@@ -18,11 +18,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using swarm::test::TempDir;
-
 using swarm::test::slurp;
-
 using swarm::test::spit;
+using swarm::test::TempDir;
 
 bool contains(const std::string& haystack, const std::string& needle) {
   return haystack.find(needle) != std::string::npos;

@@ -22,11 +22,9 @@ namespace cfg = swarm::config;
 
 namespace {
 
-using swarm::test::TempDir;
-
 using swarm::test::slurp;
-
 using swarm::test::spit;
+using swarm::test::TempDir;
 
 bool contains(const std::string& haystack, const std::string& needle) {
   return haystack.find(needle) != std::string::npos;
