@@ -1,4 +1,5 @@
 // swarm-leader: a group leader robot and its group's planner. See leader_node.hpp.
+#include "swarm/comm/fault_injection.hpp"
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/comm/role.hpp"
 #include "swarm/leader/leader_node.hpp"
@@ -13,7 +14,9 @@ int main(int argc, char** argv) {
     comm::Participant participant(setup.dds);
     comm::LockstepAgent agent(participant, setup.topology, setup.links, setup.topology.leader(options.group));
     leader::LeaderNode node(agent, setup, options.group);
+    comm::FaultInjector faults(setup.world.scenario, setup.topology.name_of(agent.self()));
     comm::run_lockstep(agent, [&](const msgs::Clock& clock) {
+      faults.at_tick(clock.tick());
       node.step(clock);
       return false;
     });

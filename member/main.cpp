@@ -1,6 +1,7 @@
 // swarm-member: one group member robot. See member_node.hpp.
 #include <iostream>
 
+#include "swarm/comm/fault_injection.hpp"
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/comm/role.hpp"
 #include "swarm/member/member_node.hpp"
@@ -16,9 +17,9 @@ int main(int argc, char** argv) {
     const comm::AgentId self = setup.topology.robot(options.group, options.index);
     comm::LockstepAgent agent(participant, setup.topology, setup.links, self);
     member::MemberNode node(agent, setup, options.group, options.index);
-    const std::string me = setup.topology.name_of(self);
+    comm::FaultInjector faults(setup.world.scenario, setup.topology.name_of(self));
     comm::run_lockstep(agent, [&](const msgs::Clock& clock) {
-      if (setup.kill_at_tick && clock.tick() >= *setup.kill_at_tick) comm::crash_now(me, clock.tick());
+      faults.at_tick(clock.tick());
       node.step(clock);
       return false;
     });

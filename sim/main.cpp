@@ -22,8 +22,10 @@ int main(int argc, char** argv) {
     clock.send_report("sim", node.report_json());
     comm::mark_work_done("sim");
     for (const auto& l : clock.losses()) {
-      std::printf("sim: %s stopped answering at tick %u; DDS declared it lost after %.2f s\n",
+      std::printf("sim: %s stopped answering at tick %u; DDS declared it lost after %.2f s",
                   setup.topology.name_of(l.agent).c_str(), l.tick, l.detection_seconds);
+      if (l.rejoined_tick) std::printf("; it came back at tick %u", *l.rejoined_tick);
+      std::printf("\n");
     }
     std::printf("sim: %u ticks; discovery + run %.2f s, report %.2f s\n", last + 1,
                 std::chrono::duration<double>(t1 - t0).count(),

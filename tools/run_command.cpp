@@ -69,6 +69,34 @@ void write_text_file(const std::string& path, const std::string& text) {
   }
 }
 
+// A tick written in a fault flag; one too large for a tick is a bad flag, not a crash.
+std::uint32_t tick_of(const std::string& digits) {
+  const unsigned long long v = digits.size() > 10 ? ~0ULL : std::stoull(digits);
+  if (v > 0xFFFFFFFFULL) throw cfg::ConfigError("tick " + digits + " is too large (at most 4294967295)");
+  return static_cast<std::uint32_t>(v);
+}
+
+// Each value of a fault flag is AGENT then `form_after_agent`; `fill` sets the fault from the match
+// (group 1 is the agent).
+template <class Fill>
+void add_faults(swarm::scenario::Scenario& s, const char* flag, const std::vector<std::string>& values,
+                const std::string& form_after_agent, const char* expected, Fill fill) {
+  const std::regex form(R"(([a-z]+-[0-9]+(?:-[0-9]+)?))" + form_after_agent);
+  for (const std::string& v : values) {
+    std::smatch m;
+    if (!std::regex_match(v, m, form)) {
+      throw cfg::ConfigError(std::string(flag) + ": expected " + expected + " (got '" + v + "')");
+    }
+    auto* f = s.add_faults();
+    f->set_agent(m[1]);
+    try {
+      fill(*f, m);
+    } catch (const cfg::ConfigError& e) {
+      throw cfg::ConfigError(std::string(flag) + " " + v + ": " + e.what());
+    }
+  }
+}
+
 }  // namespace
 
 std::string format_bytes(double bytes) {
@@ -82,6 +110,7 @@ std::string format_bytes(double bytes) {
   std::snprintf(buf, sizeof buf, u == 0 ? "%.0f %s" : "%.2f %s", bytes, units[u]);
   return buf;
 }
+
 
 void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o) {
   if (o.map) {
@@ -109,27 +138,20 @@ void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o) {
   if (o.realtime) s.set_realtime(*o.realtime);
   if (o.tick_ms) s.set_tick_ms(*o.tick_ms);
   // Names are checked against the run's groups by validate(); here only the shape.
-  const std::regex kill_form(R"(([a-z]+-[0-9]+(?:-[0-9]+)?)@(?:tick:)?([0-9]+))");
-  for (const std::string& k : o.kills) {
-    std::smatch m;
-    if (!std::regex_match(k, m, kill_form)) {
-      throw cfg::ConfigError("--kill: expected AGENT@TICK, e.g. --kill member-1-2@100 (got '" + k + "')");
-    }
-    auto* f = s.add_faults();
-    f->set_agent(m[1]);
-    f->set_kill_at_tick(static_cast<std::uint32_t>(std::stoul(m[2])));
-  }
-  const std::regex cut_form(R"(([a-z]+-[0-9]+(?:-[0-9]+)?)@(?:tick:)?([0-9]+)-([0-9]+))");
-  for (const std::string& c : o.cuts) {
-    std::smatch m;
-    if (!std::regex_match(c, m, cut_form)) {
-      throw cfg::ConfigError("--cut: expected AGENT@FROM-TO, e.g. --cut leader-1@80-180 (got '" + c + "')");
-    }
-    auto* f = s.add_faults();
-    f->set_agent(m[1]);
-    f->set_cut_from_tick(static_cast<std::uint32_t>(std::stoul(m[2])));
-    f->set_cut_to_tick(static_cast<std::uint32_t>(std::stoul(m[3])));
-  }
+  using Match = std::smatch;
+  using Fault = swarm::scenario::Fault;
+  add_faults(s, "--kill", o.kills, R"(@(?:tick:)?([0-9]+))", "AGENT@TICK, e.g. --kill member-1-2@100",
+             [](Fault& f, const Match& m) { f.set_kill_at_tick(tick_of(m[2])); });
+  add_faults(s, "--cut", o.cuts, R"(@(?:tick:)?([0-9]+)-([0-9]+))", "AGENT@FROM-TO, e.g. --cut leader-1@80-180",
+             [](Fault& f, const Match& m) {
+               f.set_cut_from_tick(tick_of(m[2]));
+               f.set_cut_to_tick(tick_of(m[3]));
+             });
+  add_faults(s, "--freeze", o.freezes, R"(@(?:tick:)?([0-9]+)\+([0-9]{1,6}(?:\.[0-9]+)?)s?)",
+             "AGENT@TICK+SECONDS, e.g. --freeze leader-1@80+10", [](Fault& f, const Match& m) {
+               f.set_freeze_at_tick(tick_of(m[2]));
+               f.set_freeze_seconds(std::stod(m[3]));
+             });
 }
 
 PreparedRun prepare_run(const RunOptions& options) {

@@ -42,9 +42,11 @@ struct RunOverrides {
   std::optional<std::uint32_t> max_ticks;
   std::optional<bool> realtime;          // --realtime: ticks at a wall rate, delays in ms
   std::optional<std::uint32_t> tick_ms;  // --tick-ms
-  // Fault injection: "member-G-I@T" (crash at tick T), "leader-G@A-B" (links cut A..B).
+  // Fault injection: "member-G-I@T" (crash at tick T), "leader-G@A-B" (links cut A..B),
+  // "leader-G@T+S" (process frozen at tick T for S seconds).
   std::vector<std::string> kills;
   std::vector<std::string> cuts;
+  std::vector<std::string> freezes;
 };
 
 struct RunOptions {

@@ -45,6 +45,9 @@ int main(int argc, char** argv) {
   auto* tick_ms_opt = run_cmd->add_option("--tick-ms", tick_ms, "Real-time tick length in milliseconds");
   run_cmd->add_option("--kill", o.kills, "Crash a member at a tick, e.g. member-1-2@100 (repeatable)");
   run_cmd->add_option("--cut", o.cuts, "Cut an agent's links for ticks A..B, e.g. leader-1@80-180 (repeatable)");
+  run_cmd->add_option("--freeze", o.freezes,
+                      "Stop a robot's process at a tick for S seconds (a real DDS outage), e.g. leader-1@80+10 "
+                      "(repeatable)");
   run_cmd->add_option("--out", run.out_dir,
                       "Run directory; default runs/<time>-<map>-<mode>-s<seed>");
   run_cmd->add_option("--timeout", timeout_s, "Wall-clock limit in seconds (0 = none)")

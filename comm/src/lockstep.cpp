@@ -192,9 +192,21 @@ LockstepAgent::LockstepAgent(Participant& participant, const Topology& topology,
     }
     arrived_.notify_all();
   });
+  liveliness_ = std::jthread([this](std::stop_token stop) {
+    std::mutex m;
+    std::condition_variable_any wake;
+    std::unique_lock<std::mutex> lock(m);
+    while (!stop.stop_requested()) {
+      done_writer_->assert_liveliness();
+      wake.wait_for(lock, stop, std::chrono::milliseconds(250), [] { return false; });
+    }
+  });
 }
 
-LockstepAgent::~LockstepAgent() { clock_reader_.reset(); }
+LockstepAgent::~LockstepAgent() {
+  liveliness_ = {};  // stops and joins before the writer goes
+  clock_reader_.reset();
+}
 
 void LockstepAgent::announce_ready() {
   wait_for_discovery(topology_.name_of(self_), [&](std::string* missing) {
@@ -316,7 +328,8 @@ LockstepClock::LockstepClock(Participant& participant, const Topology& topology,
       ready_(topology.agents(), false),
       from_sim_(topology.agents(), 0),
       lost_(topology.agents(), false),
-      last_heard_(topology.agents(), std::chrono::steady_clock::now()) {
+      last_heard_(topology.agents(), std::chrono::steady_clock::now()),
+      next_undone_(topology.agents(), 0) {
   ready_[topology.sim()] = true;
   clock_writer_ = std::make_unique<Writer<msgs::Clock>>(participant, topic::kClock);
   heartbeat_ = std::make_unique<HeartbeatListener>(*this, participant);
@@ -328,12 +341,23 @@ void LockstepClock::on_done(msgs::Done&& d, const eprosima::fastdds::dds::Instan
     if (d.agent() >= topology_.agents()) return;
     writer_agent_[writer] = d.agent();
     last_heard_[d.agent()] = std::chrono::steady_clock::now();
+    if (lost_[d.agent()] && d.tick() != kReadyTick) {
+      // A lost agent that speaks again was cut off, not dead: its link healed. Waited for again.
+      lost_[d.agent()] = false;
+      for (auto it = losses_.rbegin(); it != losses_.rend(); ++it) {
+        if (it->agent == d.agent()) {
+          it->rejoined_tick = tick_;
+          break;
+        }
+      }
+    }
     if (d.tick() == kReadyTick) {
       ready_[d.agent()] = true;
     } else {
       auto& seen = done_[d.tick()];
       if (seen.empty()) seen.assign(topology_.agents(), false);
       seen[d.agent()] = true;
+      next_undone_[d.agent()] = std::max(next_undone_[d.agent()], d.tick() + 1);
       for (std::size_t a = 0; a < d.sent().size() && a < from_agents_.size(); ++a) from_agents_[a] += d.sent()[a];
       if (d.mission_complete()) complete_ = true;
     }
@@ -350,7 +374,7 @@ void LockstepClock::on_liveliness_lost(const eprosima::fastdds::dds::InstanceHan
     lost_[it->second] = true;
     const double waited =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - last_heard_[it->second]).count();
-    losses_.push_back({it->second, tick_, waited});
+    losses_.push_back({it->second, next_undone_[it->second], waited, std::nullopt});
   }
   arrived_.notify_all();
 }
@@ -425,11 +449,17 @@ void LockstepClock::publish_clock(std::uint32_t k, const std::vector<msgs::Robot
   }
   clock.expected(expected);
   clock.robots(robots);
+  bool anyone_lost = false;
   if (stop) {
     std::lock_guard<std::mutex> lock(mutex_);
     stopped_ = true;
+    anyone_lost = std::find(lost_.begin(), lost_.end(), true) != lost_.end();
   }
   clock_writer_->write(clock);
+  // An agent lost at the stop may be cut off rather than dead: DDS still holds the stop for it,
+  // but only while this process lives. Give it a few seconds to come back and hear that the run
+  // is over (a dead one never acknowledges, so this is the price of a crash at the end).
+  if (anyone_lost) clock_writer_->wait_acknowledged(std::chrono::seconds(5));
 }
 
 bool LockstepClock::wait_done(std::uint32_t k) {

@@ -183,8 +183,17 @@ void validate_fault(Problems& p, const Scenario& s, int index) {
           "\"" + f.agent() + "\"");
     return;
   }
-  if (!f.has_kill_at_tick() && !f.has_cut_from_tick() && !f.has_cut_to_tick()) {
-    p.add(field, "say kill_at_tick, or cut_from_tick and cut_to_tick", "neither");
+  if (!f.has_kill_at_tick() && !f.has_cut_from_tick() && !f.has_cut_to_tick() && !f.has_freeze_at_tick()) {
+    p.add(field, "say kill_at_tick, cut_from_tick and cut_to_tick, or freeze_at_tick and freeze_seconds",
+          "none of them");
+  }
+  if (f.has_freeze_at_tick() || f.has_freeze_seconds()) {
+    p.at_least(field + ".freeze_at_tick", 1, f.freeze_at_tick());
+    // Past the participant lease DDS ends the peer's session and what was sent meanwhile is lost.
+    if (!(f.freeze_seconds() > 0 && f.freeze_seconds() < 30)) {
+      p.add(field + ".freeze_seconds", "be more than 0 and less than 30 (the DDS participant lease)",
+            num(f.freeze_seconds()));
+    }
   }
   if (f.has_kill_at_tick()) {
     if (!member) p.add(field + ".agent", "be a member to be killed (a group cannot lose its leader)", f.agent());

@@ -1,5 +1,6 @@
 #include "swarm/gcs/gcs_node.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <thread>
@@ -35,6 +36,15 @@ void add(json& obj, const char* key, std::uint64_t n) {
   obj[key] = obj.value(key, std::uint64_t{0}) + n;
 }
 
+// How many ticks of silence make a leader unreachable. In lockstep a heartbeat sent at t is seen
+// at t + 1 + delay (+ jitter): two ticks of slack. In real time a busy machine delays a process by
+// a few ticks of 40 ms now and then, which is not a cut link: half a second of slack.
+std::uint32_t unreachable_after_ticks(const comm::LinkTable& links) {
+  const comm::LinkParams& p = links[LinkClass::LeaderGcs];
+  if (!links.realtime) return 3 + p.delay_ticks + p.jitter_ticks;
+  return 1 + static_cast<std::uint32_t>(std::ceil((p.delay_ms + 500.0) / links.tick_ms));
+}
+
 record::Frame map_frame(std::uint32_t tick, std::uint32_t round, const planner::OccupancyGrid& map) {
   record::Frame f;
   auto* m = f.mutable_map();
@@ -59,11 +69,9 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, const
       record_(record::run_record_path(run_dir)),
       round_(agent.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, setup.topology.leaders())),
       last_heard_(setup.topology.groups(), 0),
-      unreachable_since_(setup.topology.groups()),
-      // A heartbeat sent at t is seen at t + 1 + delay (+ jitter): give it two ticks of slack.
-      unreachable_after_ticks_(3 + setup.links[LinkClass::LeaderGcs].delay_ticks +
-                               setup.links[LinkClass::LeaderGcs].jitter_ticks),
-      robot_lost_at_(setup.topology.robots()) {
+      unreachable_after_ticks_(unreachable_after_ticks(setup.links)),
+      unreachable_(setup.topology.groups()),
+      robots_lost_(setup.topology.robots()) {
   agent.subscribe<msgs::Heartbeat>(topic::kHeartbeat, LinkClass::LeaderGcs, [this](const msgs::Heartbeat& h) {
     if (h.group() < last_heard_.size()) last_heard_[h.group()] = agent_.tick();
   }, comm::Delivery::Reliable, setup.topology.groups());
@@ -143,23 +151,21 @@ bool GcsNode::step(const msgs::Clock& clock) {
                                               : planner::PatchEncoding::RunLength));
     rs.map_rle(comm::encode_map(*d.map, encoding_));
     round_.send(rs);
-    record_.append(map_frame(clock.tick(), *d.start_round, mission_.fused()));
+    record::Frame version = map_frame(clock.tick(), *d.start_round, mission_.fused());
+    version.mutable_map()->set_planning_map_tick(d.map_tick);  // names the map rs carries
+    record_.append(version);
   }
   if (d.complete && !complete_tick_) complete_tick_ = clock.tick();
 
   std::string note;
-  for (std::size_t r = 0; r < robot_lost_at_.size(); ++r) {
-    if (!robot_lost_at_[r] && !clock.robots()[r].alive()) robot_lost_at_[r] = clock.tick();
-    if (robot_lost_at_[r]) note += setup_.topology.name_of(static_cast<comm::AgentId>(r)) + " lost ";
+  for (int r = 0; r < setup_.topology.robots(); ++r) {
+    robots_lost_.observe(r, !clock.robots()[r].alive(), clock.tick(), clock.tick());
+    if (robots_lost_.down(r)) note += setup_.topology.name_of(static_cast<comm::AgentId>(r)) + " lost ";
   }
   for (int g = 0; g < setup_.topology.groups(); ++g) {
     const bool silent = clock.tick() > last_heard_[g] + unreachable_after_ticks_;
-    if (silent && !unreachable_since_[g]) unreachable_since_[g] = last_heard_[g] + 1;
-    if (!silent && unreachable_since_[g]) {
-      unreachable_.emplace_back(g, *unreachable_since_[g], clock.tick());
-      unreachable_since_[g].reset();
-    }
-    if (unreachable_since_[g]) note += "leader-" + std::to_string(g) + " unreachable ";
+    unreachable_.observe(g, silent, last_heard_[g] + 1, clock.tick());
+    if (unreachable_.down(g)) note += "leader-" + std::to_string(g) + " unreachable ";
   }
   progress_.update(clock.tick(), mission_.mapped_fraction(), mission_.round(), mission_.frontier_cells(), note);
   return d.complete;
@@ -167,15 +173,20 @@ bool GcsNode::step(const msgs::Clock& clock) {
 
 void GcsNode::finish() {
   const double wall = std::chrono::duration<double>(last_tick_time_ - first_tick_time_).count();
-  // Every living agent but the GCS reports once the run has stopped.
-  int expected = setup_.topology.agents() - 1;
-  for (const auto& lost : robot_lost_at_) expected -= lost ? 1 : 0;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(15);
-  while (std::chrono::steady_clock::now() < deadline) {
-    {
-      std::lock_guard<std::mutex> lock(reports_mutex_);
-      if (static_cast<int>(reports_.size()) >= expected) break;
+  // Every agent but the GCS reports once the run has stopped; a robot lost at the end may be
+  // dead, so it is not waited for (its report is kept if it comes meanwhile).
+  const auto all_living_reported = [&] {
+    std::lock_guard<std::mutex> lock(reports_mutex_);
+    for (int a = 0; a < setup_.topology.agents(); ++a) {
+      const auto id = static_cast<comm::AgentId>(a);
+      if (id == setup_.topology.gcs() || reports_.count(id)) continue;
+      if (setup_.topology.is_robot(id) && robots_lost_.down(a)) continue;
+      return false;
     }
+    return true;
+  };
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(15);
+  while (!all_living_reported() && std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   std::map<comm::AgentId, msgs::AgentReport> reports;
@@ -216,23 +227,28 @@ void GcsNode::finish() {
       total_bytes += t.sent_bytes();
     }
   }
+  const auto tick_or_null = [](const std::optional<std::uint32_t>& t) { return t ? json(*t) : json(nullptr); };
   json unreachable = json::array();
-  for (int g = 0; g < setup_.topology.groups(); ++g) {
-    if (unreachable_since_[g]) unreachable_.emplace_back(g, *unreachable_since_[g], last_tick_ + 1);
+  for (const auto& o : unreachable_.intervals()) {
+    unreachable.push_back(
+        {{"agent", "leader-" + std::to_string(o.who)}, {"from_tick", o.from}, {"to_tick", o.to.value_or(last_tick_ + 1)}});
   }
-  for (const auto& [g, from, to] : unreachable_) {
-    unreachable.push_back({{"agent", "leader-" + std::to_string(g)}, {"from_tick", from}, {"to_tick", to}});
-  }
+  // The GCS saw each loss in the clock's robot states; the simulator knows when the agent went
+  // silent and how long DDS took to say so. The n-th loss of an agent is the n-th on both sides.
   json agents_lost = json::array();
-  for (std::size_t r = 0; r < robot_lost_at_.size(); ++r) {
-    if (!robot_lost_at_[r]) continue;
-    const std::string name = setup_.topology.name_of(static_cast<comm::AgentId>(r));
-    json entry = {{"agent", name}, {"marked_lost_at_tick", *robot_lost_at_[r]}};
-    for (const auto& l : sim_extra.value("agents_lost", json::array())) {
-      if (l.value("agent", "") == name) {
-        entry["stopped_answering_at_tick"] = l["missed_tick"];
-        entry["detection_seconds"] = l["detection_seconds"];
-      }
+  std::map<std::string, std::size_t> seen;
+  const json sim_losses = sim_extra.value("agents_lost", json::array());
+  for (const auto& o : robots_lost_.intervals()) {
+    const std::string name = setup_.topology.name_of(static_cast<comm::AgentId>(o.who));
+    json entry = {{"agent", name}, {"marked_lost_at_tick", o.from}, {"rejoined_at_tick", tick_or_null(o.to)}};
+    const std::size_t nth = seen[name]++;
+    std::size_t i = 0;
+    for (const auto& l : sim_losses) {
+      if (l.value("agent", "") != name) continue;
+      if (i++ < nth) continue;
+      entry["stopped_answering_at_tick"] = l["missed_tick"];
+      entry["detection_seconds"] = l["detection_seconds"];
+      break;
     }
     agents_lost.push_back(entry);
   }

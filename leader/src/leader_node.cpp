@@ -129,16 +129,23 @@ void LeaderNode::plan(std::uint32_t round, const msgs::Clock& clock) {
 }
 
 void LeaderNode::step(const msgs::Clock& clock) {
-  // A member the simulator lost is done for: nobody waits for it and it gets no waypoints.
+  // A member the simulator lost gets no waypoints and nobody waits for it; one that comes back
+  // (its link healed) is planned for again from the next round.
   for (int i = 1; i < topology_.robots_per_group(); ++i) {
-    if (alive_[i] && !clock.robots()[topology_.robot(group_, i)].alive()) {
-      alive_[i] = false;
-      arrived_[i] = true;
-      const std::string name = topology_.name_of(topology_.robot(group_, i));
-      members_lost_.emplace_back(name, clock.tick());
-      std::fprintf(stderr, "%s: %s lost at tick %u; planning without it\n",
-                   topology_.name_of(agent_.self()).c_str(), name.c_str(), clock.tick());
+    const bool alive = clock.robots()[topology_.robot(group_, i)].alive();
+    if (alive == alive_[i]) continue;
+    alive_[i] = alive;
+    arrived_[i] = true;
+    const std::string name = topology_.name_of(topology_.robot(group_, i));
+    if (!alive) members_lost_.push_back({name, clock.tick(), std::nullopt});
+    for (auto it = members_lost_.rbegin(); alive && it != members_lost_.rend(); ++it) {
+      if (it->name == name) {
+        it->rejoined_tick = clock.tick();
+        break;
+      }
     }
+    std::fprintf(stderr, "%s: %s %s at tick %u\n", topology_.name_of(agent_.self()).c_str(), name.c_str(),
+                 alive ? "is back; planning for it from the next round" : "lost; planning without it", clock.tick());
   }
   msgs::Heartbeat beat;
   beat.group(static_cast<std::uint16_t>(group_));
@@ -180,7 +187,11 @@ void LeaderNode::step(const msgs::Clock& clock) {
 
 std::string LeaderNode::report_json() const {
   nlohmann::json lost = nlohmann::json::array();
-  for (const auto& [name, tick] : members_lost_) lost.push_back({{"agent", name}, {"noticed_at_tick", tick}});
+  for (const auto& l : members_lost_) {
+    lost.push_back({{"agent", l.name},
+                    {"noticed_at_tick", l.noticed_tick},
+                    {"rejoined_at_tick", l.rejoined_tick ? nlohmann::json(*l.rejoined_tick) : nlohmann::json(nullptr)}});
+  }
   return nlohmann::json{{"rounds_planned", rounds_planned_},
                         {"members_lost", lost},
                         {"case_a_rounds", case_a_},

@@ -176,6 +176,34 @@ void plan_case_a(const ExploreInput& in, const ExploreConfig& config, std::uint6
   plan_segment(in, main_group, segs[chosen], chosen, seed, config, plan);
 }
 
+// Case B, when the shared assignment's segment has no open cell left for this group: among the
+// segments with open cells (open[j] = segment j's cells still frontiers in the group map), the
+// least D'/W' from `leader` (W' = open cells, D' = distance to the nearest of them), preferring
+// segments the shared assignment gives no other group: every other leader goes where the shared
+// assignment sends it, so this keeps the paper's implicit cooperation. -1 if no segment is open.
+int reselect_open_segment(Cell leader, const Segments& open,
+                          const std::vector<int>& group_to_segment, int group) {
+  std::vector<std::uint8_t> taken(open.size(), 0);
+  for (std::size_t g = 0; g < group_to_segment.size(); ++g) {
+    const int j = group_to_segment[g];
+    if (static_cast<int>(g) != group && j >= 0) taken[j] = 1;
+  }
+  for (const bool allow_taken : {false, true}) {
+    int best = -1;
+    double best_cost = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < open.size(); ++j) {
+      if (open[j].empty() || (taken[j] && !allow_taken)) continue;
+      const double c = segment_cost(leader, open[j]);
+      if (c < best_cost) {  // strict: ties keep the lowest index
+        best_cost = c;
+        best = static_cast<int>(j);
+      }
+    }
+    if (best >= 0) return best;
+  }
+  return -1;
+}
+
 // Case B (paper 3.3.2): every leader solves the same leaders-to-segments assignment from the
 // shared stale global map and leader positions, and keeps its own row.
 void plan_case_b(const ExploreInput& in, const ExploreConfig& config, std::uint64_t seed,
@@ -210,17 +238,33 @@ void plan_case_b(const ExploreInput& in, const ExploreConfig& config, std::uint6
       }
     }
   }
-  plan.chosen_segment = chosen;
 
-  // The global map is a round old: prefer the segment's cells this group still sees as (reachable)
-  // frontiers, so nobody is sent to a frontier the group has already explored.
-  std::vector<Cell> cells;
-  for (const Cell& c : segs[chosen]) {
-    if (in.group_map->in_bounds(c) && local_frontier_mask[in.group_map->index(c)]) {
-      cells.push_back(c);
+  // The global map is a round old, but this leader also holds its group map (the same global map
+  // plus everything its group saw since). Only the segment cells that are still (reachable)
+  // frontiers there are worth visiting: the others the group has explored itself since the fusion.
+  std::vector<std::vector<Cell>> open(s);
+  for (int j = 0; j < s; ++j) {
+    for (const Cell& c : segs[j]) {
+      if (in.group_map->in_bounds(c) && local_frontier_mask[in.group_map->index(c)]) {
+        open[j].push_back(c);
+      }
     }
   }
-  if (cells.empty()) cells = segs[chosen];
+  if (open[chosen].empty()) {
+    // The shared assignment sent this group to a segment it has explored since the fusion (a
+    // dead end: had it found anything new, it would be in case A). The other leaders cannot know
+    // that, so their rows of the assignment stand; this leader re-chooses for its own row only.
+    // Issue 3's diagnosis before this rule: 36-44 % of case-B targets were such segments, and
+    // their robots idled until the replan cap.
+    chosen = reselect_open_segment(in.member_positions[0], open, plan.group_to_segment, in.group);
+    if (chosen < 0) {
+      // Nothing this group can reach is unexplored: no waypoints until the next global map.
+      plan.plan_case = PlanCase::NoFrontier;
+      return;
+    }
+  }
+  plan.chosen_segment = chosen;
+  const std::vector<Cell>& cells = open[chosen];
 
   std::vector<int> everyone(in.member_positions.size());
   for (std::size_t i = 0; i < everyone.size(); ++i) everyone[i] = static_cast<int>(i);

@@ -139,15 +139,23 @@ class Canvas {
                   cv::FILLED);
   }
 
-  void draw_grid(const OccupancyGrid& grid) {
-    const cv::Vec3b unknown(kUnknownColour.b, kUnknownColour.g, kUnknownColour.r);
-    const cv::Vec3b free_c(kFreeColour.b, kFreeColour.g, kFreeColour.r);
-    const cv::Vec3b occ(kOccupiedColour.b, kOccupiedColour.g, kOccupiedColour.r);
+  // `grid`; where it is unknown and `newer` (if given) knows the cell, the kSeen* colours.
+  void draw_grid(const OccupancyGrid& grid, const OccupancyGrid* newer = nullptr) {
+    auto vec = [](Rgb c) { return cv::Vec3b(c.b, c.g, c.r); };
+    const cv::Vec3b unknown = vec(kUnknownColour), free_c = vec(kFreeColour),
+                    occ = vec(kOccupiedColour), seen_free = vec(kSeenFreeColour),
+                    seen_occ = vec(kSeenOccupiedColour);
     for (int y = 0; y < geo_.height_cells; ++y) {
       for (int x = 0; x < geo_.width_cells; ++x) {
         const CellState s = grid.at(Cell{x, y});
-        const cv::Vec3b& v =
-            s == CellState::Free ? free_c : (s == CellState::Occupied ? occ : unknown);
+        const CellState later = s == CellState::Unknown && newer != nullptr
+                                    ? newer->at(Cell{x, y})
+                                    : CellState::Unknown;
+        const cv::Vec3b& v = s == CellState::Free         ? free_c
+                             : s == CellState::Occupied   ? occ
+                             : later == CellState::Free     ? seen_free
+                             : later == CellState::Occupied ? seen_occ
+                                                            : unknown;
         const int top = geo_.top(y), left = geo_.left(x);
         for (int r = 0; r < geo_.scale; ++r) {
           cv::Vec3b* row = image_.ptr<cv::Vec3b>(top + r);
@@ -217,8 +225,14 @@ class Canvas {
     cv::putText(image_, text, {4, 15}, cv::FONT_HERSHEY_SIMPLEX, fs, kText, 1, cv::LINE_AA);
   }
 
-  // One legend row: coloured swatches with labels, then free-text notes.
-  void legend(int groups, const std::string& notes) {
+  // Two legend rows: coloured swatches with labels, the start marker and `notes`; below them
+  // `more_notes`.
+  void legend(int groups, const std::string& notes, const std::string& more_notes) {
+    if (!more_notes.empty()) {
+      const double more_fs = fitting_font_scale(more_notes, geo_.image_width() - 8, 0.35, 0.28);
+      cv::putText(image_, more_notes, {4, 49}, cv::FONT_HERSHEY_SIMPLEX, more_fs, kText, 1,
+                  cv::LINE_AA);
+    }
     int x = 4;
     const int y = 32;
     const double fs = 0.35;
@@ -294,7 +308,59 @@ RenderGeometry geometry_of(const RecordIndex& idx, int scale) {
                         static_cast<int>(idx.header->height()), scale};
 }
 
+// The planning round in force at `tick`: the highest round among the plans made at or before it.
+std::optional<std::uint32_t> round_at(const RecordIndex& idx, std::uint32_t tick) {
+  std::optional<std::uint32_t> round;
+  for (const Plan* p : idx.plans) {
+    if (p->tick() <= tick && (!round || p->round() > *round)) round = p->round();
+  }
+  return round;
+}
+
+SnapshotMaps snapshot_maps_of(const RecordIndex& idx, std::uint32_t tick) {
+  SnapshotMaps m;
+  m.round = round_at(idx, tick);
+  const MapVersion* fused = at_or_before(idx.maps, tick);
+  m.fused = decode_map(idx, fused);
+  if (fused != nullptr) m.fused_tick = fused->tick();
+  const MapVersion* planned = fused;
+  if (m.round) {
+    // The round's start version names the map its RoundStart carried (the version written at
+    // the end of the run repeats the last round but names none).
+    const MapVersion* start = nullptr;
+    for (const MapVersion* v : idx.maps) {
+      if (v->round() == *m.round && v->has_planning_map_tick()) {
+        start = v;
+        break;
+      }
+    }
+    if (start != nullptr) {
+      planned = nullptr;
+      for (const MapVersion* v : idx.maps) {
+        if (v->tick() == start->planning_map_tick()) {
+          planned = v;
+          break;
+        }
+      }
+      if (planned == nullptr) {
+        throw std::runtime_error("run record: round " + std::to_string(*m.round) +
+                                 " was planned with the map version of tick " +
+                                 std::to_string(start->planning_map_tick()) +
+                                 ", which the record does not hold (damaged record?)");
+      }
+      m.planned_recorded = true;
+    }
+  }
+  m.planned = planned == fused ? m.fused : decode_map(idx, planned);
+  if (planned != nullptr) m.planned_tick = planned->tick();
+  return m;
+}
+
 }  // namespace
+
+SnapshotMaps snapshot_maps(const std::vector<Frame>& frames, std::uint32_t tick) {
+  return snapshot_maps_of(index_frames(frames), tick);
+}
 
 RenderGeometry render_geometry(const std::vector<Frame>& frames, int scale) {
   return geometry_of(index_frames(frames), scale);
@@ -355,7 +421,7 @@ void render_map_png(const std::vector<Frame>& frames, const std::string& png_pat
     title += " | incomplete record, last tick " + std::to_string(last);
   }
   canvas.title(title);
-  canvas.legend(group_count(idx), "thick: leader, thin: member");
+  canvas.legend(group_count(idx), "", "thick line: leader's path, thin: member's");
   canvas.write(png_path);
 }
 
@@ -364,14 +430,11 @@ void render_frontier_png(const std::vector<Frame>& frames, std::uint32_t tick,
   const RecordIndex idx = index_frames(frames);
   const RenderGeometry geo = geometry_of(idx, scale);
   Canvas canvas(geo);
-  const MapVersion* version = at_or_before(idx.maps, tick);
-  canvas.draw_grid(decode_map(idx, version));
+  const SnapshotMaps maps = snapshot_maps_of(idx, tick);
+  const bool newer = maps.planned_recorded && maps.fused_tick != maps.planned_tick;
+  canvas.draw_grid(maps.planned, newer ? &maps.fused : nullptr);
 
-  // The planning round in force: the highest round among plans made at or before `tick`.
-  std::optional<std::uint32_t> round;
-  for (const Plan* p : idx.plans) {
-    if (p->tick() <= tick && (!round || p->round() > *round)) round = p->round();
-  }
+  const std::optional<std::uint32_t> round = maps.round;
   std::vector<const Plan*> plans;
   if (round) {
     for (const Plan* p : idx.plans) {
@@ -448,10 +511,21 @@ void render_frontier_png(const std::vector<Frame>& frames, std::uint32_t tick,
   const Header& h = *idx.header;
   std::string title = map_text(h) + " | " + mode_text(h) + " | tick " + std::to_string(tick);
   if (round) title += " | planning round " + std::to_string(*round);
-  if (version != nullptr) title += " | global map of tick " + std::to_string(version->tick());
+  std::string map_note;
+  if (maps.planned_tick) {
+    if (maps.planned_recorded) {
+      title += " | planned on the global map of tick " + std::to_string(*maps.planned_tick);
+      if (newer) {
+        map_note = "light/dark grey: free/wall fused by tick " + std::to_string(*maps.fused_tick);
+      }
+    } else {
+      // An older record (or before the first plan): the planning map is not known.
+      title += " | fused map of tick " + std::to_string(*maps.planned_tick);
+    }
+  }
   canvas.title(title);
-  canvas.legend(group_count(idx),
-                "filled: group frontiers, hatched: global segments, ring: waypoint");
+  canvas.legend(group_count(idx), map_note,
+                "filled: group frontiers, hatched: global frontier segments, ring: waypoint");
   canvas.write(png_path);
 }
 

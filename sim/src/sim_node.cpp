@@ -49,10 +49,10 @@ std::uint32_t SimNode::run() {
   for (std::uint32_t k = 0;; ++k) {
     clock_.begin_tick(k);
     for (std::size_t r = 0; r < alive_.size(); ++r) {
-      if (alive_[r] && clock_.is_lost(static_cast<comm::AgentId>(r))) {
-        alive_[r] = false;
-        world_.command(static_cast<int>(r), {});  // a dead robot stands where it died
-      }
+      const bool lost = clock_.is_lost(static_cast<comm::AgentId>(r));
+      // A lost robot stands where it was; one whose link healed senses and moves again.
+      if (alive_[r] && lost) world_.command(static_cast<int>(r), {});
+      alive_[r] = !lost;
     }
     if (k > 0) world_.move();
     for (std::size_t r = 0; r < sense_.size(); ++r) {
@@ -86,7 +86,8 @@ std::string SimNode::report_json() const {
   for (const auto& l : clock_.losses()) {
     losses.push_back({{"agent", clock_.topology().name_of(l.agent)},
                       {"missed_tick", l.tick},
-                      {"detection_seconds", l.detection_seconds}});
+                      {"detection_seconds", l.detection_seconds},
+                      {"rejoined_tick", l.rejoined_tick ? nlohmann::json(*l.rejoined_tick) : nlohmann::json(nullptr)}});
   }
   return nlohmann::json{{"last_tick", last_tick_},
                         {"agents_lost", losses},

@@ -94,7 +94,24 @@ INSTANTIATE_TEST_SUITE_P(
                    "number >= 0 (got -5)"},
         Impossible{"links { leader_gcs { delay_ms: -1 } }",
                    "t.pbtxt: field links.leader_gcs.delay_ms: must be a finite number >= 0 "
-                   "(got -1)"}));
+                   "(got -1)"},
+        Impossible{"faults { agent: \"member-3-1\" kill_at_tick: 5 }",
+                   "t.pbtxt: field faults[0].agent: must name a robot of this run: leader-G (G < 3) or "
+                   "member-G-I (1 <= I < 3) (got \"member-3-1\")"},
+        Impossible{"faults { agent: \"leader-1\" kill_at_tick: 5 }",
+                   "t.pbtxt: field faults[0].agent: must be a member to be killed (a group cannot lose "
+                   "its leader) (got leader-1)"},
+        Impossible{"faults { agent: \"leader-1\" }",
+                   "t.pbtxt: field faults[0]: must say kill_at_tick, cut_from_tick and cut_to_tick, or "
+                   "freeze_at_tick and freeze_seconds (got none of them)"},
+        Impossible{"faults { agent: \"leader-1\" cut_from_tick: 9 cut_to_tick: 9 }",
+                   "t.pbtxt: field faults[0]: must give cut_from_tick < cut_to_tick (got 9 .. 9)"},
+        Impossible{"faults { agent: \"leader-1\" freeze_at_tick: 9 freeze_seconds: 30 }",
+                   "t.pbtxt: field faults[0].freeze_seconds: must be more than 0 and less than 30 (the "
+                   "DDS participant lease) (got 30)"},
+        Impossible{"faults { agent: \"member-0-2\" freeze_at_tick: 9 }",
+                   "t.pbtxt: field faults[0].freeze_seconds: must be more than 0 and less than 30 (the "
+                   "DDS participant lease) (got 0)"}));
 
 TEST(Validate, ListsEveryProblemOnItsOwnLine) {
   EXPECT_EQ(validate_error("groups: 0 explore { replan_threshold_steps: 0 }"),
@@ -110,6 +127,12 @@ TEST(Validate, AcceptsTheEdgesOfEveryRange) {
               small_segment_max_cells: 0 small_segment_radius_cells: 0 kmeans_max_iterations: 1 }
     links { sim_robot { loss: 0 bandwidth_bytes_per_s: 0 delay_ms: 0 }
             member_leader { loss: 0.999 } }
+  )"),
+            "(valid)");
+  EXPECT_EQ(validate_error(R"(
+    faults { agent: "member-2-2" kill_at_tick: 1 }
+    faults { agent: "leader-0" cut_from_tick: 0 cut_to_tick: 1 }
+    faults { agent: "leader-2" freeze_at_tick: 1 freeze_seconds: 29.9 }
   )"),
             "(valid)");
   EXPECT_EQ(validate_error("lidar_beams: 4096 groups: 100 robots_per_group: 100"), "(valid)");

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A member dies in the docker-compose deployment: `docker kill` of member-1-2's container while
-# the real-time mission runs. The simulator notices through DDS (the participant lease), its
+# the real-time mission runs. The simulator notices through DDS (the 1 s liveliness lease), its
 # leader plans without it, the mission completes, and metrics.json records the loss.
 # Usage: kill_member.sh SOURCE_DIR BIN_DIR OUT_DIR
 set -euo pipefail

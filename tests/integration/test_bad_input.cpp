@@ -86,6 +86,18 @@ TEST_F(BadInputs, StartSealedOffForTheRobots) {
 }
 TEST_F(BadInputs, UnknownMode) { expect_rejected("--mode fastest", {"fastest", "group-frontier, baseline, ideal"}); }
 TEST_F(BadInputs, NonNumericSeed) { expect_rejected("--seed abc", {"seed"}); }
+TEST_F(BadInputs, MalformedFreeze) {
+  expect_rejected("--freeze leader-1@80", {"--freeze", "AGENT@TICK+SECONDS", "leader-1@80"});
+}
+TEST_F(BadInputs, FreezeOfAGroupThatDoesNotExist) {
+  expect_rejected("--freeze leader-7@80+5", {"faults[0].agent", "leader-7"});
+}
+TEST_F(BadInputs, FaultTickTooLargeForATick) {
+  expect_rejected("--kill member-1-2@99999999999", {"--kill member-1-2@99999999999", "too large"});
+}
+TEST_F(BadInputs, FreezePastTheParticipantLease) {
+  expect_rejected("--freeze leader-1@80+45", {"freeze_seconds", "less than 30", "45"});
+}
 
 // Every role fails at start-up (its DDS profile does not exist): swarm run names a failed process
 // and its log, exits 1, and leaves no process of the run behind.

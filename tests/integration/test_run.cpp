@@ -1,11 +1,16 @@
 // Whole runs over real DDS: the simulator, the GCS, every leader and member as processes.
+#include <algorithm>
 #include <filesystem>
+#include <map>
 
 #include <gtest/gtest.h>
 
 #include "run_swarm.hpp"
+#include "swarm/planner/frontier.hpp"
+#include "swarm/planner/map_patch.hpp"
 #include "swarm/record/file_hash.hpp"
 #include "swarm/record/record.hpp"
+#include "swarm/record/render.hpp"
 
 namespace swarm::test {
 namespace {
@@ -72,6 +77,77 @@ TEST(IntegrationRun, TwoRunsWithOneSeedAreIdentical) {
   EXPECT_EQ(ma["planning_rounds"], mb["planning_rounds"]);
   EXPECT_EQ(ma["traffic"]["total"], mb["traffic"]["total"]);
   EXPECT_EQ(record::sha256_file_hex(dir + "/a/run.pb"), record::sha256_file_hex(dir + "/b/run.pb"));
+}
+
+// Frontier pictures draw the map the leaders planned with, which the record names per round
+// (MapVersion.planning_map_tick = the map its RoundStart carried). Under the paper's one-round
+// delay that is the previous round's version, and every global frontier segment a leader
+// reported lies on that map's frontiers, while the fresher fused map of the same round has
+// already explored some of them (what made the old pictures look wrong).
+TEST(IntegrationRun, RecordNamesTheDelayedMapTheLeadersPlannedWith) {
+  const std::string dir = fresh_dir("planning_map") + "/run";
+  // The baseline plans case B every round, so every plan reports global segments.
+  const CommandResult r =
+      run_swarm("run --scenario " + source_path("scenarios/small.pbtxt") + " --mode baseline --out " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto frames = record::read_record(dir + "/run.pb");
+  ASSERT_TRUE(frames.front().has_header());
+  const auto& h = frames.front().header();
+  auto decode = [&](const record::MapVersion& v) {
+    planner::OccupancyGrid g(static_cast<int>(h.width()), static_cast<int>(h.height()));
+    EXPECT_TRUE(planner::decode_grid_rle(reinterpret_cast<const std::uint8_t*>(v.rle().data()), v.rle().size(), g));
+    return g;
+  };
+  auto known = [](const planner::OccupancyGrid& g) {
+    return std::count_if(g.data().begin(), g.data().end(), [](auto c) { return c != planner::CellState::Unknown; });
+  };
+  std::vector<const record::MapVersion*> starts;  // round-start versions, round 1, 2, ...
+  for (const auto& f : frames) {
+    if (f.has_map() && f.map().has_planning_map_tick()) starts.push_back(&f.map());
+  }
+  ASSERT_GE(starts.size(), 3u);
+  std::map<std::uint32_t, planner::OccupancyGrid> planned, fused;  // by round
+  long fresher_cells = 0;
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    EXPECT_EQ(starts[i]->round(), i + 1);
+    // Round 1 has no older map; round r plans with round r-1's.
+    const std::size_t use = i == 0 ? 0 : i - 1;
+    EXPECT_EQ(starts[i]->planning_map_tick(), starts[use]->tick()) << "round " << i + 1;
+    fused[starts[i]->round()] = decode(*starts[i]);
+    planned[starts[i]->round()] = decode(*starts[use]);
+    const long k_planned = known(planned[starts[i]->round()]), k_fused = known(fused[starts[i]->round()]);
+    EXPECT_LE(k_planned, k_fused) << "round " << i + 1;
+    fresher_cells += k_fused - k_planned;
+  }
+  EXPECT_GT(fresher_cells, 0);
+  // Every reported global segment cell is a frontier of the recorded planning map; some are no
+  // longer frontiers of the same round's fused map.
+  long segment_cells = 0, off_planned = 0, off_fused = 0;
+  for (const auto& f : frames) {
+    if (!f.has_plan()) continue;
+    const auto& p = f.plan();
+    ASSERT_TRUE(planned.count(p.round())) << "round " << p.round();
+    for (const auto& seg : p.global_segments()) {
+      for (int k = 0; k + 1 < seg.xy_size(); k += 2) {
+        const planner::Cell c{seg.xy(k), seg.xy(k + 1)};
+        ++segment_cells;
+        off_planned += !planner::is_frontier(planned[p.round()], c);
+        off_fused += !planner::is_frontier(fused[p.round()], c);
+      }
+    }
+  }
+  RecordProperty("segment_cells", std::to_string(segment_cells));
+  RecordProperty("segment_cells_not_frontier_in_fused_map", std::to_string(off_fused));
+  EXPECT_GT(segment_cells, 0);
+  EXPECT_EQ(off_planned, 0);
+  EXPECT_GT(off_fused, 0);
+
+  // `swarm render` draws that planning map: its snapshot at the last round's start matches.
+  const std::uint32_t t = starts.back()->tick() + 2;
+  const auto maps = record::snapshot_maps(frames, t);
+  ASSERT_TRUE(maps.round);
+  EXPECT_TRUE(maps.planned_recorded);
+  EXPECT_EQ(maps.planned, planned[*maps.round]);
 }
 
 // The paper's default mission: 3 groups x 3 robots (11 processes) on maze1, in each mode.

@@ -328,6 +328,135 @@ TEST(Explore, CaseBGroupLeftWithoutASegmentTakesItsCheapest) {
   EXPECT_TRUE(contains(plan.global_segments[0], *plan.waypoints[0]));
 }
 
+// kCaseB as group 2 (leader '2' at (18,3)) sees it after looking through the right-wall opening:
+// a wall behind it (x = 20, y = 2..5). Segment 0 is no longer a frontier in this group map, and
+// the group found nothing new (no group frontiers), so it plans case B.
+const std::vector<std::string> kCaseBRightExplored = {
+    "#########??##########",  // y=10
+    "#...................#",  // y=9
+    "#..............0....#",  // y=8
+    "#...................#",  // y=7
+    "?...................#",  // y=6
+    "?...1...............#",  // y=5
+    "?...................#",  // y=4
+    "#.................2.#",  // y=3
+    "#...................#",  // y=2
+    "#...................#",  // y=1
+    "#####################",  // y=0
+};
+
+TEST(Explore, CaseBGroupSkipsTheSegmentItHasExploredSinceTheFusion) {
+  const AsciiMap world = ascii_map(kCaseB);
+  const AsciiMap mine = ascii_map(kCaseBRightExplored);
+  // Two groups: leader 0 (15,8) and leader 2 (18,3) as group 1. C_ij = D_ij / W_j (see above):
+  //   L0: seg 0 1.25, seg 1 4.714, seg 2 2.550;  L2: seg 0 0.25, seg 1 5.676, seg 2 5.000.
+  // Optimum (seg 2, seg 0) = 2.80 < (seg 1, seg 0) 4.96 < (seg 0, seg 2) 6.25 < the rest.
+  const std::vector<Cell> leaders = {world.at.at('0'), world.at.at('2')};
+  for (bool groups : {true, false}) {
+    ExploreConfig cfg;
+    cfg.use_group_frontiers = groups;
+    ExploreInput in;
+    in.global_map = &world.grid;
+    in.group_map = &mine.grid;
+    in.leader_positions = leaders;
+    in.group = 1;
+    in.member_positions = members_of(leaders[1]);
+    const ExplorePlan plan = plan_group_exploration(in, cfg);
+    ASSERT_EQ(plan.plan_case, PlanCase::GlobalAssignment);
+    EXPECT_TRUE(plan.group_frontiers.empty());
+    ASSERT_EQ(plan.global_segments.size(), 3u);
+    // The shared assignment, as every leader computes it, is unchanged ...
+    EXPECT_EQ(plan.group_to_segment, (std::vector<int>{2, 0}));
+    // ... but this group explored segment 0 itself. Of the open segments, 2 (own cost 5.000) is
+    // cheaper than 1 (5.676), but the shared assignment gives 2 to group 0, so the group takes 1.
+    EXPECT_EQ(plan.chosen_segment, 1);
+    for (std::size_t m = 0; m < plan.waypoints.size(); ++m) {
+      ASSERT_TRUE(plan.waypoints[m]);
+      EXPECT_TRUE(contains(plan.global_segments[1], *plan.waypoints[m]));
+      EXPECT_EQ(plan.member_segment[m], 1);
+    }
+    // Three robots (18,3), (18,2), (17,3) on the three cells (1,4), (1,5), (1,6), one each. The
+    // least summed distance: (1,6), (1,4), (1,5) = 17.263 + 17.117 + 16.125 = 50.504; next best
+    // (1,5), (1,4), (1,6) = 50.513.
+    EXPECT_EQ(plan.waypoints,
+              (std::vector<std::optional<Cell>>{Cell{1, 6}, Cell{1, 4}, Cell{1, 5}}));
+  }
+  // Group 0 does not know what group 1 saw: with the global map as its group map it keeps its
+  // row (segment 2), so the two groups do not meet.
+  ExploreInput other;
+  other.global_map = &world.grid;
+  other.group_map = &world.grid;
+  other.leader_positions = leaders;
+  other.group = 0;
+  other.member_positions = {leaders[0]};
+  EXPECT_EQ(plan_group_exploration(other, ExploreConfig{}).chosen_segment, 2);
+}
+
+TEST(Explore, CaseBTakesASegmentOfAnotherGroupWhenEveryFreeOneIsExplored) {
+  // Three groups: the shared assignment is (2, 1, 0) (CaseBMatchesTheHandSolvedHungarian), so
+  // segments 1 and 2 both belong to other groups; group 2 explored its own segment 0. It shares
+  // the open segment of least own cost: seg 2 (10,9): 10 / 2 = 5.000 < seg 1 (1,4): 17.029 / 3.
+  const AsciiMap world = ascii_map(kCaseB);
+  const AsciiMap mine = ascii_map(kCaseBRightExplored);
+  ExploreInput in;
+  in.global_map = &world.grid;
+  in.group_map = &mine.grid;
+  in.leader_positions = {world.at.at('0'), world.at.at('1'), world.at.at('2')};
+  in.group = 2;
+  in.member_positions = {world.at.at('2')};
+  const ExplorePlan plan = plan_group_exploration(in, ExploreConfig{});
+  EXPECT_EQ(plan.group_to_segment, (std::vector<int>{2, 1, 0}));
+  EXPECT_EQ(plan.plan_case, PlanCase::GlobalAssignment);
+  EXPECT_EQ(plan.chosen_segment, 2);
+  // K-Means k = 1 on (9,9), (10,9): centre (9.5, 9), the first cell in row-major order wins.
+  EXPECT_EQ(plan.waypoints, (std::vector<std::optional<Cell>>{Cell{9, 9}}));
+}
+
+TEST(Explore, CaseBOnlyPartlyExploredSegmentKeepsItsOpenCells) {
+  // Group 2 has seen behind (20,4) and (20,5) only: segment 0 keeps (19,2), (19,3) open, so the
+  // group stays on its row's segment and its robots go to those two cells.
+  const AsciiMap world = ascii_map(kCaseB);
+  std::vector<std::string> rows = kCaseB;
+  rows[5][20] = '#';  // y=5
+  rows[6][20] = '#';  // y=4
+  const AsciiMap mine = ascii_map(rows);
+  ExploreInput in;
+  in.global_map = &world.grid;
+  in.group_map = &mine.grid;
+  in.leader_positions = {world.at.at('0'), world.at.at('1'), world.at.at('2')};
+  in.group = 2;
+  in.member_positions = {{18, 3}, {18, 2}};
+  const ExplorePlan plan = plan_group_exploration(in, ExploreConfig{});
+  EXPECT_EQ(plan.chosen_segment, 0);
+  EXPECT_EQ(plan.waypoints, (std::vector<std::optional<Cell>>{Cell{19, 3}, Cell{19, 2}}));
+}
+
+TEST(Explore, CaseBNoFrontierWhenTheGroupHasExploredEverySegment) {
+  // Every opening of kCaseB seen by this group to end in a wall: the stale global map still has
+  // three segments, but no cell the group can reach is unexplored. Nobody is sent anywhere.
+  const AsciiMap world = ascii_map(kCaseB);
+  std::vector<std::string> rows = kCaseBRightExplored;
+  rows[0] = "#####################";
+  for (int y : {4, 5, 6}) rows[10 - y][0] = '#';
+  const AsciiMap mine = ascii_map(rows);
+  for (bool groups : {true, false}) {
+    ExploreConfig cfg;
+    cfg.use_group_frontiers = groups;
+    ExploreInput in;
+    in.global_map = &world.grid;
+    in.group_map = &mine.grid;
+    in.leader_positions = {world.at.at('0'), world.at.at('1'), world.at.at('2')};
+    in.group = 2;
+    in.member_positions = members_of(world.at.at('2'));
+    const ExplorePlan plan = plan_group_exploration(in, cfg);
+    EXPECT_EQ(plan.plan_case, PlanCase::NoFrontier);
+    EXPECT_EQ(plan.global_segments.size(), 3u);  // still reported, for pictures
+    EXPECT_EQ(plan.chosen_segment, -1);
+    EXPECT_EQ(plan.waypoints, std::vector<std::optional<Cell>>(3, std::nullopt));
+    EXPECT_EQ(plan.member_segment, std::vector<int>(3, -1));
+  }
+}
+
 TEST(Explore, BaselineNeverReturnsCaseA) {
   // Every map above, every group, several rounds: with use_group_frontiers = false it is always
   // case B (or NoFrontier), even where case A applies with the full planner.

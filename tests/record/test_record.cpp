@@ -300,6 +300,135 @@ TEST(Render, FrontierPngShowsGroupFrontiersAndHatchedSegments) {
   EXPECT_EQ(early.at<cv::Vec3b>(geo.centre_row(2), geo.centre_col(9)), bgr(kUnknownColour));
 }
 
+// Two planning rounds under the paper's delay: round 1 (tick 1) is planned on the map fused at
+// tick 1; round 2 (tick 3) on that same map again, while the GCS has meanwhile fused the top
+// inner row's cells x = 1..5 (free) and x = 6 (wall). A final map version at tick 4 names no
+// planning map, as the GCS writes it.
+std::vector<std::uint8_t> round2_cells() {
+  std::vector<std::uint8_t> cells = world_cells();
+  for (int x = 1; x <= 5; ++x) cells[(kH - 2) * kW + x] = F;
+  cells[(kH - 2) * kW + 6] = O;
+  return cells;
+}
+
+std::vector<Frame> two_round_frames() {
+  std::vector<Frame> frames = sample_frames();
+  frames.pop_back();  // the Summary goes last again below
+  for (Frame& f : frames) {
+    if (!f.has_map()) continue;
+    f.mutable_map()->set_round(1);
+    f.mutable_map()->set_planning_map_tick(1);
+  }
+  Frame m;
+  m.mutable_map()->set_tick(3);
+  m.mutable_map()->set_round(2);
+  m.mutable_map()->set_rle(encode_rle(round2_cells()));
+  m.mutable_map()->set_planning_map_tick(1);
+  frames.push_back(m);
+  Frame pl;
+  Plan* plan = pl.mutable_plan();
+  plan->set_tick(3);
+  plan->set_round(2);
+  plan->set_group(0);
+  plan->set_plan_case(GLOBAL_ASSIGNMENT);
+  for (int v : {8, 6, -1, -1}) plan->add_waypoints_xy(v);
+  Segment* seg = plan->add_global_segments();
+  for (int v : {7, 6, 8, 6}) seg->add_xy(v);  // frontiers of the tick-1 map, not of tick 3's
+  plan->set_chosen_segment(0);
+  frames.push_back(pl);
+  Frame last;
+  last.mutable_map()->set_tick(4);
+  last.mutable_map()->set_round(2);
+  last.mutable_map()->set_rle(encode_rle(round2_cells()));
+  frames.push_back(last);
+  Frame s;
+  s.mutable_summary()->set_steps(4);
+  s.mutable_summary()->set_planning_rounds(2);
+  frames.push_back(s);
+  return frames;
+}
+
+int known_cells(const swarm::planner::OccupancyGrid& g) {
+  int n = 0;
+  for (auto c : g.data()) n += c != swarm::planner::CellState::Unknown;
+  return n;
+}
+
+TEST(Render, SnapshotMapsArePlannedWithAndNewestFused) {
+  const auto frames = two_round_frames();
+  // 12 x 9 = 108 cells; the tick-1 map leaves the 10 inner cells of row y = 7 unknown (98
+  // known); the tick-3 map knows 6 of them more (104).
+  const SnapshotMaps at3 = snapshot_maps(frames, 3);
+  ASSERT_TRUE(at3.round);
+  EXPECT_EQ(*at3.round, 2u);
+  EXPECT_TRUE(at3.planned_recorded);
+  EXPECT_EQ(at3.planned_tick, 1u);
+  EXPECT_EQ(at3.fused_tick, 3u);
+  EXPECT_EQ(known_cells(at3.planned), 98);
+  EXPECT_EQ(known_cells(at3.fused), 104);
+  // Tick 4: the end-of-run version is the newest fused map; round 2's planning map stays.
+  const SnapshotMaps at4 = snapshot_maps(frames, 4);
+  EXPECT_EQ(at4.planned_tick, 1u);
+  EXPECT_EQ(at4.fused_tick, 4u);
+  // Tick 2: round 1, planned on the map fused at its own start (the first round has no older).
+  const SnapshotMaps at2 = snapshot_maps(frames, 2);
+  EXPECT_EQ(at2.round, 1u);
+  EXPECT_EQ(at2.planned_tick, 1u);
+  EXPECT_EQ(at2.fused_tick, 1u);
+  // Before any plan: no round, the map fused by then, not called a planning map.
+  const SnapshotMaps at0 = snapshot_maps(frames, 0);
+  EXPECT_FALSE(at0.round);
+  EXPECT_FALSE(at0.planned_recorded);
+  EXPECT_FALSE(at0.planned_tick);
+}
+
+TEST(Render, FrontierPngDrawsThePlanningMapAndGreysWhatWasFusedSince) {
+  TempDir dir;
+  const auto frames = two_round_frames();
+  const std::string png = dir.file("frontiers.png");
+  render_frontier_png(frames, 3, png, 8);
+  const cv::Mat img = cv::imread(png, cv::IMREAD_COLOR);
+  ASSERT_FALSE(img.empty());
+  const RenderGeometry geo = render_geometry(frames, 8);
+  auto px = [&](const cv::Mat& m, int x, int y) {
+    return m.at<cv::Vec3b>(geo.top(y) + 1, geo.left(x) + 1);  // a corner pixel: no ring or hatch
+  };
+  EXPECT_EQ(px(img, 3, 7), bgr(kSeenFreeColour));      // unknown when planned, free by tick 3
+  EXPECT_EQ(px(img, 6, 7), bgr(kSeenOccupiedColour));  // unknown when planned, wall by tick 3
+  EXPECT_EQ(px(img, 9, 7), bgr(kUnknownColour));       // unknown in both
+  EXPECT_EQ(px(img, 4, 4), bgr(kFreeColour));          // free in both
+  EXPECT_EQ(px(img, 8, 2), bgr(kOccupiedColour));
+
+  // A record from before planning_map_tick: the newest fused map, as pictures always drew it.
+  auto old = frames;
+  for (Frame& f : old) {
+    if (f.has_map()) f.mutable_map()->clear_planning_map_tick();
+  }
+  const SnapshotMaps maps = snapshot_maps(old, 3);
+  EXPECT_FALSE(maps.planned_recorded);
+  EXPECT_EQ(maps.planned_tick, 3u);
+  EXPECT_EQ(known_cells(maps.planned), 104);
+  render_frontier_png(old, 3, png, 8);
+  const cv::Mat old_img = cv::imread(png, cv::IMREAD_COLOR);
+  EXPECT_EQ(px(old_img, 3, 7), bgr(kFreeColour));
+  EXPECT_EQ(px(old_img, 6, 7), bgr(kOccupiedColour));
+}
+
+TEST(Render, PlanningMapTickWithoutThatMapVersionIsADamagedRecord) {
+  auto frames = two_round_frames();
+  for (Frame& f : frames) {
+    if (f.has_map() && f.map().round() == 2 && f.map().has_planning_map_tick()) {
+      f.mutable_map()->set_planning_map_tick(2);
+    }
+  }
+  try {
+    (void)snapshot_maps(frames, 3);
+    FAIL() << "expected a damaged-record error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("map version of tick 2"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Render, RecordWithoutHeaderIsRefused) {
   TempDir dir;
   std::vector<Frame> frames(1);

@@ -47,6 +47,8 @@ class Writer {
     writer_->get_publication_matched_status(status);
     return status.current_count;
   }
+  // Tells the readers this writer is alive (for MANUAL_BY_TOPIC liveliness; a write does too).
+  void assert_liveliness() { writer_->assert_liveliness(); }
   // Blocks until every matched reader acknowledged everything written, or the timeout passes.
   bool wait_acknowledged(std::chrono::milliseconds timeout) {
     eprosima::fastrtps::Duration_t d(static_cast<double>(timeout.count()) / 1000.0);

@@ -43,6 +43,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "swarm/comm/endpoint.hpp"
@@ -256,6 +257,9 @@ class LockstepAgent : public Mailbox {
 
   std::unique_ptr<Writer<msgs::Done>> done_writer_;
   std::unique_ptr<Reader<msgs::Clock>> clock_reader_;
+  // Asserts done_writer_'s liveliness every 250 ms from its own thread, so that a busy agent is
+  // never taken for dead but a crashed or cut-off one is (the heartbeat profile's 1 s lease).
+  std::jthread liveliness_;
   std::map<std::uint32_t, msgs::Clock> clocks_;  // guarded by mutex_
   std::optional<std::uint32_t> next_tick_;
   msgs::Clock current_;
@@ -265,12 +269,15 @@ class LockstepAgent : public Mailbox {
 // `step` returns true when the mission is complete (only the GCS ever says so).
 void run_lockstep(LockstepAgent& agent, const std::function<bool(const msgs::Clock&)>& step);
 
-// An agent that stopped answering: DDS reported its heartbeat writer gone (participant lease 2 s,
-// deploy/fastdds_loopback.xml) `detection_seconds` after its last Done, during `tick`.
+// An agent that stopped answering: it never finished `tick` (the one after its last Done), and DDS
+// reported its heartbeat writer's liveliness lost (1 s lease, deploy/fastdds_loopback.xml)
+// `detection_seconds` after that last Done. An agent
+// whose Done messages come back (a healed link) is re-admitted at `rejoined_tick`.
 struct AgentLoss {
   AgentId agent = 0;
   std::uint32_t tick = 0;
   double detection_seconds = 0;
+  std::optional<std::uint32_t> rejoined_tick;
 };
 
 // The simulator's side: it owns the clock and the barrier counts.
@@ -283,11 +290,13 @@ class LockstepClock : public Mailbox {
   void wait_ready();
   // Delivers the messages (motion commands) due at tick k to their handlers.
   void begin_tick(std::uint32_t k);
-  // Publishes Clock(k) with the barrier counts; call after sending this tick's sensor data.
+  // Publishes Clock(k) with the barrier counts; call after sending this tick's sensor data. The
+  // stop waits up to 5 s for its acknowledgement when an agent is lost (it may be only cut off).
   void publish_clock(std::uint32_t k, const std::vector<msgs::RobotState>& robots, bool stop);
   // Blocks until every living agent has finished tick k; returns true when the GCS reported the
-  // mission complete. An agent whose heartbeat DDS declares lost is no longer waited for (see
-  // losses()). Throws, naming the agents it waited for, after stall_timeout().
+  // mission complete. An agent whose heartbeat DDS declares lost is no longer waited for until
+  // its Done messages come back (see losses()). Throws, naming the agents it waited for, after
+  // stall_timeout().
   bool wait_done(std::uint32_t k);
   std::vector<AgentLoss> losses() const;
   bool is_lost(AgentId a) const;
@@ -311,6 +320,7 @@ class LockstepClock : public Mailbox {
   std::vector<AgentLoss> losses_;
   bool stopped_ = false;
   std::vector<std::chrono::steady_clock::time_point> last_heard_;  // per agent: its latest Done
+  std::vector<std::uint32_t> next_undone_;                          // per agent: tick after its latest Done
 };
 
 }  // namespace swarm::comm

@@ -9,12 +9,12 @@
 #include <memory>
 #include <mutex>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/comm/role.hpp"
 #include "swarm/gcs/mission.hpp"
+#include "swarm/gcs/outages.hpp"
 #include "swarm/gcs/progress.hpp"
 #include "swarm/planner/map_patch.hpp"
 #include "swarm/record/record.hpp"
@@ -47,10 +47,9 @@ class GcsNode {
 
   // Reachability of each group's leader, judged from its per-tick heartbeat.
   std::vector<std::uint32_t> last_heard_;
-  std::vector<std::optional<std::uint32_t>> unreachable_since_;
-  std::vector<std::tuple<int, std::uint32_t, std::uint32_t>> unreachable_;  // (group, from, to)
   std::uint32_t unreachable_after_ticks_ = 3;
-  std::vector<std::optional<std::uint32_t>> robot_lost_at_;  // first tick the clock said dead
+  Outages unreachable_;  // per group
+  Outages robots_lost_;  // per robot, from the clock's robot states
 
   std::uint32_t last_tick_ = 0;
   std::optional<std::uint32_t> complete_tick_;

@@ -55,7 +55,12 @@ class LeaderNode {
   std::uint64_t case_a_ = 0;
   std::uint64_t case_b_ = 0;
   double planning_seconds_ = 0;
-  std::vector<std::pair<std::string, std::uint32_t>> members_lost_;  // (name, tick noticed)
+  struct MemberLoss {
+    std::string name;
+    std::uint32_t noticed_tick;
+    std::optional<std::uint32_t> rejoined_tick;  // its link healed
+  };
+  std::vector<MemberLoss> members_lost_;
 };
 
 }  // namespace swarm::leader

@@ -26,9 +26,10 @@
 //     back for them later.
 //  3. Case B, no group frontiers, or the baseline (paper 3.3.2): DBSCAN the global frontiers;
 //     Hungarian assignment of ALL leaders to segments with C_ij = D_ij / W_j; this group keeps
-//     its own row. Case B reads only the global map and the leader positions, which every leader
-//     shares, so all leaders compute the same assignment and cooperate without messages.
-//  4. Within the group: K-Means (k = members on the segment) on the segment's cells; each
+//     its own row. The assignment reads only the global map and the leader positions, which
+//     every leader shares, so all leaders compute the same one and cooperate without messages.
+//     If the group has explored its row's segment since the fusion, it re-chooses (see below).
+//  4. Within the group: K-Means (k = members on the segment) on the segment's open cells; each
 //     waypoint is the segment cell nearest a centre; Hungarian on Euclidean distance gives every
 //     member one waypoint.
 //
@@ -44,9 +45,16 @@
 //   nearest the segment's centroid (K-Means with k = 1).
 // - Case B, more groups than segments: a group whose row the Hungarian leaves out takes the
 //   cheapest segment of its row and shares it.
-// - Case B waypoints use the chosen segment's cells that are still reachable frontiers in the
-//   group's map (the global map is a round old), or all its cells if none is. The baseline does
-//   this too: it differs from the full planner only in never using group frontiers.
+// - Case B uses the leader's own group map as well, for its own row only: the chosen segment's
+//   waypoints come from its cells that are still reachable frontiers in the group map ("open";
+//   the global map is a round old). If the shared assignment's segment has no open cell, the
+//   group explored it itself since the fusion (a dead end, or it would be in case A); it then
+//   takes the open segment of least D'/W' (W' = open cells, D' = distance to the nearest one)
+//   among those the shared assignment gives no other group, else among all open segments;
+//   none open = NoFrontier. Why it stays within the method: the leader holds its group map in
+//   the paper too, and the other leaders' rows, which model what they will do, are untouched.
+//   The baseline does this too: it differs from the full planner only in never using group
+//   frontiers.
 // - Fewer distinct cells than members: each waypoint is offered ceil(members / waypoints) times
 //   to the Hungarian assignment, so members share waypoints as evenly as possible.
 // - All group frontiers DBSCAN noise (only possible with dbscan_min_points > 1): case B.
@@ -101,7 +109,9 @@ struct ExplorePlan {
   std::vector<Cell> group_frontiers;                 // row-major; empty for the baseline
   std::vector<std::vector<Cell>> group_segments;     // case A: DBSCAN of group_frontiers
   std::vector<std::vector<Cell>> global_segments;    // case B: DBSCAN of the global frontiers
-  int chosen_segment = -1;  // case A: index into group_segments; case B: into global_segments
+  // Case A: index into group_segments; case B: into global_segments. In case B it differs from
+  // group_to_segment[group] when this group had already explored that segment (explore.hpp top).
+  int chosen_segment = -1;
   // Parallel to member_positions: the segment each member was sent to (same indexing as
   // chosen_segment), -1 in NoFrontier. In case A, members != chosen_segment went to small segments.
   std::vector<int> member_segment;
