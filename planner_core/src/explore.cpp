@@ -44,8 +44,15 @@ double segment_cost(Cell leader, const std::vector<Cell>& segment) {
 }
 
 Segments segment_frontiers(const std::vector<Cell>& frontiers, const ExploreConfig& config) {
-  return clusters_of(frontiers,
-                     dbscan(frontiers, config.dbscan_eps_cells, config.dbscan_min_points));
+  const std::vector<int> labels = dbscan(frontiers, config.dbscan_eps_cells, config.dbscan_min_points);
+  Segments segs = clusters_of(frontiers, labels);
+  // DBSCAN calls a sparse frontier cell noise, but it is still unexplored space the GCS waits
+  // for: dropped, it was never visited and missions with dbscan_min_points > 1 never completed.
+  // So each noise cell is a segment of its own (W = 1: the costliest per cell, visited last).
+  for (std::size_t i = 0; i < frontiers.size(); ++i) {
+    if (labels[i] < 0) segs.push_back({frontiers[i]});
+  }
+  return segs;
 }
 
 // Up to k waypoints on `cells` (non-empty): K-Means centres snapped to the nearest cell (ties:
@@ -211,7 +218,7 @@ void plan_case_b(const ExploreInput& in, const ExploreConfig& config, std::uint6
                  const std::vector<std::uint8_t>& local_frontier_mask, ExplorePlan& plan) {
   plan.global_segments = segment_frontiers(global_frontiers, config);
   const Segments& segs = plan.global_segments;
-  if (segs.empty()) return;  // every global frontier cell was DBSCAN noise: NoFrontier
+  if (segs.empty()) return;  // no global frontier at all: NoFrontier
   plan.plan_case = PlanCase::GlobalAssignment;
 
   const int g = static_cast<int>(in.leader_positions.size());
@@ -305,8 +312,6 @@ ExplorePlan plan_group_exploration(const ExploreInput& in, const ExploreConfig& 
     }
     if (!plan.group_frontiers.empty()) {
       plan.group_segments = segment_frontiers(plan.group_frontiers, config);
-      // All group frontiers can be DBSCAN noise only when dbscan_min_points > 1; then there is
-      // no segment to visit and the group falls back to case B.
       if (!plan.group_segments.empty()) {
         plan_case_a(in, config, seed, plan);
         return plan;

@@ -154,6 +154,23 @@ TEST(Explore, CaseAPicksTheSegmentWithTheLeastDistancePerCell) {
   EXPECT_EQ(plan.member_segment, (std::vector<int>{0}));
 }
 
+// dbscan_min_points 3: the right column stays a cluster ((13,2) and (13,3) have 3 points within
+// eps 1.5), the two lone cells are DBSCAN noise. They are still unexplored space, so each is a
+// segment of its own, after the clusters (dropped, they were never visited and the mission never
+// completed).
+TEST(Explore, DbscanNoiseCellsAreSegmentsOfTheirOwn) {
+  CaseAFixture f;
+  ExploreConfig config;
+  config.dbscan_min_points = 3;
+  const ExplorePlan plan = plan_group_exploration(f.input({f.group.at.at('L')}), config);
+  ASSERT_EQ(plan.plan_case, PlanCase::GroupFrontier);
+  ASSERT_EQ(plan.group_segments.size(), 3u);
+  EXPECT_EQ(plan.group_segments[0], (std::vector<Cell>{{13, 1}, {13, 2}, {13, 3}, {13, 4}}));
+  EXPECT_EQ(plan.group_segments[1], (std::vector<Cell>{{1, 5}}));
+  EXPECT_EQ(plan.group_segments[2], (std::vector<Cell>{{7, 5}}));
+  EXPECT_EQ(plan.chosen_segment, 0);  // D/W 1.75 against 5.385 and 2.236, as with min_points 1
+}
+
 TEST(Explore, SmallSegmentRuleSendsExactlyOneMemberToTheNearCornerSegment) {
   CaseAFixture f;
   const Cell l = f.group.at.at('L'), a = f.group.at.at('A'), b = f.group.at.at('B');
