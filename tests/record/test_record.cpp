@@ -271,12 +271,17 @@ TEST(Render, MapPngHasTheExpectedSizeAndColours) {
   EXPECT_EQ(px(2, 4), bgr(kStartColour));
 }
 
+// The frontier snapshot of `frames` at `tick`, rendered at 8 px a cell into `png` and read back.
+cv::Mat frontier_image(const std::vector<Frame>& frames, std::uint32_t tick, const std::string& png) {
+  render_frontier_png(frames, tick, png, 8);
+  return cv::imread(png, cv::IMREAD_COLOR);
+}
+
 TEST(Render, FrontierPngShowsGroupFrontiersAndHatchedSegments) {
   TempDir dir;
   const auto frames = sample_frames();
   const std::string png = dir.file("frontiers.png");
-  render_frontier_png(frames, 2, png, 8);
-  const cv::Mat img = cv::imread(png, cv::IMREAD_COLOR);
+  const cv::Mat img = frontier_image(frames, 2, png);
   ASSERT_FALSE(img.empty());
   const RenderGeometry geo = render_geometry(frames, 8);
   EXPECT_EQ(img.cols, geo.image_width());
@@ -295,8 +300,7 @@ TEST(Render, FrontierPngShowsGroupFrontiersAndHatchedSegments) {
   EXPECT_GT(ink, 3);
   EXPECT_GT(white, 10);
   // Before the first map version, the map is all unknown.
-  render_frontier_png(frames, 0, png, 8);
-  const cv::Mat early = cv::imread(png, cv::IMREAD_COLOR);
+  const cv::Mat early = frontier_image(frames, 0, png);
   EXPECT_EQ(early.at<cv::Vec3b>(geo.centre_row(2), geo.centre_col(9)), bgr(kUnknownColour));
 }
 
@@ -386,8 +390,7 @@ TEST(Render, FrontierPngDrawsThePlanningMapAndGreysWhatWasFusedSince) {
   TempDir dir;
   const auto frames = two_round_frames();
   const std::string png = dir.file("frontiers.png");
-  render_frontier_png(frames, 3, png, 8);
-  const cv::Mat img = cv::imread(png, cv::IMREAD_COLOR);
+  const cv::Mat img = frontier_image(frames, 3, png);
   ASSERT_FALSE(img.empty());
   const RenderGeometry geo = render_geometry(frames, 8);
   auto px = [&](const cv::Mat& m, int x, int y) {
@@ -408,8 +411,7 @@ TEST(Render, FrontierPngDrawsThePlanningMapAndGreysWhatWasFusedSince) {
   EXPECT_FALSE(maps.planned_recorded);
   EXPECT_EQ(maps.planned_tick, 3u);
   EXPECT_EQ(known_cells(maps.planned), 104);
-  render_frontier_png(old, 3, png, 8);
-  const cv::Mat old_img = cv::imread(png, cv::IMREAD_COLOR);
+  const cv::Mat old_img = frontier_image(old, 3, png);
   EXPECT_EQ(px(old_img, 3, 7), bgr(kFreeColour));
   EXPECT_EQ(px(old_img, 6, 7), bgr(kOccupiedColour));
 }
