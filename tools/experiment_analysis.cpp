@@ -254,6 +254,13 @@ std::string seeds_text(const std::vector<RunRow>& rows) {
   return s;
 }
 
+Figure seed_stats_figure(const std::string& subject, const std::vector<RunRow>& rows) {
+  Figure f;
+  f.title = subject + ": mean +/- std over " + seeds_text(rows);
+  f.note = "error bars: standard deviation over seeds";
+  return f;
+}
+
 std::string team_text(const std::vector<RunRow>& rows) {
   std::set<std::pair<std::uint32_t, std::uint32_t>> teams;
   for (const RunRow& r : rows) {

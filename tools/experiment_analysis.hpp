@@ -99,6 +99,9 @@ struct Sweep {
 // "seeds 1-5" / "seeds 1, 3, 4" over every planned run; "groups x robots" when all agree.
 [[nodiscard]] std::string seeds_text(const std::vector<RunRow>& rows);
 [[nodiscard]] std::string team_text(const std::vector<RunRow>& rows);
+// An experiment's figure of means over seeds: titled "<subject>: mean +/- std over <seeds>", with
+// the note that error bars are standard deviations. The panels are the caller's.
+[[nodiscard]] Figure seed_stats_figure(const std::string& subject, const std::vector<RunRow>& rows);
 // "45 runs: 44 ok (43 complete), 1 failed" (and ", 2 ended early" when some did).
 [[nodiscard]] std::string runs_text(const std::vector<RunRow>& rows);
 

@@ -195,9 +195,7 @@ void analyze_bandwidth(const ExperimentPlan& plan, const std::vector<RunRow>& ro
   }
   text += footnotes(rows);
   out.table = text;
-  Figure f;
-  f.title = "Bandwidth: mean +/- std over " + seeds_text(rows);
-  f.note = "error bars: standard deviation over seeds";
+  Figure f = seed_stats_figure("Bandwidth", rows);
   f.panels.push_back(bytes);
   f.panels.push_back(caps);
   out.figures.emplace_back("bandwidth.png", f);

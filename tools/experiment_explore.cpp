@@ -213,12 +213,10 @@ void analyze_explore(const ExperimentPlan& plan, const std::vector<RunRow>& rows
     }
     return p;
   };
-  Figure f;
-  f.title = "Exploration: mean +/- std over " + seeds_text(rows) +
-            (team.empty() ? "" : ", " + team);
+  Figure f = seed_stats_figure("Exploration", rows);
+  if (!team.empty()) f.title += ", " + team;
   f.panels.push_back(panel(Metric::kSteps, "Steps until the map is complete", "steps"));
   f.panels.push_back(panel(Metric::kRounds, "Planning rounds", "planning rounds"));
-  f.note = "error bars: standard deviation over seeds";
   out.figures.emplace_back("table2.png", f);
 }
 

@@ -91,9 +91,7 @@ void analyze_latency(const ExperimentPlan& plan, const std::vector<RunRow>& rows
   out.table = text;
   out.findings["planning_interval_ticks"] = plan.planning_interval_ticks;
 
-  Figure f;
-  f.title = "Steps vs link delay: mean +/- std over " + seeds_text(rows);
-  f.note = "error bars: standard deviation over seeds";
+  Figure f = seed_stats_figure("Steps vs link delay", rows);
   for (LinkSweep& ls : sweeps) {
     ls.panel.y_label = "steps";
     f.panels.push_back(ls.panel);

@@ -59,9 +59,7 @@ void analyze_loss(const ExperimentPlan& plan, const std::vector<RunRow>& rows, K
   }
   text += footnotes(rows);
   out.table = text;
-  Figure f;
-  f.title = "Message loss: mean +/- std over " + seeds_text(rows);
-  f.note = "error bars: standard deviation over seeds";
+  Figure f = seed_stats_figure("Message loss", rows);
   f.panels.push_back(steps_panel);
   f.panels.push_back(complete_panel);
   out.figures.emplace_back("loss.png", f);

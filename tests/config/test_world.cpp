@@ -16,6 +16,7 @@
 #include "swarm/config/scenario.hpp"
 #include "swarm/planner/frontier.hpp"
 #include "swarm/planner/map_io.hpp"
+#include "swarm_test/text.hpp"
 
 namespace {
 
@@ -35,9 +36,7 @@ std::string error_of(const std::function<void()>& f) {
   return "(no ConfigError)";
 }
 
-bool contains(const std::string& s, const std::string& part) {
-  return s.find(part) != std::string::npos;
-}
+using swarm::test::contains;
 
 // 20 x 20 cells (4 m x 4 m) of free space inside an outer wall, with a closed 2 x 2 pocket:
 // free cells (5..6, 5..6) ringed by walls at x, y = 4 and 7.

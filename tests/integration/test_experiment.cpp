@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "run_swarm.hpp"
+#include "swarm_test/text.hpp"
 
 namespace swarm::test {
 namespace {
@@ -31,9 +32,7 @@ std::vector<std::string> split(const std::string& text, char sep) {
   return out;
 }
 
-bool contains(const std::string& haystack, const std::string& needle) {
-  return haystack.find(needle) != std::string::npos;
-}
+using swarm::test::contains;
 
 // One experiment (1 map x 3 methods x 2 seeds = 6 runs of 2 x 2 robots), then its report: one
 // test, since ctest runs every test in a process of its own.

@@ -12,6 +12,7 @@
 #include "experiment.hpp"
 #include "experiment_command.hpp"
 #include "swarm/config/scenario.hpp"
+#include "swarm_test/text.hpp"
 
 using namespace swarm::tools;
 namespace fs = std::filesystem;
@@ -22,9 +23,7 @@ using swarm::test::slurp;
 using swarm::test::spit;
 using swarm::test::TempDir;
 
-bool contains(const std::string& haystack, const std::string& needle) {
-  return haystack.find(needle) != std::string::npos;
-}
+using swarm::test::contains;
 
 // A run directory as the GCS leaves it (only what the experiment reads).
 void fake_run(const std::string& dir, const std::string& map, const std::string& mode, int seed,

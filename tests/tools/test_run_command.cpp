@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "run_command.hpp"
 #include "swarm/record/record.hpp"
+#include "swarm_test/text.hpp"
 
 namespace fs = std::filesystem;
 using namespace swarm::tools;
@@ -26,9 +27,7 @@ using swarm::test::slurp;
 using swarm::test::spit;
 using swarm::test::TempDir;
 
-bool contains(const std::string& haystack, const std::string& needle) {
-  return haystack.find(needle) != std::string::npos;
-}
+using swarm::test::contains;
 
 // Shell scripts named like the role binaries. Each prints its arguments (into its log); the GCS
 // copies a prepared run record and metrics file into --run-dir; `leader_script` is the body of
