@@ -1,5 +1,6 @@
 #include "swarm/leader/leader_node.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -137,12 +138,12 @@ void LeaderNode::step(const msgs::Clock& clock) {
     alive_[i] = alive;
     arrived_[i] = true;
     const std::string name = topology_.name_of(topology_.robot(group_, i));
-    if (!alive) members_lost_.push_back({name, clock.tick(), std::nullopt});
-    for (auto it = members_lost_.rbegin(); alive && it != members_lost_.rend(); ++it) {
-      if (it->name == name) {
-        it->rejoined_tick = clock.tick();
-        break;
-      }
+    if (!alive) {
+      members_lost_.push_back({name, clock.tick(), std::nullopt});
+    } else if (auto it = std::find_if(members_lost_.rbegin(), members_lost_.rend(),
+                                      [&](const MemberLoss& l) { return l.name == name; });
+               it != members_lost_.rend()) {
+      it->rejoined_tick = clock.tick();
     }
     std::fprintf(stderr, "%s: %s %s at tick %u\n", topology_.name_of(agent_.self()).c_str(), name.c_str(),
                  alive ? "is back; planning for it from the next round" : "lost; planning without it", clock.tick());
