@@ -8,14 +8,13 @@ int main(int argc, char** argv) {
   comm::RoleOptions options;
   CLI::App app{"swarm-gcs: ground control station (map fusion, planning rounds, metrics)"};
   comm::add_role_flags(app, options, comm::RoleKind::Gcs);
-  return comm::run_role(app, argc, argv, "gcs", [&] {
+  return comm::run_role(app, argc, argv, "gcs", [&]() -> int {
     const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Gcs, "gcs");
     comm::Participant participant(setup.dds);
     comm::LockstepAgent agent(participant, setup.topology, setup.links, setup.topology.gcs());
     gcs::GcsNode node(agent, setup, options.run_dir, gcs::Progress::parse(options.progress));
     comm::run_lockstep(agent, [&](const msgs::Clock& clock) { return node.step(clock); });
     node.finish();
-    comm::mark_work_done("gcs");
-    return 0;
+    comm::exit_after_work("gcs");
   });
 }

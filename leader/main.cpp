@@ -9,7 +9,7 @@ int main(int argc, char** argv) {
   comm::RoleOptions options;
   CLI::App app{"swarm-leader: a group leader (a robot plus its group's exploration planner)"};
   comm::add_role_flags(app, options, comm::RoleKind::Leader);
-  return comm::run_role(app, argc, argv, "leader", [&] {
+  return comm::run_role(app, argc, argv, "leader", [&]() -> int {
     const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Leader, "leader");
     comm::Participant participant(setup.dds);
     comm::LockstepAgent agent(participant, setup.topology, setup.links, setup.topology.leader(options.group));
@@ -21,7 +21,6 @@ int main(int argc, char** argv) {
       return false;
     });
     agent.send_report("leader", node.report_json());
-    comm::mark_work_done("leader");
-    return 0;
+    comm::exit_after_work(setup.topology.name_of(agent.self()));
   });
 }

@@ -11,7 +11,7 @@ int main(int argc, char** argv) {
   comm::RoleOptions options;
   CLI::App app{"swarm-member: one group member robot of a swarm run"};
   comm::add_role_flags(app, options, comm::RoleKind::Member);
-  return comm::run_role(app, argc, argv, "member", [&] {
+  return comm::run_role(app, argc, argv, "member", [&]() -> int {
     const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Member, "member");
     comm::Participant participant(setup.dds);
     const comm::AgentId self = setup.topology.robot(options.group, options.index);
@@ -24,7 +24,6 @@ int main(int argc, char** argv) {
       return false;
     });
     agent.send_report("member", node.report_json());
-    comm::mark_work_done("member");
-    return 0;
+    comm::exit_after_work(setup.topology.name_of(self));
   });
 }

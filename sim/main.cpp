@@ -11,7 +11,7 @@ int main(int argc, char** argv) {
   comm::RoleOptions options;
   CLI::App app{"swarm-sim: the simulator (ground truth, motion, LiDAR) and clock of a swarm run"};
   comm::add_role_flags(app, options, comm::RoleKind::Sim);
-  return comm::run_role(app, argc, argv, "sim", [&] {
+  return comm::run_role(app, argc, argv, "sim", [&]() -> int {
     const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Sim, "sim");
     comm::Participant participant(setup.dds);
     comm::LockstepClock clock(participant, setup.topology, setup.links);
@@ -20,7 +20,6 @@ int main(int argc, char** argv) {
     const std::uint32_t last = node.run();
     const auto t1 = std::chrono::steady_clock::now();
     clock.send_report("sim", node.report_json());
-    comm::mark_work_done("sim");
     for (const auto& l : clock.losses()) {
       std::printf("sim: %s stopped answering at tick %u; DDS declared it lost after %.2f s",
                   setup.topology.name_of(l.agent).c_str(), l.tick, l.detection_seconds);
@@ -30,6 +29,6 @@ int main(int argc, char** argv) {
     std::printf("sim: %u ticks; discovery + run %.2f s, report %.2f s\n", last + 1,
                 std::chrono::duration<double>(t1 - t0).count(),
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count());
-    return 0;
+    comm::exit_after_work("sim");
   });
 }

@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -50,10 +51,12 @@ int render_command(const RenderOptions& o, std::ostream& out, std::ostream& err)
 
 int bench_command(const std::string& bin_dir, const std::vector<std::string>& args,
                   std::ostream& err) {
-  // `swarm bench [planner|mission] [Google Benchmark flags...]`: both suites by default.
+  // `swarm bench [SUITE] [Google Benchmark flags...]`: planner and mission by default; the others
+  // (tour, mapf, darp) only on request (mapf takes minutes).
+  static const std::vector<std::string> kSuites = {"planner", "mission", "tour", "mapf", "darp"};
   std::vector<std::string> suites{"planner", "mission"};
   std::vector<std::string> pass = args;
-  if (!pass.empty() && (pass.front() == "planner" || pass.front() == "mission")) {
+  if (!pass.empty() && std::find(kSuites.begin(), kSuites.end(), pass.front()) != kSuites.end()) {
     suites = {pass.front()};
     pass.erase(pass.begin());
   }

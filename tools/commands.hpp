@@ -21,9 +21,12 @@ struct RenderOptions {
 // (or the picture cannot be written), with a message saying which.
 int render_command(const RenderOptions& options, std::ostream& out, std::ostream& err);
 
-// `swarm bench [planner|mission] [Google Benchmark flags]`: runs swarm-bench-planner (ray casting
-// rays/s, A*) and swarm-bench-mission (lockstep ticks/s of the default 11-process mission) from
-// `bin_dir`, one after the other; 0 when both ran, 1 when one failed, 2 when one is not built.
+// `swarm bench [SUITE] [Google Benchmark flags]`: with no suite runs swarm-bench-planner (ray
+// casting rays/s, A*) and swarm-bench-mission (lockstep ticks/s of the default 11-process mission)
+// from `bin_dir`, one after the other; or the one suite named: planner, mission, tour (the tour GA,
+// exact orders, plowing and Group-k), mapf (the MAPF solvers on the MovingAI benchmark; minutes),
+// darp (DARP and STC on ../shared/benchmarks/darp beside the reference's figures).
+// 0 when they ran, 1 when one failed, 2 when one is not built.
 int bench_command(const std::string& bin_dir, const std::vector<std::string>& args,
                   std::ostream& err);
 

@@ -12,6 +12,7 @@
 
 #include "experiment_analysis.hpp"
 #include "run_command.hpp"
+#include "swarm/record/metrics.hpp"
 #include "swarm/config/scenario.hpp"
 
 namespace swarm::tools {
@@ -493,40 +494,27 @@ const std::vector<std::string>& map_topics() {
 }
 
 std::optional<RunNumbers> load_run_numbers(const std::string& run_dir, std::string& why) {
-  const std::string metrics_path = (fs::path(run_dir) / "metrics.json").string();
-  std::ifstream in(metrics_path);
-  if (!in) {
-    why = "no metrics.json in " + run_dir;
-    return std::nullopt;
-  }
-  json m;
+  swarm::record::RunMetrics m;
   try {
-    in >> m;
-  } catch (const std::exception& e) {
-    why = metrics_path + " is not valid JSON";
+    m = swarm::record::read_metrics((fs::path(run_dir) / "metrics.json").string());
+  } catch (const swarm::record::MetricsError& e) {
+    why = e.what();
     return std::nullopt;
   }
-  auto number = [&](const char* key) {
-    return m.contains(key) && m[key].is_number() ? m[key].get<double>() : 0.0;
-  };
   RunNumbers n;
-  n.complete = m.value("complete", false);
-  n.steps = number("steps");
-  if (m.contains("steps_to_99") && m["steps_to_99"].is_number()) {
-    n.steps_to_99 = m["steps_to_99"].get<double>();
-  }
-  n.planning_rounds = number("planning_rounds");
-  n.explored_fraction = number("explored_fraction");
-  n.ticks_run = number("ticks_run");
-  n.wall_seconds = number("wall_seconds");
-  n.groups = static_cast<std::uint32_t>(number("groups"));
-  n.robots_per_group = static_cast<std::uint32_t>(number("robots_per_group"));
-  n.robots = number("robots");
-  const json::json_pointer total("/traffic/total/bytes");
-  if (m.contains(total) && m.at(total).is_number()) n.traffic_bytes = m.at(total).get<double>();
+  n.complete = m.complete;
+  n.steps = m.steps;
+  if (m.steps_to_99) n.steps_to_99 = *m.steps_to_99;
+  n.planning_rounds = m.planning_rounds;
+  n.explored_fraction = m.explored_fraction;
+  n.ticks_run = m.ticks_run;
+  n.wall_seconds = m.wall_seconds;
+  n.groups = m.groups;
+  n.robots_per_group = m.robots_per_group;
+  n.robots = m.robots;
+  n.traffic_bytes = static_cast<double>(m.traffic.total_bytes);
   for (const std::string& topic : map_topics()) {
-    const json::json_pointer p("/traffic/by_topic/" + topic + "/bytes");
-    if (m.contains(p) && m.at(p).is_number()) n.map_bytes += m.at(p).get<double>();
+    if (auto it = m.traffic.by_topic.find(topic); it != m.traffic.by_topic.end()) n.map_bytes += it->second.bytes;
   }
   // tick_seconds is a scenario field, not a metric.
   const std::string scenario_path = (fs::path(run_dir) / "scenario.pbtxt").string();
@@ -574,20 +562,17 @@ ExperimentPlan plan_from_run_dirs(const std::vector<std::string>& run_dirs) {
   std::set<std::uint64_t> seeds;
   std::vector<std::string> maps, methods;
   for (const std::string& dir : run_dirs) {
-    const std::string path = (fs::path(dir) / "metrics.json").string();
-    std::ifstream in(path);
-    json m;
+    swarm::record::RunMetrics m;
     try {
-      in >> m;
-    } catch (const std::exception&) {
-      throw cfg::ConfigError(dir + " is not a run directory: no readable metrics.json (did the run "
-                                   "finish?)");
+      m = swarm::record::read_metrics((fs::path(dir) / "metrics.json").string());
+    } catch (const swarm::record::MetricsError& e) {
+      throw cfg::ConfigError(dir + " is not a usable run directory: " + e.what());
     }
     ExperimentRun r;
     r.dir = dir;
-    r.map = m.value("map", "");
-    r.method = m.value("mode", "");
-    r.seed = m.value("seed", std::uint64_t{0});
+    r.map = m.map;
+    r.method = m.mode;
+    r.seed = m.seed;
     r.status = RunStatus::kOk;
     seeds.insert(r.seed);
     if (std::find(maps.begin(), maps.end(), r.map) == maps.end()) maps.push_back(r.map);

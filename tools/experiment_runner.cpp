@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "swarm/record/record.hpp"
+#include "swarm/record/metrics.hpp"
 #include "swarm/record/render.hpp"
 
 namespace swarm::tools {
@@ -23,9 +24,8 @@ void draw_pictures(RunOutcome& o) {
     const std::string map_png = (fs::path(o.run_dir) / "map.png").string();
     swarm::record::render_map_png(frames, map_png);
     o.pictures.push_back(map_png);
-    std::ifstream in(fs::path(o.run_dir) / "metrics.json");
-    const auto metrics = nlohmann::json::parse(in);
-    const std::uint32_t tick = middle_tick(metrics.value("steps", 0.0));
+    const auto metrics = swarm::record::read_metrics((fs::path(o.run_dir) / "metrics.json").string());
+    const std::uint32_t tick = middle_tick(metrics.steps);
     const std::string frontier_png =
         (fs::path(o.run_dir) / ("frontiers-" + std::to_string(tick) + ".png")).string();
     swarm::record::render_frontier_png(frames, tick, frontier_png);

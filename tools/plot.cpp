@@ -119,6 +119,15 @@ double value_top(const PlotSeries& s, std::size_t i) {
   return v + std::max(0.0, e);
 }
 
+// The largest value + error over the first n values of every series.
+double largest_top(const std::vector<PlotSeries>& series, std::size_t n) {
+  double top = 0;
+  for (const auto& s : series) {
+    for (std::size_t i = 0; i < s.values.size() && i < n; ++i) top = std::max(top, value_top(s, i));
+  }
+  return top;
+}
+
 struct Frame {
   cv::Rect area;  // the plot area in image pixels
   AxisTicks ticks;
@@ -173,12 +182,7 @@ double error_at(const PlotSeries& s, std::size_t i) {
 }
 
 void draw_panel(cv::Mat& img, const cv::Rect& panel, const BarPanel& p) {
-  double max_value = 0;
-  for (const auto& s : p.series) {
-    for (std::size_t i = 0; i < s.values.size() && i < p.groups.size(); ++i) {
-      max_value = std::max(max_value, value_top(s, i));
-    }
-  }
+  const double max_value = largest_top(p.series, p.groups.size());
   const Frame f = draw_axes(img, panel, p.title, p.y_label, p.x_label, max_value, p.y_max);
   const int groups = std::max<int>(1, static_cast<int>(p.groups.size()));
   const double group_w = static_cast<double>(f.area.width) / groups;
@@ -216,12 +220,7 @@ void draw_panel(cv::Mat& img, const cv::Rect& panel, const BarPanel& p) {
 }
 
 void draw_panel(cv::Mat& img, const cv::Rect& panel, const LinePanel& p) {
-  double max_value = 0;
-  for (const auto& s : p.series) {
-    for (std::size_t i = 0; i < s.values.size() && i < p.x_ticks.size(); ++i) {
-      max_value = std::max(max_value, value_top(s, i));
-    }
-  }
+  const double max_value = largest_top(p.series, p.x_ticks.size());
   const Frame f = draw_axes(img, panel, p.title, p.y_label, p.x_label, max_value, p.y_max);
   const int n = std::max<int>(1, static_cast<int>(p.x_ticks.size()));
   const double step = static_cast<double>(f.area.width) / n;
@@ -272,9 +271,95 @@ void draw_panel(cv::Mat& img, const cv::Rect& panel, const LinePanel& p) {
   }
 }
 
+void draw_panel(cv::Mat& img, const cv::Rect& panel, const CurvePanel& p) {
+  const double max_value = largest_top(p.series, p.x.size());
+  const Frame f = draw_axes(img, panel, p.title, p.y_label, p.x_label, max_value, p.y_max);
+  const AxisTicks xt = nice_ticks(p.x.empty() ? 1.0 : std::max(p.x.back(), 1e-9));
+  const auto x_of = [&](double v) {
+    return f.area.x + static_cast<int>(std::lround(std::clamp(v / xt.top, 0.0, 1.0) * f.area.width));
+  };
+  for (int k = 0;; ++k) {
+    const double v = k * xt.step;
+    if (v > xt.top + xt.step * 1e-6) break;
+    const int x = x_of(v);
+    cv::line(img, {x, f.area.y + f.area.height}, {x, f.area.y + f.area.height + 5}, kAxis, 1);
+    put_centred(img, tick_label(v, xt.step), x, f.area.y + f.area.height + 22, kTickScale);
+  }
+  for (const PlotSeries& s : p.series) {
+    std::vector<cv::Point> line, upper, lower;
+    for (std::size_t i = 0; i < s.values.size() && i < p.x.size(); ++i) {
+      if (!std::isfinite(s.values[i])) continue;
+      const int x = x_of(p.x[i]);
+      line.push_back({x, f.y_of(std::max(0.0, s.values[i]))});
+      const double e = error_at(s, i);
+      if (std::isfinite(e) && e > 0) {
+        upper.push_back({x, f.y_of(s.values[i] + e)});
+        lower.push_back({x, f.y_of(std::max(0.0, s.values[i] - e))});
+      }
+    }
+    if (upper.size() >= 2) {
+      std::vector<cv::Point> band = upper;
+      band.insert(band.end(), lower.rbegin(), lower.rend());
+      cv::Mat overlay = img.clone();
+      cv::fillPoly(overlay, std::vector<std::vector<cv::Point>>{band}, bgr(s.colour), cv::LINE_AA);
+      cv::addWeighted(overlay, 0.18, img, 0.82, 0, img);
+    }
+    if (line.size() >= 2) cv::polylines(img, line, false, bgr(s.colour), 2, cv::LINE_AA);
+  }
+  for (std::size_t m = 0; m < p.marks.size(); ++m) {
+    const int x = x_of(p.marks[m].x);
+    for (int y = f.area.y; y < f.area.y + f.area.height; y += 8) {
+      cv::line(img, {x, y}, {x, std::min(y + 4, f.area.y + f.area.height)}, kAxis, 1);
+    }
+    put(img, p.marks[m].label, x + 4, f.area.y + 14 + 16 * static_cast<int>(m), kTickScale);
+  }
+}
+
+void draw_panel(cv::Mat& img, const cv::Rect& panel, const BoxPanel& p) {
+  std::vector<std::vector<BoxStats>> stats(p.series.size());
+  double max_value = 0;
+  for (std::size_t s = 0; s < p.series.size(); ++s) {
+    for (std::size_t g = 0; g < p.groups.size(); ++g) {
+      stats[s].push_back(box_stats(g < p.series[s].samples.size() ? p.series[s].samples[g] : std::vector<double>{}));
+      const BoxStats& b = stats[s].back();
+      if (b.n > 0) max_value = std::max({max_value, b.high, b.outliers.empty() ? 0.0 : b.outliers.back()});
+    }
+  }
+  const Frame f = draw_axes(img, panel, p.title, p.y_label, p.x_label, max_value, p.y_max);
+  const int groups = std::max<int>(1, static_cast<int>(p.groups.size()));
+  const double group_w = static_cast<double>(f.area.width) / groups;
+  const int n = std::max<int>(1, static_cast<int>(p.series.size()));
+  const double box_w = group_w * 0.8 / n;
+  auto y_of = [&](double v) { return f.y_of(std::clamp(v, 0.0, f.ticks.top)); };
+  for (int g = 0; g < static_cast<int>(p.groups.size()); ++g) {
+    const double g0 = f.area.x + g * group_w + group_w * 0.1;
+    for (int s = 0; s < static_cast<int>(p.series.size()); ++s) {
+      const BoxStats& b = stats[s][g];
+      if (b.n == 0) continue;
+      const cv::Scalar colour = bgr(p.series[s].colour);
+      const int x0 = static_cast<int>(std::lround(g0 + s * box_w + box_w * 0.12));
+      const int x1 = static_cast<int>(std::lround(g0 + (s + 1) * box_w - box_w * 0.12));
+      const int xm = (x0 + x1) / 2;
+      cv::line(img, {xm, y_of(b.high)}, {xm, y_of(b.q3)}, kErrorBar, 1, cv::LINE_AA);
+      cv::line(img, {xm, y_of(b.q1)}, {xm, y_of(b.low)}, kErrorBar, 1, cv::LINE_AA);
+      cv::line(img, {xm - (x1 - x0) / 4, y_of(b.high)}, {xm + (x1 - x0) / 4, y_of(b.high)}, kErrorBar, 1);
+      cv::line(img, {xm - (x1 - x0) / 4, y_of(b.low)}, {xm + (x1 - x0) / 4, y_of(b.low)}, kErrorBar, 1);
+      const cv::Rect box(cv::Point(x0, y_of(b.q3)), cv::Point(x1, y_of(b.q1) + 1));
+      cv::rectangle(img, box, colour, cv::FILLED);
+      cv::rectangle(img, box, kErrorBar, 1);
+      cv::line(img, {x0, y_of(b.median)}, {x1, y_of(b.median)}, cv::Scalar(255, 255, 255), 2);
+      for (double o : b.outliers) cv::circle(img, {xm, y_of(o)}, 3, colour, 1, cv::LINE_AA);
+    }
+    const int centre = static_cast<int>(std::lround(f.area.x + (g + 0.5) * group_w));
+    cv::line(img, {centre, f.area.y + f.area.height}, {centre, f.area.y + f.area.height + 5}, kAxis, 1);
+    put_centred(img, p.groups[g], centre, f.area.y + f.area.height + 24, kLabelScale,
+                static_cast<int>(group_w) - 4);
+  }
+}
+
 void draw_legend(cv::Mat& img, const Figure& figure, int y) {
   std::vector<std::pair<std::string, Colour>> entries;
-  auto add = [&](const std::vector<PlotSeries>& series) {
+  auto add = [&](const auto& series) {
     for (const auto& s : series) {
       const bool seen = std::any_of(entries.begin(), entries.end(),
                                     [&](const auto& e) { return e.first == s.name; });
@@ -315,6 +400,39 @@ AxisTicks nice_ticks(double max_value) {
   t.top = std::ceil(max_value * 1.04 / step - 1e-9) * step;
   if (t.top < max_value) t.top += step;
   return t;
+}
+
+BoxStats box_stats(std::vector<double> samples) {
+  BoxStats b;
+  samples.erase(std::remove_if(samples.begin(), samples.end(), [](double v) { return !std::isfinite(v); }),
+                samples.end());
+  std::sort(samples.begin(), samples.end());
+  b.n = samples.size();
+  if (b.n == 0) {
+    b.q1 = b.median = b.q3 = b.low = b.high = std::nan("");
+    return b;
+  }
+  auto quantile = [&](double p) {
+    const double h = (b.n - 1) * p;
+    const std::size_t lo = static_cast<std::size_t>(std::floor(h));
+    const std::size_t hi = std::min(lo + 1, b.n - 1);
+    return samples[lo] + (h - lo) * (samples[hi] - samples[lo]);
+  };
+  b.q1 = quantile(0.25);
+  b.median = quantile(0.5);
+  b.q3 = quantile(0.75);
+  const double reach = 1.5 * (b.q3 - b.q1);
+  b.low = b.q1;
+  b.high = b.q3;
+  for (double v : samples) {
+    if (v < b.q1 - reach || v > b.q3 + reach) {
+      b.outliers.push_back(v);
+    } else {
+      b.low = std::min(b.low, v);
+      b.high = std::max(b.high, v);
+    }
+  }
+  return b;
 }
 
 void write_figure_png(const Figure& figure, const std::string& png_path) {

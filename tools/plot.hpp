@@ -1,5 +1,6 @@
 // Charts for experiment results, drawn with OpenCV into PNG files: grouped bar charts with error
-// bars and line charts with error bars, one or more panels side by side under one title and one
+// bars, line charts with error bars, curves over a numeric x axis (coverage over time) and grouped
+// box plots, one or more panels side by side under one title and one
 // legend (the legend lists every series name once, in first-seen order, so panels that plot the
 // same methods share it).
 //
@@ -56,7 +57,43 @@ struct LinePanel {
   double y_max = 0;                  // > 0: the y axis ends here; 0 = from the values
 };
 
-using Panel = std::variant<BarPanel, LinePanel>;
+// Curves over a numeric x axis (e.g. coverage over time): every series has one value per entry of
+// `x` (shared, increasing), drawn as a plain line (no markers); errors, if given, as a light band
+// (value - error .. value + error). The x axis runs from 0 to a nice value >= x.back() with ticks
+// from nice_ticks. Each mark is a dashed vertical line with its label at the top.
+struct CurvePanel {
+  std::string title;
+  std::string y_label;
+  std::string x_label;
+  std::vector<double> x;
+  std::vector<PlotSeries> series;
+  double y_max = 0;  // > 0: the y axis ends here; 0 = from the values
+  struct Mark {
+    double x = 0;
+    std::string label;
+  };
+  std::vector<Mark> marks;
+};
+
+// Box plots (Tukey): per group one box per series, from the lower to the upper quartile with a
+// line at the median, whiskers to the furthest sample within 1.5 box lengths of the box, and
+// the samples beyond as small circles (the DARP paper's Fig. 8/9).
+struct BoxSeries {
+  std::string name;  // the legend entry
+  Colour colour;
+  std::vector<std::vector<double>> samples;  // one set per group (non-finite samples are ignored)
+};
+
+struct BoxPanel {
+  std::string title;
+  std::string y_label;
+  std::vector<std::string> groups;  // x tick labels
+  std::vector<BoxSeries> series;
+  std::string x_label;
+  double y_max = 0;  // > 0: the y axis ends here; 0 = from the samples
+};
+
+using Panel = std::variant<BarPanel, LinePanel, CurvePanel, BoxPanel>;
 
 inline constexpr int kFigureBandPx = 72;  // title + legend rows above the panels
 
@@ -82,5 +119,15 @@ struct AxisTicks {
   double top = 1;
 };
 [[nodiscard]] AxisTicks nice_ticks(double max_value);
+
+// What a box shows. Quartiles interpolate linearly between order statistics (the usual "type 7":
+// q = x[(n - 1) p]); n == 0 gives NaNs.
+struct BoxStats {
+  std::size_t n = 0;
+  double q1 = 0, median = 0, q3 = 0;
+  double low = 0, high = 0;       // whisker ends: extreme samples within 1.5 IQR of the box
+  std::vector<double> outliers;  // samples beyond the whiskers, ascending
+};
+[[nodiscard]] BoxStats box_stats(std::vector<double> samples);
 
 }  // namespace swarm::tools

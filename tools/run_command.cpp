@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "swarm/record/metrics.hpp"
 #include "swarm/record/record.hpp"
 #include "swarm/record/render.hpp"
 
@@ -49,15 +50,6 @@ std::optional<std::pair<double, double>> parse_xy(const std::string& text) {
   return std::make_pair(*x, *y);
 }
 
-
-// The number at a JSON pointer ("/traffic/total/bytes"); nullopt if absent, null or not a number.
-std::optional<double> number_at(const nlohmann::json& root, const char* pointer) {
-  const nlohmann::json::json_pointer ptr(pointer);
-  if (!root.contains(ptr)) return std::nullopt;
-  const nlohmann::json& v = root.at(ptr);
-  if (!v.is_number()) return std::nullopt;
-  return v.get<double>();
-}
 
 void write_text_file(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
@@ -133,6 +125,13 @@ void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o) {
   if (o.groups) s.set_groups(*o.groups);
   if (o.robots_per_group) s.set_robots_per_group(*o.robots_per_group);
   if (o.mode) s.mutable_explore()->set_mode(cfg::parse_mode(*o.mode));
+  if (!o.mission.empty()) {
+    try {
+      cfg::set_mission(s, o.mission);
+    } catch (const cfg::ConfigError& e) {
+      throw cfg::ConfigError(std::string("--mission: ") + e.what());
+    }
+  }
   if (o.seed) s.set_seed(*o.seed);
   if (o.max_ticks) s.set_max_ticks(*o.max_ticks);
   if (o.realtime) s.set_realtime(*o.realtime);
@@ -288,69 +287,44 @@ std::vector<std::string> last_lines(const std::string& path, int n) {
 }
 
 std::string summarize_metrics(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open " + path);
-  nlohmann::json j;
-  try {
-    in >> j;
-  } catch (const std::exception& e) {
-    throw std::runtime_error(path + " is not valid JSON: " + e.what());
-  }
+  const swarm::record::RunMetrics m = swarm::record::read_metrics(path);  // throws, naming the key
   std::ostringstream o;
-  char buf[160];
-  // The keys the GCS writes (gcs/src/gcs_node.cpp).
-  const auto steps = number_at(j, "/steps");
-  const auto steps99 = number_at(j, "/steps_to_99");
-  const auto rounds = number_at(j, "/planning_rounds");
-  auto explored = number_at(j, "/explored_fraction");
-  if (explored) *explored *= 100.0;
-  const auto wall = number_at(j, "/wall_seconds");
-  auto tps = number_at(j, "/ticks_per_second");
-  if (!tps) {
-    const auto ticks = number_at(j, "/ticks_run");
-    if (ticks && wall && *wall > 0) tps = *ticks / *wall;
-  }
-  const auto bytes = number_at(j, "/traffic/total/bytes");
-  const auto messages = number_at(j, "/traffic/total/messages");
-
-  if (j.contains("complete") && j["complete"].is_boolean()) {
-    o << (j["complete"].get<bool>() ? "  complete: the whole map was explored\n"
-                                     : "  INCOMPLETE: stopped at --max-ticks\n");
-  }
-  if (steps) {
-    std::snprintf(buf, sizeof buf, "  steps            %.0f", *steps);
+  char buf[200];
+  o << (m.complete ? "  complete: the mission's every phase is done\n" : "  INCOMPLETE: stopped at --max-ticks\n");
+  std::snprintf(buf, sizeof buf, "  steps            %u", m.steps);
+  o << buf;
+  if (m.steps_to_99) {
+    std::snprintf(buf, sizeof buf, " (99 %% explored at step %u)", *m.steps_to_99);
     o << buf;
-    if (steps99) {
-      std::snprintf(buf, sizeof buf, " (99 %% explored at step %.0f)", *steps99);
+  }
+  o << "\n";
+  for (const auto& p : m.phases) {
+    std::snprintf(buf, sizeof buf, "  phase %-10s ticks %u-%s%s", p.name.c_str(), p.start_tick,
+                  p.end_tick ? std::to_string(*p.end_tick).c_str() : "", p.complete ? "" : " (not complete)");
+    o << buf;
+    // The task's ground-truth headline, as the simulator judged it.
+    if (p.task.contains("covered_fraction") && p.task["covered_fraction"].is_number()) {
+      std::snprintf(buf, sizeof buf, ", covered %.1f %% (ground truth)", 100.0 * p.task["covered_fraction"].get<double>());
       o << buf;
     }
-    o << "\n";
+    std::snprintf(buf, sizeof buf, ", %llu conflicts", static_cast<unsigned long long>(p.motion.vertex_conflict_events +
+                                                                                       p.motion.edge_conflict_events));
+    o << buf << "\n";
   }
-  if (rounds) {
-    std::snprintf(buf, sizeof buf, "  planning rounds  %.0f\n", *rounds);
-    o << buf;
-  }
-  if (explored) {
-    std::snprintf(buf, sizeof buf, "  explored         %.1f %%\n", *explored);
-    o << buf;
-  }
-  if (wall) {
-    std::snprintf(buf, sizeof buf, "  wall time        %.1f s", *wall);
-    o << buf;
-    if (tps) {
-      std::snprintf(buf, sizeof buf, " (%.1f ticks/s)", *tps);
-      o << buf;
-    }
-    o << "\n";
-  }
-  if (bytes) {
-    o << "  traffic          " << format_bytes(*bytes);
-    if (messages) {
-      std::snprintf(buf, sizeof buf, " in %.0f messages", *messages);
-      o << buf;
-    }
-    o << "\n";
-  }
+  std::snprintf(buf, sizeof buf, "  planning rounds  %u\n", m.planning_rounds);
+  o << buf;
+  std::snprintf(buf, sizeof buf, "  explored         %.1f %%\n", 100.0 * m.explored_fraction);
+  o << buf;
+  std::snprintf(buf, sizeof buf, "  conflicts        %llu vertex, %llu edge, %llu blocked moves, %llu wall stops\n",
+                static_cast<unsigned long long>(m.motion.vertex_conflict_events),
+                static_cast<unsigned long long>(m.motion.edge_conflict_events),
+                static_cast<unsigned long long>(m.motion.total.blocked_moves),
+                static_cast<unsigned long long>(m.motion.total.wall_stops));
+  o << buf;
+  std::snprintf(buf, sizeof buf, "  wall time        %.1f s (%.1f ticks/s)\n", m.wall_seconds, m.ticks_per_second);
+  o << buf;
+  std::snprintf(buf, sizeof buf, " in %llu messages\n", static_cast<unsigned long long>(m.traffic.total_messages));
+  o << "  traffic          " << format_bytes(static_cast<double>(m.traffic.total_bytes)) << buf;
   return o.str();
 }
 

@@ -38,6 +38,7 @@ struct RunOverrides {
   std::optional<std::uint32_t> groups;
   std::optional<std::uint32_t> robots_per_group;
   std::optional<std::string> mode;  // group-frontier | baseline | ideal
+  std::vector<std::string> mission;  // --mission explore,cover: the phases, with default settings
   std::optional<std::uint64_t> seed;
   std::optional<std::uint32_t> max_ticks;
   std::optional<bool> realtime;          // --realtime: ticks at a wall rate, delays in ms

@@ -7,14 +7,17 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "darp_cli.hpp"
 #include "experiment_command.hpp"
+#include "offline_cli.hpp"
+#include "mapf_cli.hpp"
 #include "run_command.hpp"
 
 int main(int argc, char** argv) {
   using namespace swarm::tools;
   CLI::App app{
       "swarm: multi-robot exploration over DDS: run a swarm, run experiments, draw, report, "
-      "benchmark"};
+      "benchmark, divide areas (darp)"};
   app.require_subcommand(1);
 
   RunOptions run;
@@ -30,12 +33,15 @@ int main(int argc, char** argv) {
   run_cmd->add_option("scenario", run.scenario_path, "The scenario file, as --scenario")
       ->excludes(scenario_opt);
   auto* map_opt = run_cmd->add_option(
-      "--map", map, "Built-in map (open, maze1, maze2, small) or a map_server YAML file");
+      "--map", map, "Built-in map (open, maze1, maze2, small, warehouse-5x8) or a map_server YAML file");
   auto* start_opt = run_cmd->add_option("--start", start, "Start point X,Y in metres (map frame)");
   auto* groups_opt = run_cmd->add_option("--groups", groups, "Number of groups");
   auto* robots_opt =
       run_cmd->add_option("--robots-per-group", robots, "Robots per group, leader included");
   auto* mode_opt = run_cmd->add_option("--mode", mode, "group-frontier | baseline | ideal");
+  run_cmd->add_option("--mission", o.mission,
+                      "The mission's phases in order, e.g. explore,cover (default: the scenario's; explore alone)")
+      ->delimiter(',');
   auto* seed_opt = run_cmd->add_option("--seed", seed, "Random seed");
   auto* ticks_opt = run_cmd->add_option("--max-ticks", max_ticks, "Stop, incomplete, at this tick");
   bool realtime = false;
@@ -70,7 +76,7 @@ int main(int argc, char** argv) {
 
   CLI::App* bench_cmd =
       app.add_subcommand("bench", "Benchmarks: ray casting rays/s, A*, and the default mission's ticks/s "
-                         "([planner|mission] [Google Benchmark flags])");
+                         "([planner|mission|tour|mapf|darp] [Google Benchmark flags])");
   bench_cmd->prefix_command();
 
   // `swarm experiment KIND`: one subcommand per kind, the same flags on each.
@@ -104,7 +110,7 @@ int main(int argc, char** argv) {
     for (const auto& m : default_maps(e.kind)) maps += (maps.empty() ? "" : ",") + m;
     for (const auto& m : default_methods(e.kind)) methods += (methods.empty() ? "" : ",") + m;
     c->add_option("--maps", e.maps,
-                  "Comma-separated built-in maps (open, maze1, maze2, small) or YAML files; "
+                  "Comma-separated built-in maps (open, maze1, maze2, small, warehouse-5x8) or YAML files; "
                   "default " + maps)
         ->delimiter(',');
     c->add_option("--methods", e.methods,
@@ -121,6 +127,13 @@ int main(int argc, char** argv) {
         ->check(CLI::NonNegativeNumber);
   }
 
+  const auto mapf = add_mapf_cli(app);
+  const auto experiment_mapf = add_experiment_mapf_cli(experiment_cmd);
+  DarpOptions darp;
+  CLI::App* darp_cmd = add_darp(app, darp);
+  DarpExperimentOptions darp_experiment;
+  CLI::App* darp_experiment_cmd = add_experiment_darp(*experiment_cmd, darp_experiment);
+
   ReportOptions report;
   CLI::App* report_cmd = app.add_subcommand(
       "report", "Rebuild an experiment's (or run directories') tables and plots without re-running");
@@ -131,12 +144,15 @@ int main(int argc, char** argv) {
                          "Where to write; default the experiment directory, or "
                          "runs/report-<time> for run directories");
 
+  const OfflineCommands offline(app, *experiment_cmd);  // tour, clean, experiment tour / clean
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;  // prints the help, or the error
   }
 
+  if (const std::optional<int> status = offline.run(std::cout, std::cerr)) return *status;
   if (run_cmd->parsed()) {
     if (map_opt->count()) o.map = map;
     if (start_opt->count()) o.start = start;
@@ -154,6 +170,8 @@ int main(int argc, char** argv) {
     if (tick_opt->count()) render.tick = tick;
     return render_command(render, std::cout, std::cerr);
   }
+  if (darp_cmd->parsed()) return darp_command(darp, std::cout, std::cerr);
+  if (darp_experiment_cmd->parsed()) return experiment_darp_command(darp_experiment, std::cout, std::cerr);
   for (std::size_t k = 0; k < kinds.size(); ++k) {
     if (!kind_cmd[k]->parsed()) continue;
     ExperimentOptions& e = experiment[k];
@@ -163,5 +181,7 @@ int main(int argc, char** argv) {
     return experiment_command(e, std::cout, std::cerr);
   }
   if (report_cmd->parsed()) return report_command(report, std::cout, std::cerr);
+  if (mapf->parsed()) return mapf_command(mapf->resolved(), std::cout, std::cerr);
+  if (experiment_mapf->parsed()) return experiment_mapf_command(experiment_mapf->resolved(), std::cout, std::cerr);
   return bench_command(executable_dir(), bench_cmd->remaining(), std::cerr);
 }

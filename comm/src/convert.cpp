@@ -43,6 +43,10 @@ std::vector<std::optional<planner::Cell>> optional_cells_from_xy(const std::vect
   return cells;
 }
 
+planner::RouteProgress route_progress(const msgs::Sense& s) {
+  return {s.route_id(), s.route_step(), static_cast<planner::RouteState>(s.route_state())};
+}
+
 planner::PatchEncoding patch_encoding(int scenario_map_encoding) {
   // The scenario's MapEncoding numbers match planner::PatchEncoding on purpose.
   switch (scenario_map_encoding) {
@@ -79,6 +83,25 @@ std::vector<planner::CellChange> decode_patch(const std::vector<std::uint8_t>& d
   auto changes = planner::decode_changes(data.data(), data.size());
   if (!changes) throw std::runtime_error("received a malformed map patch");
   return *changes;
+}
+
+std::vector<std::uint8_t> encode_mask(const std::vector<std::uint8_t>& mask, int width, int height) {
+  planner::OccupancyGrid g(width, height);
+  for (std::size_t i = 0; i < mask.size() && i < g.size(); ++i) {
+    if (mask[i]) g.set(static_cast<int>(i), planner::CellState::Free);
+  }
+  return planner::encode_grid_rle(g);
+}
+
+std::vector<std::uint8_t> decode_mask(const std::vector<std::uint8_t>& data, int width, int height) {
+  planner::OccupancyGrid g(width, height);
+  if (!planner::decode_grid_rle(data.data(), data.size(), g)) {
+    throw std::runtime_error("a cell set does not decode to " + std::to_string(width) + " x " +
+                             std::to_string(height) + " cells");
+  }
+  std::vector<std::uint8_t> mask(g.size(), 0);
+  for (std::size_t i = 0; i < g.size(); ++i) mask[i] = g.at(static_cast<int>(i)) == planner::CellState::Free;
+  return mask;
 }
 
 }  // namespace swarm::comm

@@ -16,14 +16,14 @@ std::chrono::seconds stall_timeout() {
   return std::chrono::seconds(60);
 }
 
-Mailbox::Mailbox(Participant& participant, const Topology& topology, const LinkTable& links, AgentId self)
-    : participant_(participant),
+Mailbox::Mailbox(Bus& bus, const Topology& topology, const LinkTable& links, AgentId self)
+    : bus_(bus),
       topology_(topology),
       links_(links),
       self_(self),
       link_sender_(links_),
       sent_counts_(topology.agents(), 0) {
-  if (self != topology.gcs()) report_writer_ = std::make_unique<Writer<msgs::AgentReport>>(participant, topic::kReport);
+  if (self != topology.gcs()) report_writer_ = std::make_unique<Writer<msgs::AgentReport>>(bus, topic::kReport);
 }
 
 msgs::AgentReport Mailbox::make_report(const std::string& role, const std::string& extra_json) {
@@ -71,19 +71,31 @@ void Mailbox::arrive(const msgs::Stamp& stamp, std::uint32_t deliver_tick, doubl
                        std::chrono::duration<double, std::milli>(delay_ms));
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    auto& arrivals = stamp.sender() == topology_.sim() ? sim_arrivals_ : agent_arrivals_;
-    arrivals[stamp.tick()] += 1;
+    // Real time waits for nobody, so nothing is counted (the counts would only grow).
+    if (!links_.realtime) (stamp.sender() == topology_.sim() ? sim_arrivals_ : agent_arrivals_).add(stamp.tick());
     if (keep) held_.push_back({deliver_tick, due, order, stamp.sender(), stamp.seq(), std::move(run)});
   }
   arrived_.notify_all();
 }
 
-std::uint64_t Mailbox::arrivals_counted_for(std::uint32_t k) const {
-  // Agents' messages stamped before k, the simulator's stamped up to k (see the file comment).
-  std::uint64_t n = 0;
-  for (auto it = agent_arrivals_.begin(); it != agent_arrivals_.end() && it->first < k; ++it) n += it->second;
-  for (auto it = sim_arrivals_.begin(); it != sim_arrivals_.end() && it->first <= k; ++it) n += it->second;
+std::uint64_t Mailbox::Arrivals::count_before(std::uint32_t k) {
+  if (k > watermark) {
+    for (auto it = by_tick.begin(); it != by_tick.end() && it->first < k; it = by_tick.erase(it)) below += it->second;
+    watermark = k;
+  }
+  std::uint64_t n = below;
+  for (auto it = by_tick.begin(); it != by_tick.end() && it->first < k; ++it) n += it->second;
   return n;
+}
+
+std::size_t Mailbox::arrival_ticks_held() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return agent_arrivals_.by_tick.size() + sim_arrivals_.by_tick.size() + held_.size();
+}
+
+std::uint64_t Mailbox::arrivals_counted_for(std::uint32_t k) {
+  // Agents' messages stamped before k, the simulator's stamped up to k (see the file comment).
+  return agent_arrivals_.count_before(k) + sim_arrivals_.count_before(k + 1);
 }
 
 void Mailbox::deliver_due(std::uint32_t k, std::uint64_t expected) {
@@ -141,6 +153,14 @@ std::vector<std::uint32_t> Mailbox::take_sent_counts() {
   return out;
 }
 
+bool Mailbox::subscribes(const std::string& topic_name) const {
+  return std::any_of(readers_.begin(), readers_.end(), [&](const ReaderEntry& r) { return r.name == topic_name; });
+}
+
+bool Mailbox::advertises(const std::string& topic_name) const {
+  return std::any_of(outlets_.begin(), outlets_.end(), [&](const auto& o) { return o->name() == topic_name; });
+}
+
 bool Mailbox::outlets_matched(std::string* missing) const {
   for (const auto& r : readers_) {
     if (r.matched() < r.writers) {
@@ -181,11 +201,10 @@ void wait_for_discovery(const std::string& who, Pred ready) {
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
-LockstepAgent::LockstepAgent(Participant& participant, const Topology& topology, const LinkTable& links,
-                             AgentId self)
-    : Mailbox(participant, topology, links, self) {
-  done_writer_ = std::make_unique<Writer<msgs::Done>>(participant, topic::kDone, "swarm_heartbeat_writer");
-  clock_reader_ = std::make_unique<Reader<msgs::Clock>>(participant, topic::kClock, [this](msgs::Clock&& c) {
+LockstepAgent::LockstepAgent(Bus& bus, const Topology& topology, const LinkTable& links, AgentId self)
+    : Mailbox(bus, topology, links, self) {
+  done_writer_ = std::make_unique<Writer<msgs::Done>>(bus, topic::kDone, EndpointKind::Heartbeat);
+  clock_reader_ = std::make_unique<Reader<msgs::Clock>>(bus, topic::kClock, [this](msgs::Clock&& c) {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       clocks_.emplace(c.tick(), std::move(c));
@@ -280,50 +299,8 @@ void run_lockstep(LockstepAgent& agent, const std::function<bool(const msgs::Clo
 }
 
 // ---------------------------------------------------------------------------------------------
-// Reads the agents' Done heartbeats and DDS's verdict on their liveliness.
-class LockstepClock::HeartbeatListener : public eprosima::fastdds::dds::DataReaderListener {
- public:
-  HeartbeatListener(LockstepClock& clock, Participant& p) : clock_(clock), participant_(p) {
-    using namespace eprosima::fastdds::dds;
-    auto* t = p.topic<PubSubTypeOf<msgs::Done>::type>(topic::kDone);
-    reader_ = p.subscriber()->create_datareader_with_profile(
-        t, "swarm_heartbeat_reader", this, StatusMask::data_available() << StatusMask::liveliness_changed() << StatusMask::subscription_matched());
-    if (reader_ == nullptr) throw std::runtime_error("cannot create the DDS reader for topic done");
-  }
-  int matched() const {
-    eprosima::fastdds::dds::SubscriptionMatchedStatus status;
-    reader_->get_subscription_matched_status(status);
-    return status.current_count;
-  }
-  ~HeartbeatListener() override {
-    reader_->set_listener(nullptr);
-    participant_.subscriber()->delete_datareader(reader_);
-  }
-  void on_data_available(eprosima::fastdds::dds::DataReader* reader) override {
-    msgs::Done sample;
-    eprosima::fastdds::dds::SampleInfo info;
-    while (reader->take_next_sample(&sample, &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK) {
-      if (info.valid_data) clock_.on_done(std::move(sample), info.publication_handle);
-    }
-  }
-  void on_liveliness_changed(eprosima::fastdds::dds::DataReader*,
-                             const eprosima::fastdds::dds::LivelinessChangedStatus& status) override {
-    if (status.not_alive_count_change > 0) clock_.on_liveliness_lost(status.last_publication_handle);
-  }
-  // A crashed process's writer disappears when its participant's lease runs out.
-  void on_subscription_matched(eprosima::fastdds::dds::DataReader*,
-                               const eprosima::fastdds::dds::SubscriptionMatchedStatus& status) override {
-    if (status.current_count_change < 0) clock_.on_liveliness_lost(status.last_publication_handle);
-  }
-
- private:
-  LockstepClock& clock_;
-  Participant& participant_;
-  eprosima::fastdds::dds::DataReader* reader_ = nullptr;
-};
-
-LockstepClock::LockstepClock(Participant& participant, const Topology& topology, const LinkTable& links)
-    : Mailbox(participant, topology, links, topology.sim()),
+LockstepClock::LockstepClock(Bus& bus, const Topology& topology, const LinkTable& links)
+    : Mailbox(bus, topology, links, topology.sim()),
       from_agents_(topology.agents(), 0),
       ready_(topology.agents(), false),
       from_sim_(topology.agents(), 0),
@@ -331,11 +308,14 @@ LockstepClock::LockstepClock(Participant& participant, const Topology& topology,
       last_heard_(topology.agents(), std::chrono::steady_clock::now()),
       next_undone_(topology.agents(), 0) {
   ready_[topology.sim()] = true;
-  clock_writer_ = std::make_unique<Writer<msgs::Clock>>(participant, topic::kClock);
-  heartbeat_ = std::make_unique<HeartbeatListener>(*this, participant);
+  clock_writer_ = std::make_unique<Writer<msgs::Clock>>(bus, topic::kClock);
+  // The agents' Done heartbeats, and the bus's verdict on their liveliness.
+  heartbeat_ = std::make_unique<Reader<msgs::Done>>(
+      bus, topic::kDone, [this](msgs::Done&& d, WriterId w) { on_done(std::move(d), w); },
+      [this](WriterId w) { on_liveliness_lost(w); }, EndpointKind::Heartbeat);
 }
 
-void LockstepClock::on_done(msgs::Done&& d, const eprosima::fastdds::dds::InstanceHandle_t& writer) {
+void LockstepClock::on_done(msgs::Done&& d, WriterId writer) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (d.agent() >= topology_.agents()) return;
@@ -354,9 +334,13 @@ void LockstepClock::on_done(msgs::Done&& d, const eprosima::fastdds::dds::Instan
     if (d.tick() == kReadyTick) {
       ready_[d.agent()] = true;
     } else {
-      auto& seen = done_[d.tick()];
-      if (seen.empty()) seen.assign(topology_.agents(), false);
-      seen[d.agent()] = true;
+      // A rejoining agent works through the ticks it missed; those are over, so only their
+      // message counts matter, not a done marker that nobody would ever erase.
+      if (d.tick() >= tick_) {
+        auto& seen = done_[d.tick()];
+        if (seen.empty()) seen.assign(topology_.agents(), false);
+        seen[d.agent()] = true;
+      }
       next_undone_[d.agent()] = std::max(next_undone_[d.agent()], d.tick() + 1);
       for (std::size_t a = 0; a < d.sent().size() && a < from_agents_.size(); ++a) from_agents_[a] += d.sent()[a];
       if (d.mission_complete()) complete_ = true;
@@ -365,7 +349,7 @@ void LockstepClock::on_done(msgs::Done&& d, const eprosima::fastdds::dds::Instan
   arrived_.notify_all();
 }
 
-void LockstepClock::on_liveliness_lost(const eprosima::fastdds::dds::InstanceHandle_t& writer) {
+void LockstepClock::on_liveliness_lost(WriterId writer) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     auto it = writer_agent_.find(writer);
@@ -382,6 +366,11 @@ void LockstepClock::on_liveliness_lost(const eprosima::fastdds::dds::InstanceHan
 std::vector<AgentLoss> LockstepClock::losses() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return losses_;
+}
+
+std::size_t LockstepClock::done_ticks_held() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return done_.size();
 }
 
 bool LockstepClock::is_lost(AgentId a) const {
@@ -487,7 +476,7 @@ bool LockstepClock::wait_done(std::uint32_t k) {
     throw std::runtime_error("sim: tick " + std::to_string(k) + " never finished in " +
                              std::to_string(stall_timeout().count()) + " s; waiting for " + missing);
   }
-  done_.erase(k);
+  done_.erase(done_.begin(), done_.upper_bound(k));
   return complete_;
 }
 

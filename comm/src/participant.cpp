@@ -2,11 +2,21 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 
+#include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/publisher/DataWriter.hpp>
+#include <fastdds/dds/publisher/Publisher.hpp>
 #include <fastdds/dds/publisher/qos/PublisherQos.hpp>
+#include <fastdds/dds/subscriber/DataReader.hpp>
+#include <fastdds/dds/subscriber/DataReaderListener.hpp>
+#include <fastdds/dds/subscriber/SampleInfo.hpp>
+#include <fastdds/dds/subscriber/Subscriber.hpp>
 #include <fastdds/dds/subscriber/qos/SubscriberQos.hpp>
+#include <fastdds/dds/topic/Topic.hpp>
+#include <fastdds/dds/topic/TypeSupport.hpp>
 
 namespace swarm::comm {
 
@@ -19,6 +29,97 @@ std::string default_profile_path() {
   const std::string root = (data != nullptr && *data != '\0') ? data : SWARM_SOURCE_DIR;
   return root + "/deploy/fastdds_loopback.xml";
 }
+
+namespace {
+
+const char* writer_profile(EndpointKind kind) {
+  return kind == EndpointKind::Heartbeat ? "swarm_heartbeat_writer" : "swarm_writer";
+}
+const char* reader_profile(EndpointKind kind) {
+  return kind == EndpointKind::Heartbeat ? "swarm_heartbeat_reader" : "swarm_reader";
+}
+
+// A publication handle as the bus's WriterId: the 16-byte GUID folded into 64 bits (the GUID
+// prefix differs per participant, the entity id per writer; collisions are astronomically rare).
+WriterId writer_id(const InstanceHandle_t& h) {
+  std::uint64_t a = 0, b = 0;
+  for (int i = 0; i < 8; ++i) a = (a << 8) | h.value[i];
+  for (int i = 8; i < 16; ++i) b = (b << 8) | h.value[i];
+  return a ^ (b * 0x9e3779b97f4a7c15ULL);
+}
+
+class DdsWriter : public RawWriter {
+ public:
+  DdsWriter(Publisher* publisher, Topic* topic, EndpointKind kind) : publisher_(publisher) {
+    writer_ = publisher->create_datawriter_with_profile(topic, writer_profile(kind));
+    if (writer_ == nullptr) throw std::runtime_error("cannot create a DDS writer for topic " + topic->get_name());
+  }
+  ~DdsWriter() override { publisher_->delete_datawriter(writer_); }
+
+  void write(const void* sample) override {
+    if (!writer_->write(const_cast<void*>(sample))) {
+      throw std::runtime_error("DDS write failed on " + writer_->get_topic()->get_name());
+    }
+  }
+  int matched() const override {
+    PublicationMatchedStatus status;
+    writer_->get_publication_matched_status(status);
+    return status.current_count;
+  }
+  void assert_liveliness() override { writer_->assert_liveliness(); }
+  bool wait_acknowledged(std::chrono::milliseconds timeout) override {
+    eprosima::fastrtps::Duration_t d(static_cast<double>(timeout.count()) / 1000.0);
+    return writer_->wait_for_acknowledgments(d) == ReturnCode_t::RETCODE_OK;
+  }
+
+ private:
+  Publisher* publisher_;
+  DataWriter* writer_ = nullptr;
+};
+
+class DdsReader : public RawReader, private DataReaderListener {
+ public:
+  DdsReader(Subscriber* subscriber, Topic* topic, const MessageType& type, EndpointKind kind, ReaderCallbacks cb)
+      : subscriber_(subscriber), type_(type), cb_(std::move(cb)) {
+    StatusMask mask = StatusMask::data_available();
+    if (cb_.on_writer_lost) mask << StatusMask::liveliness_changed() << StatusMask::subscription_matched();
+    reader_ = subscriber->create_datareader_with_profile(topic, reader_profile(kind), this, mask);
+    if (reader_ == nullptr) throw std::runtime_error("cannot create a DDS reader for topic " + topic->get_name());
+  }
+  ~DdsReader() override {
+    reader_->set_listener(nullptr);
+    subscriber_->delete_datareader(reader_);
+  }
+  int matched() const override {
+    SubscriptionMatchedStatus status;
+    reader_->get_subscription_matched_status(status);
+    return status.current_count;
+  }
+
+ private:
+  void on_data_available(DataReader* reader) override {
+    SampleInfo info;
+    for (;;) {
+      std::shared_ptr<void> sample = type_.new_sample();
+      if (reader->take_next_sample(sample.get(), &info) != ReturnCode_t::RETCODE_OK) break;
+      if (info.valid_data) cb_.on_sample(sample.get(), writer_id(info.publication_handle));
+    }
+  }
+  void on_liveliness_changed(DataReader*, const LivelinessChangedStatus& status) override {
+    if (status.not_alive_count_change > 0) cb_.on_writer_lost(writer_id(status.last_publication_handle));
+  }
+  // A crashed process's writer disappears when its participant's lease runs out.
+  void on_subscription_matched(DataReader*, const SubscriptionMatchedStatus& status) override {
+    if (status.current_count_change < 0) cb_.on_writer_lost(writer_id(status.last_publication_handle));
+  }
+
+  Subscriber* subscriber_;
+  const MessageType& type_;
+  ReaderCallbacks cb_;
+  DataReader* reader_ = nullptr;
+};
+
+}  // namespace
 
 Participant::Participant(const DdsOptions& options) : options_(options) {
   const std::string profile = options.profile_path.empty() ? default_profile_path() : options.profile_path;
@@ -56,14 +157,26 @@ Participant::~Participant() {
   DomainParticipantFactory::get_instance()->delete_participant(participant_);
 }
 
-Topic* Participant::create_topic(const std::string& name, TypeSupport type) {
-  if (participant_->find_type(type.get_type_name()) == nullptr) {
-    type.register_type(participant_);
-  }
-  Topic* t = participant_->create_topic(name, type.get_type_name(), TOPIC_QOS_DEFAULT);
+Topic* Participant::topic(const std::string& name, const MessageType& type) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto it = topics_.find(name);
+  if (it != topics_.end()) return it->second;
+  TypeSupport support(static_cast<TopicDataType*>(type.new_dds_type()));
+  if (participant_->find_type(support.get_type_name()) == nullptr) support.register_type(participant_);
+  Topic* t = participant_->create_topic(name, support.get_type_name(), TOPIC_QOS_DEFAULT);
   if (t == nullptr) throw std::runtime_error("cannot create DDS topic " + name);
   topics_[name] = t;
   return t;
+}
+
+std::unique_ptr<RawWriter> Participant::make_writer(const std::string& name, const MessageType& type,
+                                                    EndpointKind kind) {
+  return std::make_unique<DdsWriter>(publisher_, topic(name, type), kind);
+}
+
+std::unique_ptr<RawReader> Participant::make_reader(const std::string& name, const MessageType& type,
+                                                    EndpointKind kind, ReaderCallbacks callbacks) {
+  return std::make_unique<DdsReader>(subscriber_, topic(name, type), type, kind, std::move(callbacks));
 }
 
 }  // namespace swarm::comm

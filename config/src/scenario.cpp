@@ -395,7 +395,102 @@ void validate(const Scenario& s, const std::string& source) {
 
   for (int i = 0; i < s.faults_size(); ++i) validate_fault(p, s, i);
 
+  for (int i = 0; i < s.mission().phase_size(); ++i) {
+    const auto& ph = s.mission().phase(i);
+    const std::string field = "mission.phase[" + std::to_string(i) + "]";
+    switch (ph.task_case()) {
+      case swarm::scenario::Phase::TASK_NOT_SET:
+        p.add(field, "name its task: explore {}, cover {}, mapf {} or collect {}", "no task");
+        break;
+      case swarm::scenario::Phase::kCover:
+        p.at_least(field + ".cover.darp_max_iterations", 1, ph.cover().darp_max_iterations());
+        p.positive(field + ".cover.darp_time_limit_s", ph.cover().darp_time_limit_s());
+        p.at_least(field + ".cover.stall_ticks", 1, ph.cover().stall_ticks());
+        break;
+      case swarm::scenario::Phase::kMapf:
+        if (ph.mapf().w() < 1.0) p.add(field + ".mapf.w", "be at least 1", num(ph.mapf().w()));
+        p.positive(field + ".mapf.time_limit_s", ph.mapf().time_limit_s());
+        if (ph.mapf().goals_size() > 0 && ph.mapf().has_scen()) {
+          p.add(field + ".mapf", "give goals or scen, not both", "both");
+        }
+        if (ph.mapf().goals_size() > 0 && static_cast<std::uint64_t>(ph.mapf().goals_size()) != robots) {
+          p.add(field + ".mapf.goals", "give one goal per robot (" + std::to_string(robots) + ")",
+                std::to_string(ph.mapf().goals_size()));
+        }
+        break;
+      case swarm::scenario::Phase::kCollect: {
+        const auto& c = ph.collect();
+        p.at_least(field + ".collect.types", 1, c.types());
+        for (int o = 0; o < c.objects_size(); ++o) {
+          if (c.objects(o).type() >= c.types()) {
+            p.add(field + ".collect.objects[" + std::to_string(o) + "].type",
+                  "be below collect.types (" + std::to_string(c.types()) + ")", std::to_string(c.objects(o).type()));
+          }
+        }
+        if (c.destinations_size() > 0 && static_cast<std::uint32_t>(c.destinations_size()) != c.types()) {
+          p.add(field + ".collect.destinations", "give one destination per type (" + std::to_string(c.types()) + ")",
+                std::to_string(c.destinations_size()));
+        }
+        break;
+      }
+      case swarm::scenario::Phase::kExplore:
+        break;
+    }
+  }
+
   p.throw_if_any();
+}
+
+std::string task_name(TaskKind kind) {
+  switch (kind) {
+    case TaskKind::Explore: return "explore";
+    case TaskKind::Cover: return "cover";
+    case TaskKind::Mapf: return "mapf";
+    case TaskKind::Collect: return "collect";
+  }
+  return "?";
+}
+
+TaskKind parse_task(const std::string& name) {
+  for (TaskKind k : {TaskKind::Explore, TaskKind::Cover, TaskKind::Mapf, TaskKind::Collect}) {
+    if (name == task_name(k)) return k;
+  }
+  throw ConfigError("unknown task '" + name + "': expected explore, cover, mapf or collect");
+}
+
+TaskKind task_of(const swarm::scenario::Phase& phase) {
+  switch (phase.task_case()) {
+    case swarm::scenario::Phase::kCover: return TaskKind::Cover;
+    case swarm::scenario::Phase::kMapf: return TaskKind::Mapf;
+    case swarm::scenario::Phase::kCollect: return TaskKind::Collect;
+    default: return TaskKind::Explore;
+  }
+}
+
+std::vector<swarm::scenario::Phase> mission_phases(const Scenario& s) {
+  std::vector<swarm::scenario::Phase> out;
+  for (const auto& ph : s.mission().phase()) out.push_back(ph);
+  if (out.empty()) out.emplace_back().mutable_explore();
+  for (auto& ph : out) {
+    if (!ph.has_explore()) continue;
+    swarm::scenario::Explore merged = s.explore();
+    merged.MergeFrom(ph.explore());
+    *ph.mutable_explore() = merged;
+  }
+  return out;
+}
+
+void set_mission(Scenario& s, const std::vector<std::string>& tasks) {
+  s.clear_mission();
+  for (const std::string& t : tasks) {
+    auto* ph = s.mutable_mission()->add_phase();
+    switch (parse_task(t)) {
+      case TaskKind::Explore: ph->mutable_explore(); break;
+      case TaskKind::Cover: ph->mutable_cover(); break;
+      case TaskKind::Mapf: ph->mutable_mapf(); break;
+      case TaskKind::Collect: ph->mutable_collect(); break;
+    }
+  }
 }
 
 std::string to_text(const Scenario& s) {

@@ -114,7 +114,9 @@ std::string data_dir() {
   return SWARM_SOURCE_DIR;
 }
 
-std::vector<std::string> builtin_map_names() { return {"open", "maze1", "maze2", "small"}; }
+std::vector<std::string> builtin_map_names() {
+  return {"open", "maze1", "maze2", "small", "clutter", "empty", "warehouse-5x8", "terminal", "rectangle"};
+}
 
 std::string resolve_map_path(const std::string& map, const std::string& scenario_dir) {
   const auto names = builtin_map_names();
@@ -159,6 +161,14 @@ World resolve_world(const swarm::scenario::Scenario& scenario, const std::string
     throw ConfigError(w.map_path + ": cannot load the map: " + e.what());
   }
   const OccupancyGrid& g = w.truth;
+  // Cells travel between processes as 16-bit signed coordinates (idl/swarm_msgs.idl): a larger map
+  // would be narrowed on the wire and planned for wrongly, so it is refused here.
+  if (g.width() > kMaxMapSide || g.height() > kMaxMapSide) {
+    throw ConfigError(w.map_path + ": the map is " + std::to_string(g.width()) + " x " + std::to_string(g.height()) +
+                      " cells; at most " + std::to_string(kMaxMapSide) +
+                      " cells per side fit the messages' 16-bit cell coordinates (use a coarser resolution, "
+                      "or cut the map)");
+  }
   if (g.size() == 0) throw ConfigError(w.map_path + ": the map has no cells");
 
   const int robots = static_cast<int>(scenario.groups() * scenario.robots_per_group());

@@ -10,6 +10,8 @@
 #include "swarm/comm/convert.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/planner/map_patch.hpp"
+#include "swarm/record/metrics.hpp"
+#include "swarm/gcs/gcs_task.hpp"
 
 namespace swarm::gcs {
 
@@ -30,12 +32,6 @@ MissionConfig mission_config(const comm::RoleSetup& setup) {
   return c;
 }
 
-// Adds n to obj[key], creating it (and obj) as needed.
-void add(json& obj, const char* key, std::uint64_t n) {
-  if (!obj.is_object()) obj = json::object();
-  obj[key] = obj.value(key, std::uint64_t{0}) + n;
-}
-
 // How many ticks of silence make a leader unreachable. In lockstep a heartbeat sent at t is seen
 // at t + 1 + delay (+ jitter): two ticks of slack. In real time a busy machine delays a process by
 // a few ticks of 40 ms now and then, which is not a cut link: half a second of slack.
@@ -43,16 +39,6 @@ std::uint32_t unreachable_after_ticks(const comm::LinkTable& links) {
   const comm::LinkParams& p = links[LinkClass::LeaderGcs];
   if (!links.realtime) return 3 + p.delay_ticks + p.jitter_ticks;
   return 1 + static_cast<std::uint32_t>(std::ceil((p.delay_ms + 500.0) / links.tick_ms));
-}
-
-record::Frame map_frame(std::uint32_t tick, std::uint32_t round, const planner::OccupancyGrid& map) {
-  record::Frame f;
-  auto* m = f.mutable_map();
-  m->set_tick(tick);
-  m->set_round(round);
-  const auto rle = planner::encode_grid_rle(map);
-  m->set_rle(std::string(rle.begin(), rle.end()));
-  return f;
 }
 
 }  // namespace
@@ -64,10 +50,9 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, const
       run_dir_(run_dir),
       mission_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution(),
                mission_config(setup)),
-      encoding_(comm::patch_encoding(setup.world.scenario.map_encoding())),
+      phases_(config::mission_phases(setup.world.scenario)),
       progress_(progress, setup.world.scenario.max_ticks()),
       record_(record::run_record_path(run_dir)),
-      round_(agent.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, setup.topology.leaders())),
       last_heard_(setup.topology.groups(), 0),
       unreachable_after_ticks_(unreachable_after_ticks(setup.links)),
       unreachable_(setup.topology.groups()),
@@ -79,16 +64,39 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, const
     mission_.fuse(p.group(), comm::decode_patch(p.data()));
   }, comm::Delivery::Reliable, setup.topology.groups());
   agent.subscribe<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs,
-                                     [this](const msgs::GroupStatus& s) { mission_.group_arrived(s.group(), s.round()); },
+                                     [this](const msgs::GroupStatus& s) { statuses_.push_back(s); },
                                      comm::Delivery::Reliable, setup.topology.groups());
+  agent.subscribe<msgs::TaskReport>(topic::kTaskReport, LinkClass::LeaderGcs,
+                                    [this](const msgs::TaskReport& r) { task_reports_.push_back(r); },
+                                    comm::Delivery::Reliable, setup.topology.groups());
   agent.subscribe<msgs::PlanReport>(topic::kPlanReport, LinkClass::Telemetry,
                                     [this](const msgs::PlanReport& p) { on_plan(p); }, comm::Delivery::Reliable,
                                     setup.topology.groups());
   reports_reader_ = std::make_unique<comm::Reader<msgs::AgentReport>>(
-      agent.participant(), topic::kReport, [this](msgs::AgentReport&& r) {
+      agent.bus(), topic::kReport, [this](msgs::AgentReport&& r) {
         std::lock_guard<std::mutex> lock(reports_mutex_);
         reports_[r.agent()] = std::move(r);
       });
+
+  // The mission: one task per phase, each with the topics made here once (DDS discovery must be
+  // complete before tick 0).
+  std::vector<comm::AgentId> leaders_and_sim = setup.topology.leaders();
+  leaders_and_sim.push_back(setup.topology.sim());
+  auto& phase = agent.advertise<msgs::PhaseStart>(topic::kPhase, LinkClass::LeaderGcs, leaders_and_sim);
+  auto& order = agent.advertise<msgs::TaskOrder>(topic::kTaskOrder, LinkClass::LeaderGcs, setup.topology.leaders());
+  auto& round = agent.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, setup.topology.leaders());
+  outlets_.order = [this, &order](msgs::TaskOrder& o) {
+    o.phase(phase_);
+    order.send(o);
+  };
+  outlets_.round = [&round](msgs::RoundStart& r) { round.send(r); };
+  announce_phase_ = [&phase](std::uint32_t index, const std::string& task) {
+    msgs::PhaseStart p;
+    p.phase(index);
+    p.task(task);
+    phase.send(p);
+  };
+  for (std::uint32_t i = 0; i < phases_.size(); ++i) tasks_.push_back(make_gcs_task(phases_[i], setup, i));
 
   record::Frame header;
   auto* h = header.mutable_header();
@@ -120,6 +128,18 @@ void GcsNode::on_plan(const msgs::PlanReport& p) {
     for (auto v : seg) s->add_xy(v);
   }
   plan->set_chosen_segment(p.chosen_segment());
+  plan->set_phase(phase_);
+  record_.append(f);
+}
+
+void GcsNode::record_phase(std::uint32_t tick, bool ended, bool complete) {
+  record::Frame f;
+  auto* c = f.mutable_phase();
+  c->set_tick(tick);
+  c->set_phase(phase_);
+  c->set_task(config::task_name(config::task_of(phases_[phase_])));
+  c->set_ended(ended);
+  c->set_complete(complete);
   record_.append(f);
 }
 
@@ -132,6 +152,7 @@ bool GcsNode::step(const msgs::Clock& clock) {
   std::vector<planner::Cell> robots;
   record::Frame poses;
   poses.mutable_poses()->set_tick(clock.tick());
+  poses.mutable_poses()->set_phase(phase_);
   for (const auto& r : clock.robots()) {
     robots.push_back({r.x(), r.y()});
     poses.mutable_poses()->add_xy(r.x());
@@ -139,23 +160,35 @@ bool GcsNode::step(const msgs::Clock& clock) {
   }
   record_.append(poses);
 
-  const Mission::Decision d = mission_.tick(clock.tick(), robots);
-  if (d.start_round) {
-    msgs::RoundStart rs;
-    rs.round(*d.start_round);
-    rs.fused_tick(d.map_tick);
-    rs.width(static_cast<std::uint16_t>(d.map->width()));
-    rs.height(static_cast<std::uint16_t>(d.map->height()));
-    rs.encoding(static_cast<std::uint8_t>(encoding_ == planner::PatchEncoding::ZstdRunLength
-                                              ? planner::PatchEncoding::ZstdRunLength
-                                              : planner::PatchEncoding::RunLength));
-    rs.map_rle(comm::encode_map(*d.map, encoding_));
-    round_.send(rs);
-    record::Frame version = map_frame(clock.tick(), *d.start_round, mission_.fused());
-    version.mutable_map()->set_planning_map_tick(d.map_tick);  // names the map rs carries
-    record_.append(version);
+  GcsContext ctx{setup_, phase_, clock, mission_, record_, outlets_};
+  if (phase_starts_.empty()) {
+    phase_starts_.push_back(clock.tick());
+    record_phase(clock.tick(), false, false);
+    tasks_[phase_]->start(ctx);
   }
-  if (d.complete && !complete_tick_) complete_tick_ = clock.tick();
+  for (const auto& st : statuses_) tasks_[phase_]->on_group_status(st, ctx);
+  statuses_.clear();
+  for (const auto& r : task_reports_) {
+    if (r.phase() == phase_) tasks_[phase_]->on_report(r, ctx);
+  }
+  task_reports_.clear();
+  if (!complete_tick_) {
+    tasks_[phase_]->step(ctx);
+    if (tasks_[phase_]->complete()) {
+      phase_ends_.push_back(clock.tick());
+      record_phase(clock.tick(), true, true);
+      if (phase_ + 1 < tasks_.size()) {
+        ++phase_;
+        ctx.phase = phase_;
+        phase_starts_.push_back(clock.tick());
+        announce_phase_(phase_, config::task_name(config::task_of(phases_[phase_])));
+        record_phase(clock.tick(), false, false);
+        tasks_[phase_]->start(ctx);
+      } else {
+        complete_tick_ = clock.tick();
+      }
+    }
+  }
 
   std::string note;
   for (int r = 0; r < setup_.topology.robots(); ++r) {
@@ -167,11 +200,14 @@ bool GcsNode::step(const msgs::Clock& clock) {
     unreachable_.observe(g, silent, last_heard_[g] + 1, clock.tick());
     if (unreachable_.down(g)) note += "leader-" + std::to_string(g) + " unreachable ";
   }
-  progress_.update(clock.tick(), mission_.mapped_fraction(), mission_.round(), mission_.frontier_cells(), note);
-  return d.complete;
+  const ProgressLine line = tasks_[phase_]->progress(ctx);
+  const std::string task = config::task_name(config::task_of(phases_[phase_]));
+  progress_.update(clock.tick(), phases_.size() > 1 ? task + " " + line.label : line.label, line.fraction,
+                   line.detail, note);
+  return complete_tick_.has_value();
 }
 
-void GcsNode::finish() {
+void GcsNode::finish(std::chrono::milliseconds wait) {
   const double wall = std::chrono::duration<double>(last_tick_time_ - first_tick_time_).count();
   // Every agent but the GCS reports once the run has stopped; a robot lost at the end may be
   // dead, so it is not waited for (its report is kept if it comes meanwhile).
@@ -185,7 +221,7 @@ void GcsNode::finish() {
     }
     return true;
   };
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(15);
+  const auto deadline = std::chrono::steady_clock::now() + wait;
   while (!all_living_reported() && std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
@@ -197,113 +233,124 @@ void GcsNode::finish() {
   reports[setup_.topology.gcs()] = agent_.make_report("gcs", "{}");
 
   const auto& s = setup_.world.scenario;
-  const bool complete = complete_tick_.has_value();
-  const std::uint32_t steps = complete ? *complete_tick_ : last_tick_ + 1;
-  json sim_extra = json::object();
-  if (auto it = reports.find(setup_.topology.sim()); it != reports.end()) sim_extra = json::parse(it->second.extra_json());
+  const comm::Topology& t = setup_.topology;
+  // The simulator's report is the ground truth a run is judged by: without it there is no result.
+  const auto sim_it = reports.find(t.sim());
+  if (sim_it == reports.end()) {
+    throw std::runtime_error("no end-of-run report from the simulator (sim) reached the GCS: the run has no "
+                             "ground-truth result; see logs/sim.log");
+  }
+  json sim_json;
+  try {
+    sim_json = json::parse(sim_it->second.extra_json());
+  } catch (const json::exception& e) {
+    throw std::runtime_error(std::string("the simulator's (sim) report is not valid JSON: ") + e.what());
+  }
+  const record::SimReport sim = record::sim_report_from_json(sim_json, "sim");
 
-  json by_topic = json::object(), by_link = json::object(), agents = json::object();
-  std::uint64_t total_messages = 0, total_bytes = 0;
-  json missing = json::array();
-  for (int a = 0; a < setup_.topology.agents(); ++a) {
-    if (!reports.count(static_cast<comm::AgentId>(a))) missing.push_back(setup_.topology.name_of(static_cast<comm::AgentId>(a)));
+  record::RunMetrics m;
+  m.scenario = s.name();
+  m.map = s.map();
+  m.mode = config::mode_name(s.explore().mode());
+  m.seed = s.seed();
+  m.groups = s.groups();
+  m.robots_per_group = s.robots_per_group();
+  m.robots = s.groups() * s.robots_per_group();
+  m.complete = complete_tick_.has_value();
+  m.ticks_run = last_tick_ + 1;
+  m.steps = m.complete ? *complete_tick_ : m.ticks_run;
+  m.steps_to_99 = sim.steps_to_99;
+  m.planning_rounds = mission_.round();
+  m.explored_fraction = sim.explored_fraction;
+  m.wall_seconds = wall;
+  m.ticks_per_second = wall > 0 ? m.ticks_run / wall : 0.0;
+  for (int a = 0; a < t.agents(); ++a) {
+    if (!reports.count(static_cast<comm::AgentId>(a))) m.reports_missing.push_back(t.name_of(static_cast<comm::AgentId>(a)));
   }
   for (const auto& [id, r] : reports) {
-    agents[setup_.topology.name_of(id)] = r.extra_json().empty() ? json::object() : json::parse(r.extra_json());
-    for (const auto& t : r.traffic()) {
-      json& bt = by_topic[t.topic()];
-      add(bt, "messages", t.sent_messages());
-      add(bt, "bytes", t.sent_bytes());
-      add(bt, "received_messages", t.received_messages());
-      add(bt, "lost_transmissions", t.lost_transmissions());
-      add(bt, "dropped_messages", t.dropped_messages());
-      bt["link"] = t.link();
-      json& bl = by_link[t.link()];
-      add(bl, "messages", t.sent_messages());
-      add(bl, "bytes", t.sent_bytes());
-      add(bl, "lost_transmissions", t.lost_transmissions());
-      add(bl, "dropped_messages", t.dropped_messages());
-      total_messages += t.sent_messages();
-      total_bytes += t.sent_bytes();
+    try {
+      m.agents[t.name_of(id)] = r.extra_json().empty() ? json::object() : json::parse(r.extra_json());
+    } catch (const json::exception& e) {
+      throw std::runtime_error("the report of " + t.name_of(id) + " is not valid JSON: " + e.what());
+    }
+    for (const auto& tt : r.traffic()) {
+      record::TopicTraffic& bt = m.traffic.by_topic[tt.topic()];
+      bt.link = tt.link();
+      bt.messages += tt.sent_messages();
+      bt.bytes += tt.sent_bytes();
+      bt.received_messages += tt.received_messages();
+      bt.lost_transmissions += tt.lost_transmissions();
+      bt.dropped_messages += tt.dropped_messages();
+      record::LinkTraffic& bl = m.traffic.by_link[tt.link()];
+      bl.messages += tt.sent_messages();
+      bl.bytes += tt.sent_bytes();
+      bl.lost_transmissions += tt.lost_transmissions();
+      bl.dropped_messages += tt.dropped_messages();
+      m.traffic.total_messages += tt.sent_messages();
+      m.traffic.total_bytes += tt.sent_bytes();
     }
   }
-  const auto tick_or_null = [](const std::optional<std::uint32_t>& t) { return t ? json(*t) : json(nullptr); };
-  json unreachable = json::array();
   for (const auto& o : unreachable_.intervals()) {
-    unreachable.push_back(
-        {{"agent", "leader-" + std::to_string(o.who)}, {"from_tick", o.from}, {"to_tick", o.to.value_or(last_tick_ + 1)}});
+    m.unreachable.push_back({"leader-" + std::to_string(o.who), o.from, o.to.value_or(last_tick_ + 1)});
   }
   // The GCS saw each loss in the clock's robot states; the simulator knows when the agent went
   // silent and how long DDS took to say so. The n-th loss of an agent is the n-th on both sides.
-  json agents_lost = json::array();
   std::map<std::string, std::size_t> seen;
-  const json sim_losses = sim_extra.value("agents_lost", json::array());
   for (const auto& o : robots_lost_.intervals()) {
-    const std::string name = setup_.topology.name_of(static_cast<comm::AgentId>(o.who));
-    json entry = {{"agent", name}, {"marked_lost_at_tick", o.from}, {"rejoined_at_tick", tick_or_null(o.to)}};
-    const std::size_t nth = seen[name]++;
+    record::AgentLost lost{t.name_of(static_cast<comm::AgentId>(o.who)), o.from, o.to, std::nullopt, std::nullopt};
+    const std::size_t nth = seen[lost.agent]++;
     std::size_t i = 0;
-    for (const auto& l : sim_losses) {
-      if (l.value("agent", "") != name) continue;
-      if (i++ < nth) continue;
-      entry["stopped_answering_at_tick"] = l["missed_tick"];
-      entry["detection_seconds"] = l["detection_seconds"];
+    for (const auto& l : sim.agents_lost) {
+      if (l.agent != lost.agent || i++ < nth) continue;
+      lost.stopped_answering_at_tick = l.missed_tick;
+      lost.detection_seconds = l.detection_seconds;
       break;
     }
-    agents_lost.push_back(entry);
+    m.agents_lost.push_back(lost);
   }
-  json rounds = json::array();
   for (std::size_t i = 0; i < mission_.round_ticks().size(); ++i) {
-    rounds.push_back({{"round", i + 1}, {"tick", mission_.round_ticks()[i]}});
+    m.rounds.emplace_back(static_cast<std::uint32_t>(i + 1), mission_.round_ticks()[i]);
   }
-  double planning_seconds = 0;
-  for (int g = 0; g < setup_.topology.groups(); ++g) {
-    const auto it = agents.find(setup_.topology.name_of(setup_.topology.leader(g)));
-    if (it != agents.end() && it->is_object()) planning_seconds += it->value("planning_seconds", 0.0);
+  for (int g = 0; g < t.groups(); ++g) {
+    const auto it = m.agents.find(t.name_of(t.leader(g)));
+    if (it != m.agents.end() && it->second.is_object()) m.planning_seconds_total += it->second.value("planning_seconds", 0.0);
   }
-  const std::uint32_t ticks_run = last_tick_ + 1;
-  json metrics = {
-      {"scenario", s.name()},
-      {"map", s.map()},
-      {"mode", config::mode_name(s.explore().mode())},
-      {"seed", s.seed()},
-      {"groups", s.groups()},
-      {"robots_per_group", s.robots_per_group()},
-      {"robots", s.groups() * s.robots_per_group()},
-      {"steps", steps},
-      {"steps_to_99", sim_extra.contains("steps_to_99") ? sim_extra["steps_to_99"] : json(nullptr)},
-      {"planning_rounds", mission_.round()},
-      {"explored_fraction", sim_extra.value("explored_fraction", 0.0)},
-      {"complete", complete},
-      {"ticks_run", ticks_run},
-      {"wall_seconds", wall},
-      {"ticks_per_second", wall > 0 ? ticks_run / wall : 0.0},
-      {"traffic", {{"by_topic", by_topic}, {"by_link", by_link}, {"total", {{"messages", total_messages}, {"bytes", total_bytes}}}}},
-      {"rounds", rounds},
-      {"explored_curve", sim_extra.value("explored_curve", json::array())},
-      {"timings", {{"planning_seconds_total", planning_seconds},
-                   {"planning_ms_per_group_round",
-                    mission_.round() > 0 ? 1000.0 * planning_seconds / (mission_.round() * setup_.topology.groups()) : 0.0}}},
-      {"faults", {{"agents_lost", agents_lost}, {"unreachable", unreachable}}},
-      {"agents", agents},
-      {"reports_missing", missing}};
-  std::ofstream(run_dir_ + "/metrics.json") << metrics.dump(2) << "\n";
+  m.planning_ms_per_group_round =
+      mission_.round() > 0 ? 1000.0 * m.planning_seconds_total / (mission_.round() * t.groups()) : 0.0;
+  m.explored_curve = sim.explored_curve;
+  m.motion = sim.motion;
+  // One entry per phase that started: the GCS's times and the task's numbers, the simulator's
+  // ground-truth judge of it (motion and the task's own ground truth).
+  for (std::size_t i = 0; i < phase_starts_.size(); ++i) {
+    record::PhaseMetrics ph;
+    ph.name = config::task_name(config::task_of(phases_[i]));
+    ph.start_tick = phase_starts_[i];
+    if (i < phase_ends_.size()) ph.end_tick = phase_ends_[i];
+    ph.complete = i < phase_ends_.size();
+    ph.task = tasks_[i]->numbers();
+    for (const auto& p : sim.phases) {
+      if (p.phase != i) continue;
+      ph.motion = p.motion;
+      for (auto it = p.judge.begin(); it != p.judge.end(); ++it) ph.task[it.key()] = it.value();
+    }
+    m.phases.push_back(std::move(ph));
+  }
+  record::write_metrics(run_dir_ + "/metrics.json", m);
 
-  record_.append(map_frame(last_tick_, mission_.round(), mission_.fused()));
+  record_.append(map_frame(last_tick_, mission_.round(), phase_, mission_.fused()));
   record::Frame summary;
   auto* sm = summary.mutable_summary();
-  sm->set_steps(steps);
-  sm->set_planning_rounds(mission_.round());
-  sm->set_complete(complete);
-  if (sim_extra.contains("steps_to_99") && !sim_extra["steps_to_99"].is_null()) sm->set_steps_to_99(sim_extra["steps_to_99"]);
-  sm->set_explored_fraction(sim_extra.value("explored_fraction", 0.0));
+  sm->set_steps(m.steps);
+  sm->set_planning_rounds(m.planning_rounds);
+  sm->set_complete(m.complete);
+  if (m.steps_to_99) sm->set_steps_to_99(*m.steps_to_99);
+  sm->set_explored_fraction(m.explored_fraction);
   record_.append(summary);
   record_.close();
 
   char line[256];
   std::snprintf(line, sizeof line, "%s after %u steps, %u planning rounds, %.1f%% explored (ground truth)",
-                complete ? "complete" : "INCOMPLETE", steps, mission_.round(),
-                100.0 * sim_extra.value("explored_fraction", 0.0));
+                m.complete ? "complete" : "INCOMPLETE", m.steps, m.planning_rounds, 100.0 * m.explored_fraction);
   progress_.finish(line);
 }
 

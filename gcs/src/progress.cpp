@@ -12,15 +12,15 @@ Progress::Style Progress::parse(const std::string& name) {
   return Style::Plain;
 }
 
-void Progress::update(std::uint32_t tick, double mapped, std::uint32_t round, std::size_t frontier_cells,
+void Progress::update(std::uint32_t tick, const std::string& label, double fraction, const std::string& detail,
                       const std::string& note) {
   if (style_ == Style::None) return;
   if (style_ == Style::Plain) {
-    if (round == last_round_ && note == last_note_) return;
-    last_round_ = round;
+    if (detail == last_detail_ && note == last_note_) return;
+    last_detail_ = detail;
     last_note_ = note;
-    std::printf("tick %5u  round %3u  mapped %5.1f%%  frontier cells %zu%s%s\n", tick, round, 100.0 * mapped,
-                frontier_cells, note.empty() ? "" : "  ", note.c_str());
+    std::printf("tick %5u  %s %5.1f%%  %s%s%s\n", tick, label.c_str(), 100.0 * fraction, detail.c_str(),
+                note.empty() ? "" : "  ", note.c_str());
     std::fflush(stdout);
     return;
   }
@@ -28,13 +28,13 @@ void Progress::update(std::uint32_t tick, double mapped, std::uint32_t round, st
   if (now - last_draw_ < std::chrono::milliseconds(100)) return;
   last_draw_ = now;
   constexpr int kWidth = 30;
-  const int filled = static_cast<int>(mapped * kWidth + 0.5);
+  const int filled = static_cast<int>(fraction * kWidth + 0.5);
   char bar[kWidth + 1];
   for (int i = 0; i < kWidth; ++i) bar[i] = i < filled ? '#' : '-';
   bar[kWidth] = '\0';
-  // Padding clears what a longer previous note left on the line.
-  std::printf("\r[%s] mapped %5.1f%% | tick %5u/%u | round %3u | frontier %5zu %-28s", bar, 100.0 * mapped, tick,
-              max_ticks_, round, frontier_cells, note.c_str());
+  // Padding clears what a longer previous line left.
+  std::printf("\r[%s] %s %5.1f%% | tick %5u/%u | %s %-28s", bar, label.c_str(), 100.0 * fraction, tick, max_ticks_,
+              detail.c_str(), note.c_str());
   std::fflush(stdout);
 }
 

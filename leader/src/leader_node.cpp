@@ -1,12 +1,12 @@
 #include "swarm/leader/leader_node.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
 
 #include "swarm/comm/convert.hpp"
+#include "swarm/config/scenario.hpp"
 #include "swarm/member/member_node.hpp"
 #include "swarm/planner/map_patch.hpp"
 
@@ -16,63 +16,101 @@ using comm::LinkClass;
 using planner::Cell;
 namespace topic = comm::topic;
 
-namespace {
-
-planner::ExploreConfig explore_config(const swarm::scenario::Scenario& s) {
-  const auto& e = s.explore();
-  planner::ExploreConfig c;
-  c.use_group_frontiers = e.mode() != swarm::scenario::BASELINE;
-  c.dbscan_eps_cells = e.dbscan_eps_cells();
-  c.dbscan_min_points = static_cast<int>(e.dbscan_min_points());
-  c.small_segment_max_cells = static_cast<int>(e.small_segment_max_cells());
-  c.small_segment_radius_cells = e.small_segment_radius_cells();
-  c.kmeans_max_iterations = static_cast<int>(e.kmeans_max_iterations());
-  c.seed = s.seed();
-  return c;
+std::vector<int> GroupContext::living() const {
+  std::vector<int> out;
+  for (int i = 0; i < static_cast<int>(alive.size()); ++i) {
+    if (alive[static_cast<std::size_t>(i)]) out.push_back(i);
+  }
+  return out;
 }
-
-Cell cell_of(const msgs::RobotState& r) { return {r.x(), r.y()}; }
-
-}  // namespace
 
 LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group)
     : agent_(agent),
+      setup_(setup),
       topology_(setup.topology),
       group_(group),
-      explore_(explore_config(setup.world.scenario)),
       encoding_(comm::patch_encoding(setup.world.scenario.map_encoding())),
       map_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution()),
       robot_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution()),
-      arrived_(setup.topology.robots_per_group(), true),
       alive_(setup.topology.robots_per_group(), true),
       patch_gcs_(agent.advertise<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, {topology_.gcs()})),
-      group_status_(agent.advertise<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs, {topology_.gcs()})),
-      plan_report_(agent.advertise<msgs::PlanReport>(topic::kPlanReport, LinkClass::Telemetry, {topology_.gcs()})),
       heartbeat_(agent.advertise<msgs::Heartbeat>(topic::kHeartbeat, LinkClass::LeaderGcs, {topology_.gcs()})),
       motion_(agent.advertise<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, {topology_.sim()})) {
+  for (const auto& phase : config::mission_phases(setup.world.scenario)) {
+    tasks_.push_back(make_group_task(phase, setup, group));
+  }
   const auto members = topology_.members(group);
+  const int n_members = static_cast<int>(members.size());
+  auto& group_status =
+      agent.advertise<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs, {topology_.gcs()});
+  auto& plan_report = agent.advertise<msgs::PlanReport>(topic::kPlanReport, LinkClass::Telemetry, {topology_.gcs()});
+  auto& task_report = agent.advertise<msgs::TaskReport>(topic::kTaskReport, LinkClass::LeaderGcs, {topology_.gcs()});
+  comm::Mailbox::Outlet<msgs::Assignment>* assign = nullptr;
+  comm::Mailbox::Outlet<msgs::Route>* route = nullptr;
+  comm::Mailbox::Outlet<msgs::RouteRelease>* release = nullptr;
   if (!members.empty()) {
     patch_down_ = &agent.advertise<msgs::MapPatch>(topic::patch_down(group), LinkClass::MemberLeader, members);
-    assign_ = &agent.advertise<msgs::Assignment>(topic::assign(group), LinkClass::MemberLeader, members);
+    assign = &agent.advertise<msgs::Assignment>(topic::assign(group), LinkClass::MemberLeader, members);
+    route = &agent.advertise<msgs::Route>(topic::route(group), LinkClass::MemberLeader, members);
+    release = &agent.advertise<msgs::RouteRelease>(topic::release(group), LinkClass::MemberLeader, members);
   }
+  // The task's outlets; index 0 is the leader's own robot, which is told directly.
+  outlets_.route = [this, route](int index, msgs::Route& r) {
+    r.robot(topology_.robot(group_, index));
+    r.phase(phase_);
+    r.route_id(++route_ids_);
+    if (index == 0) {
+      member::follow_route(robot_, r);
+    } else if (route != nullptr) {
+      route->send(r);
+    }
+    return r.route_id();
+  };
+  outlets_.release = [this, release](int index, msgs::RouteRelease& r) {
+    r.robot(topology_.robot(group_, index));
+    if (index == 0) {
+      robot_.release(r.route_id(), r.release());
+    } else if (release != nullptr) {
+      release->send(r);
+    }
+  };
+  outlets_.report = [this, &task_report](msgs::TaskReport& r) {
+    r.phase(phase_);
+    r.group(static_cast<std::uint16_t>(group_));
+    task_report.send(r);
+  };
+  outlets_.assignment = [assign](msgs::Assignment& a) {
+    if (assign != nullptr) assign->send(a);
+  };
+  outlets_.group_status = [&group_status](msgs::GroupStatus& s) { group_status.send(s); };
+  outlets_.plan_report = [&plan_report](msgs::PlanReport& p) { plan_report.send(p); };
+
   // Subscription order fixes the order in which same-tick messages are handled.
   agent.subscribe<msgs::Sense>(topic::sense(agent.self()), LinkClass::SimRobot, [this](const msgs::Sense& s) {
-    learn(map_.observe(robot_.sense({s.x(), s.y()}, s.ranges(), s.max_range())), true);
+    learn(map_.observe(robot_.sense({s.x(), s.y()}, s.ranges(), s.max_range(), comm::route_progress(s))), true);
   }, comm::Delivery::BestEffort, 1);  // a lost scan is not repeated; the next one is newer
   if (!members.empty()) {
     agent.subscribe<msgs::MapPatch>(topic::patch_up(group), LinkClass::MemberLeader, [this](const msgs::MapPatch& p) {
       learn(map_.observe(comm::decode_patch(p.data())), true);
-    }, comm::Delivery::Reliable, static_cast<int>(members.size()));
+    }, comm::Delivery::Reliable, n_members);
     agent.subscribe<msgs::MemberStatus>(topic::status(group), LinkClass::MemberLeader,
-                                        [this](const msgs::MemberStatus& s) {
-                                          if (s.round() == round_) arrived_[topology_.index_of(s.robot())] = true;
-                                        }, comm::Delivery::Reliable, static_cast<int>(members.size()));
+                                        [this](const msgs::MemberStatus& s) { statuses_.push_back(s); },
+                                        comm::Delivery::Reliable, n_members);
+    agent.subscribe<msgs::RouteProgress>(topic::progress(group), LinkClass::MemberLeader,
+                                         [this](const msgs::RouteProgress& p) { progress_.push_back(p); },
+                                         comm::Delivery::Reliable, n_members);
   }
   agent.subscribe<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, [this](const msgs::RoundStart& r) {
     planner::OccupancyGrid global(r.width(), r.height(), map_.group().resolution());
     comm::decode_map(r.map_rle(), static_cast<planner::PatchEncoding>(r.encoding()), global);
     learn(map_.adopt_global(global), false);
-    pending_round_ = r.round();
+    round_ = r.round();
+  }, comm::Delivery::Reliable, 1);
+  agent.subscribe<msgs::PhaseStart>(topic::kPhase, LinkClass::LeaderGcs,
+                                    [this](const msgs::PhaseStart& p) { next_phase_ = p.phase(); },
+                                    comm::Delivery::Reliable, 1);
+  agent.subscribe<msgs::TaskOrder>(topic::kTaskOrder, LinkClass::LeaderGcs, [this](const msgs::TaskOrder& o) {
+    if (o.group() == group_) orders_.push_back(o);
   }, comm::Delivery::Reliable, 1);
 }
 
@@ -83,91 +121,82 @@ void LeaderNode::learn(const std::vector<planner::CellChange>& fresh, bool own_o
   robot_.learn(fresh);
 }
 
-void LeaderNode::plan(std::uint32_t round, const msgs::Clock& clock) {
-  const auto t0 = std::chrono::steady_clock::now();
-  planner::ExploreInput in;
-  in.global_map = &map_.global();
-  in.group_map = &map_.group();
-  for (int g = 0; g < topology_.groups(); ++g) in.leader_positions.push_back(cell_of(clock.robots()[topology_.leader(g)]));
-  in.group = group_;
-  // Only the living robots get waypoints (K-Means with k = living members); index 0, the leader,
-  // is always alive.
-  std::vector<int> living;
-  for (int i = 0; i < topology_.robots_per_group(); ++i) {
-    if (!alive_[i]) continue;
-    living.push_back(i);
-    in.member_positions.push_back(cell_of(clock.robots()[topology_.robot(group_, i)]));
+void LeaderNode::track_members(GroupContext& ctx) {
+  // A member the simulator lost gets no more work and nobody waits for it; one that comes back
+  // (its link healed) is planned for again.
+  for (int i = 1; i < topology_.robots_per_group(); ++i) {
+    const bool alive = ctx.clock.robots()[topology_.robot(group_, i)].alive();
+    if (alive == alive_[static_cast<std::size_t>(i)]) continue;
+    alive_[static_cast<std::size_t>(i)] = alive;
+    const std::string name = topology_.name_of(topology_.robot(group_, i));
+    if (!alive) {
+      members_lost_.push_back({name, ctx.clock.tick(), std::nullopt});
+      tasks_[phase_]->member_lost(i, ctx);
+    } else {
+      if (auto it = std::find_if(members_lost_.rbegin(), members_lost_.rend(),
+                                 [&](const MemberLoss& l) { return l.name == name; });
+          it != members_lost_.rend()) {
+        it->rejoined_tick = ctx.clock.tick();
+      }
+      tasks_[phase_]->member_back(i, ctx);
+    }
+    std::fprintf(stderr, "%s: %s %s at tick %u\n", topology_.name_of(agent_.self()).c_str(), name.c_str(),
+                 alive ? "is back; planning for it again" : "lost; planning without it", ctx.clock.tick());
   }
-  in.round = static_cast<int>(round);
-  planner::ExplorePlan plan = planner::plan_group_exploration(in, explore_);
-  std::vector<std::optional<Cell>> waypoints(topology_.robots_per_group());
-  for (std::size_t j = 0; j < living.size(); ++j) waypoints[living[j]] = plan.waypoints[j];
-  plan.waypoints = waypoints;
-  planning_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  ++rounds_planned_;
-  if (plan.plan_case == planner::PlanCase::GroupFrontier) ++case_a_;
-  if (plan.plan_case == planner::PlanCase::GlobalAssignment) ++case_b_;
+}
 
-  round_ = round;
-  for (int i = 0; i < topology_.robots_per_group(); ++i) arrived_[i] = !plan.waypoints[i].has_value();
-  group_reported_ = false;
-  robot_.assign(round, plan.waypoints[0]);
-  if (assign_ != nullptr) {
-    msgs::Assignment a;
-    a.round(round);
-    a.waypoints_xy(comm::to_xy(plan.waypoints));
-    assign_->send(a);
+void LeaderNode::dispatch(GroupContext& ctx) {
+  GroupTask& task = *tasks_[phase_];
+  for (const auto& o : orders_) {
+    if (o.phase() == phase_) task.on_order(o, ctx);
   }
-  msgs::PlanReport report;
-  report.group(static_cast<std::uint16_t>(group_));
-  report.round(round);
-  report.plan_case(static_cast<std::uint8_t>(plan.plan_case));
-  report.waypoints_xy(comm::to_xy(plan.waypoints));
-  report.group_frontiers_xy(comm::to_xy(plan.group_frontiers));
-  for (const auto& seg : plan.global_segments) report.global_segments_xy().push_back(comm::to_xy(seg));
-  report.chosen_segment(plan.chosen_segment);
-  plan_report_.send(report);
+  orders_.clear();
+  for (const auto& s : statuses_) task.on_member_status(s, ctx);
+  statuses_.clear();
+  for (const auto& p : progress_) {
+    task.on_progress(topology_.index_of(p.robot()), {p.route_id(), p.step(), static_cast<planner::RouteState>(p.state())},
+                     ctx);
+  }
+  progress_.clear();
+  if (round_) {
+    task.on_round(*round_, ctx);
+    round_.reset();
+  }
 }
 
 void LeaderNode::step(const msgs::Clock& clock) {
-  // A member the simulator lost gets no waypoints and nobody waits for it; one that comes back
-  // (its link healed) is planned for again from the next round.
-  for (int i = 1; i < topology_.robots_per_group(); ++i) {
-    const bool alive = clock.robots()[topology_.robot(group_, i)].alive();
-    if (alive == alive_[i]) continue;
-    alive_[i] = alive;
-    arrived_[i] = true;
-    const std::string name = topology_.name_of(topology_.robot(group_, i));
-    if (!alive) {
-      members_lost_.push_back({name, clock.tick(), std::nullopt});
-    } else if (auto it = std::find_if(members_lost_.rbegin(), members_lost_.rend(),
-                                      [&](const MemberLoss& l) { return l.name == name; });
-               it != members_lost_.rend()) {
-      it->rejoined_tick = clock.tick();
-    }
-    std::fprintf(stderr, "%s: %s %s at tick %u\n", topology_.name_of(agent_.self()).c_str(), name.c_str(),
-                 alive ? "is back; planning for it from the next round" : "lost; planning without it", clock.tick());
+  if (next_phase_ && *next_phase_ < tasks_.size()) {
+    phase_ = *next_phase_;
+    started_ = false;
   }
+  next_phase_.reset();
+  GroupContext ctx{setup_, group_, phase_, clock, alive_, map_, robot_, outlets_};
+  if (!started_) {
+    tasks_[phase_]->start(ctx);
+    started_ = true;
+  }
+  track_members(ctx);
   msgs::Heartbeat beat;
   beat.group(static_cast<std::uint16_t>(group_));
   heartbeat_.send(beat);
-  if (pending_round_) {
-    plan(*pending_round_, clock);
-    pending_round_.reset();
-  }
+  dispatch(ctx);
+  tasks_[phase_]->step(ctx);
+
   const member::RobotAgent::Step s = robot_.step();
   member::publish_motion(motion_, agent_.self(), s);
-  if (s.report && s.round == round_) arrived_[0] = true;
-
-  bool all_arrived = true;
-  for (bool a : arrived_) all_arrived = all_arrived && a;
-  if (round_ > 0 && all_arrived && !group_reported_) {
-    msgs::GroupStatus status;
-    status.group(static_cast<std::uint16_t>(group_));
-    status.round(round_);
-    group_status_.send(status);
-    group_reported_ = true;
+  if (s.report) {
+    msgs::MemberStatus own;
+    own.robot(agent_.self());
+    own.round(s.round);
+    own.state(static_cast<std::uint8_t>(*s.report));
+    tasks_[phase_]->on_member_status(own, ctx);
   }
+  if (const planner::RouteProgress p = robot_.following(); p.id != 0 && !(p == own_progress_)) {
+    own_progress_ = p;
+    tasks_[phase_]->on_progress(0, p, ctx);
+  }
+  tasks_[phase_]->finish_step(ctx);
+
   if (!to_gcs_.empty()) {
     msgs::MapPatch patch;
     patch.group(static_cast<std::uint16_t>(group_));
@@ -193,13 +222,20 @@ std::string LeaderNode::report_json() const {
                     {"noticed_at_tick", l.noticed_tick},
                     {"rejoined_at_tick", l.rejoined_tick ? nlohmann::json(*l.rejoined_tick) : nlohmann::json(nullptr)}});
   }
-  return nlohmann::json{{"rounds_planned", rounds_planned_},
-                        {"members_lost", lost},
-                        {"case_a_rounds", case_a_},
-                        {"case_b_rounds", case_b_},
-                        {"planning_seconds", planning_seconds_},
-                        {"replans", robot_.replans()}}
-      .dump();
+  nlohmann::json out{{"members_lost", lost}, {"replans", robot_.replans()}};
+  // Each phase's numbers under its task's name; explore's also at the top level (the exploration
+  // tables read rounds_planned and planning_seconds there).
+  const auto phases = config::mission_phases(setup_.world.scenario);
+  nlohmann::json per_phase = nlohmann::json::array();
+  for (std::size_t i = 0; i < tasks_.size(); ++i) {
+    const nlohmann::json n = tasks_[i]->numbers();
+    per_phase.push_back({{"task", config::task_name(config::task_of(phases[i]))}, {"numbers", n}});
+    if (config::task_of(phases[i]) == config::TaskKind::Explore) {
+      for (auto it = n.begin(); it != n.end(); ++it) out[it.key()] = it.value();
+    }
+  }
+  out["phases"] = per_phase;
+  return out.dump();
 }
 
 }  // namespace swarm::leader

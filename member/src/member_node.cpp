@@ -14,8 +14,15 @@ void publish_motion(comm::Mailbox::Outlet<msgs::MotionCommand>& motion, comm::Ag
   if (!step.path_changed) return;
   msgs::MotionCommand cmd;
   cmd.robot(robot);
+  cmd.route_id(step.route_id);
   cmd.path_xy(comm::to_xy(step.path));
+  cmd.pick_steps(step.pick_steps);
+  cmd.drop_steps(step.drop_steps);
   motion.send(cmd);
+}
+
+void follow_route(RobotAgent& robot, const msgs::Route& r) {
+  robot.follow(r.route_id(), comm::from_xy(r.path_xy()), r.release(), r.pick_steps(), r.drop_steps());
 }
 
 MemberNode::MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index)
@@ -28,9 +35,11 @@ MemberNode::MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
       status_(agent.advertise<msgs::MemberStatus>(topic::status(group), LinkClass::MemberLeader,
                                                   {setup.topology.leader(group)})),
       motion_(agent.advertise<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, {setup.topology.sim()})),
+      progress_(agent.advertise<msgs::RouteProgress>(topic::progress(group), LinkClass::MemberLeader,
+                                                     {setup.topology.leader(group)})),
       encoding_(comm::patch_encoding(setup.world.scenario.map_encoding())) {
   agent.subscribe<msgs::Sense>(topic::sense(agent.self()), LinkClass::SimRobot, [this](const msgs::Sense& s) {
-    auto changes = robot_.sense({s.x(), s.y()}, s.ranges(), s.max_range());
+    auto changes = robot_.sense({s.x(), s.y()}, s.ranges(), s.max_range(), comm::route_progress(s));
     pending_up_.insert(pending_up_.end(), changes.begin(), changes.end());
   }, comm::Delivery::BestEffort, 1);  // a lost scan is not repeated; the next one is newer
   agent.subscribe<msgs::MapPatch>(topic::patch_down(group), LinkClass::MemberLeader,
@@ -41,6 +50,16 @@ MemberNode::MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
     ++assignments_;
     robot_.assign(a.round(), index_ < static_cast<int>(waypoints.size()) ? waypoints[index_] : std::nullopt);
   }, comm::Delivery::Reliable, 1);
+  // Routes and releases go to the whole group; each member keeps its own.
+  agent.subscribe<msgs::Route>(topic::route(group), LinkClass::MemberLeader, [this](const msgs::Route& r) {
+    if (r.robot() != agent_.self()) return;
+    ++routes_;
+    follow_route(robot_, r);
+  }, comm::Delivery::Reliable, 1);
+  agent.subscribe<msgs::RouteRelease>(topic::release(group), LinkClass::MemberLeader,
+                                      [this](const msgs::RouteRelease& r) {
+                                        if (r.robot() == agent_.self()) robot_.release(r.route_id(), r.release());
+                                      }, comm::Delivery::Reliable, 1);
 }
 
 void MemberNode::step(const msgs::Clock& /*clock*/) {
@@ -53,6 +72,16 @@ void MemberNode::step(const msgs::Clock& /*clock*/) {
   }
   const RobotAgent::Step s = robot_.step();
   publish_motion(motion_, agent_.self(), s);
+  const planner::RouteProgress p = robot_.following();
+  if (p.id != 0 && !(p == reported_)) {
+    msgs::RouteProgress m;
+    m.robot(agent_.self());
+    m.route_id(p.id);
+    m.step(p.step);
+    m.state(static_cast<std::uint8_t>(p.state));
+    progress_.send(m);
+    reported_ = p;
+  }
   if (s.report) {
     msgs::MemberStatus status;
     status.robot(agent_.self());
@@ -63,7 +92,7 @@ void MemberNode::step(const msgs::Clock& /*clock*/) {
 }
 
 std::string MemberNode::report_json() const {
-  return nlohmann::json{{"replans", robot_.replans()}, {"assignments", assignments_}}.dump();
+  return nlohmann::json{{"replans", robot_.replans()}, {"assignments", assignments_}, {"routes", routes_}}.dump();
 }
 
 }  // namespace swarm::member

@@ -10,8 +10,6 @@
 namespace swarm::planner {
 namespace {
 
-constexpr double kSqrt2 = 1.41421356237309504880;
-
 struct Open {
   double f;
   double g;
@@ -62,11 +60,9 @@ std::optional<std::vector<Cell>> astar(const OccupancyGrid& map, Cell start, Cel
                                        const AStarOptions& options) {
   if (!map.in_bounds(start) || !map.in_bounds(goal)) return std::nullopt;
   if (start == goal) return std::vector<Cell>{start};
-  const auto passable = [&](Cell c) {
-    const CellState s = map.at(c);  // Occupied when out of bounds
-    return s == CellState::Free || (s == CellState::Unknown && options.unknown_is_free);
-  };
-  if (!passable(goal)) return std::nullopt;
+  const Passability passability = options.unknown_is_free ? Passability::UnknownIsFree : Passability::FreeOnly;
+  const MotionModel& motion = options.motion;
+  if (!MotionModel::passable(map, goal, passability)) return std::nullopt;
 
   thread_local Scratch mem;
   mem.begin(map.size());
@@ -76,7 +72,7 @@ std::optional<std::vector<Cell>> astar(const OccupancyGrid& map, Cell start, Cel
   mem.touch(start_idx);
   mem.g[static_cast<std::size_t>(start_idx)] = 0.0;
   mem.parent[static_cast<std::size_t>(start_idx)] = -1;
-  open.push({octile_distance(start, goal), 0.0, start_idx});
+  open.push({motion.heuristic(start, goal), 0.0, start_idx});
 
   while (!open.empty()) {
     const Open cur = open.top();
@@ -93,23 +89,19 @@ std::optional<std::vector<Cell>> astar(const OccupancyGrid& map, Cell start, Cel
       return path;
     }
     const Cell c = map.cell_of(cur.idx);
-    for (int k = 0; k < 8; ++k) {
-      const Cell n{c.x + kNeighbourDx[k], c.y + kNeighbourDy[k]};
-      if (!passable(n)) continue;
-      const bool diagonal = k >= 4;
-      if (diagonal && (!passable({n.x, c.y}) || !passable({c.x, n.y}))) continue;
+    motion.for_each_neighbour(map, c, [&](Cell n, double cost) {
       const int ni = map.index(n);
       const std::size_t nu = static_cast<std::size_t>(ni);
-      const double ng = cur.g + (diagonal ? kSqrt2 : 1.0);
+      const double ng = cur.g + cost;
       if (mem.seen(ni)) {
-        if (mem.closed[nu] || ng >= mem.g[nu]) continue;
+        if (mem.closed[nu] || ng >= mem.g[nu]) return;
       } else {
         mem.touch(ni);
       }
       mem.g[nu] = ng;
       mem.parent[nu] = cur.idx;
-      open.push({ng + octile_distance(n, goal), ng, ni});
-    }
+      open.push({ng + motion.heuristic(n, goal), ng, ni});
+    }, passability);
   }
   return std::nullopt;
 }

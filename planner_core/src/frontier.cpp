@@ -24,7 +24,8 @@ std::vector<Cell> find_frontiers(const OccupancyGrid& map) {
   return out;
 }
 
-std::vector<std::uint8_t> reachable_mask(const OccupancyGrid& map, const std::vector<Cell>& from) {
+std::vector<std::uint8_t> reachable_mask(const OccupancyGrid& map, const std::vector<Cell>& from,
+                                         const MotionModel& motion) {
   std::vector<std::uint8_t> mask(map.size(), 0);
   // The mask itself marks "queued"; a plain vector used as a FIFO keeps the order deterministic.
   std::vector<int> queue;
@@ -37,17 +38,12 @@ std::vector<std::uint8_t> reachable_mask(const OccupancyGrid& map, const std::ve
     queue.push_back(i);
   }
   for (std::size_t head = 0; head < queue.size(); ++head) {
-    const Cell c = map.cell_of(queue[head]);
-    for (int k = 0; k < 8; ++k) {
-      const Cell n{c.x + kNeighbourDx[k], c.y + kNeighbourDy[k]};
-      if (!map.is_free(n)) continue;
-      // No corner cutting: a diagonal step needs both orthogonal cells it sweeps to be Free.
-      if (k >= 4 && (!map.is_free({n.x, c.y}) || !map.is_free({c.x, n.y}))) continue;
+    motion.for_each_neighbour(map, map.cell_of(queue[head]), [&](Cell n, double) {
       const int ni = map.index(n);
-      if (mask[ni]) continue;
+      if (mask[ni]) return;
       mask[ni] = 1;
       queue.push_back(ni);
-    }
+    });
   }
   return mask;
 }

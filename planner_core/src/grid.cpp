@@ -33,4 +33,13 @@ double octile_distance(Cell a, Cell b) {
 
 double euclidean_distance(Cell a, Cell b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
+std::string to_string(Cell c) {
+  std::string s = "(";  // appended piecewise: GCC 12 warns (-Wrestrict) on "(" + std::to_string(..)
+  s += std::to_string(c.x);
+  s += ", ";
+  s += std::to_string(c.y);
+  s += ")";
+  return s;
+}
+
 }  // namespace swarm::planner

@@ -84,9 +84,13 @@ KMeansResult kmeans(const std::vector<Eigen::Vector2d>& points, const KMeansConf
     out.converged = true;
     return out;
   }
-  const int k = std::clamp(config.k, 1, count_distinct(points));
-  Rng rng(config.seed);
-  out.centres = seed_plus_plus(points, k, rng);
+  if (!config.initial_centres.empty()) {
+    out.centres = config.initial_centres;
+  } else {
+    const int k = std::clamp(config.k, 1, count_distinct(points));
+    Rng rng(config.seed);
+    out.centres = seed_plus_plus(points, k, rng);
+  }
   out.labels.assign(points.size(), -1);
   assign(points, out.centres, out.labels);
 

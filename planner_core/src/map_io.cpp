@@ -462,4 +462,19 @@ OccupancyGrid load_movingai_map(const std::string& path, double resolution_m) {
   return grid;
 }
 
+void save_movingai_map(const std::string& path, const OccupancyGrid& map) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) fail(path, 0, "cannot write the MovingAI map file (check the folder exists and is writable)");
+  out << "type octile\nheight " << map.height() << "\nwidth " << map.width() << "\nmap\n";
+  for (int y = map.height() - 1; y >= 0; --y) {  // the first row is the top
+    std::string row(static_cast<std::size_t>(map.width()), '@');
+    for (int x = 0; x < map.width(); ++x) {
+      const CellState s = map.at(Cell{x, y});
+      row[static_cast<std::size_t>(x)] = s == CellState::Free ? '.' : s == CellState::Unknown ? 'T' : '@';
+    }
+    out << row << '\n';
+  }
+  if (!out.flush()) fail(path, 0, "cannot write the MovingAI map file");
+}
+
 }  // namespace swarm::planner

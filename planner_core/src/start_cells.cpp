@@ -1,5 +1,7 @@
 #include "swarm/planner/start_cells.hpp"
 
+#include "swarm/planner/motion.hpp"
+
 #include <cstddef>
 #include <cstdint>
 
@@ -15,16 +17,12 @@ std::vector<Cell> start_cells(const OccupancyGrid& truth, Cell start, int n) {
   seen[static_cast<std::size_t>(truth.index(start))] = 1;
   const auto wanted = static_cast<std::size_t>(n);
   for (std::size_t head = 0; head < out.size() && out.size() < wanted; ++head) {
-    const Cell c = out[head];
-    for (int k = 0; k < 8 && out.size() < wanted; ++k) {
-      const Cell nb{c.x + kNeighbourDx[k], c.y + kNeighbourDy[k]};
-      if (!truth.is_free(nb)) continue;
-      if (k >= 4 && (!truth.is_free({nb.x, c.y}) || !truth.is_free({c.x, nb.y}))) continue;
+    MotionModel::eight().for_each_neighbour(truth, out[head], [&](Cell nb, double) {
       std::uint8_t& s = seen[static_cast<std::size_t>(truth.index(nb))];
-      if (s) continue;
+      if (s || out.size() >= wanted) return;
       s = 1;
       out.push_back(nb);
-    }
+    });
   }
   return out;
 }

@@ -3,6 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include "swarm/comm/convert.hpp"
+#include "swarm/config/scenario.hpp"
+#include "swarm/record/metrics.hpp"
 
 namespace swarm::sim {
 
@@ -10,6 +12,13 @@ using comm::LinkClass;
 namespace topic = comm::topic;
 
 namespace {
+// Exploration and collection drive the paper's 8-connected robots; coverage and MAPF plan on the
+// 4-connected grid their papers assume.
+planner::MotionModel motion_for(config::TaskKind task) {
+  return task == config::TaskKind::Cover || task == config::TaskKind::Mapf ? planner::MotionModel::four()
+                                                                           : planner::MotionModel::eight();
+}
+
 LidarConfig lidar_of(const comm::RoleSetup& setup) {
   const auto& s = setup.world.scenario;
   return {static_cast<int>(s.lidar_beams()),
@@ -19,7 +28,8 @@ LidarConfig lidar_of(const comm::RoleSetup& setup) {
 
 SimNode::SimNode(comm::LockstepClock& clock, const comm::RoleSetup& setup)
     : clock_(clock),
-      world_(setup.world.truth, setup.world.robot_cells, lidar_of(setup)),
+      world_(setup.world.truth, setup.world.robot_cells, lidar_of(setup),
+             static_cast<int>(setup.world.scenario.footprint_radius())),
       max_ticks_(setup.world.scenario.max_ticks()),
       alive_(setup.world.robot_cells.size(), true) {
   const comm::Topology& t = setup.topology;
@@ -27,8 +37,51 @@ SimNode::SimNode(comm::LockstepClock& clock, const comm::RoleSetup& setup)
     sense_.push_back(&clock.advertise<msgs::Sense>(topic::sense(r), LinkClass::SimRobot, {r}));
   }
   clock.subscribe<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, [this, &t](const msgs::MotionCommand& m) {
-    if (t.is_robot(m.robot()) && alive_[m.robot()]) world_.command(m.robot(), comm::from_xy(m.path_xy()));
+    if (t.is_robot(m.robot()) && alive_[m.robot()]) world_.command(m.robot(), m.route_id(), comm::from_xy(m.path_xy()));
   }, comm::Delivery::Reliable, t.robots());
+  clock.subscribe<msgs::PhaseStart>(topic::kPhase, LinkClass::LeaderGcs,
+                                    [this](const msgs::PhaseStart& p) { next_phase_ = p.phase(); },
+                                    comm::Delivery::Reliable, 1);
+  mission_ = config::mission_phases(setup.world.scenario);
+  start_phase(0, 0);
+}
+
+void SimNode::start_phase(std::uint32_t index, std::uint32_t tick) {
+  if (!phases_.empty()) judge_phase();
+  const config::TaskKind task = config::task_of(mission_[index]);
+  world_.set_motion(motion_for(task));
+  PhaseLog log;
+  log.index = index;
+  log.task = config::task_name(task);
+  log.start_tick = tick;
+  log.counts_at_start = world_.counts();
+  log.events_at_start = world_.events();
+  if (task == config::TaskKind::Cover) {
+    world_.reset_coverage();
+    log.curve.emplace_back(tick, world_.covered_fraction());
+  }
+  phases_.push_back(std::move(log));
+}
+
+void SimNode::judge_phase() {
+  if (!phases_.back().judged) fill_judge(phases_.back());
+}
+
+void SimNode::fill_judge(PhaseLog& p) const {
+  p.motion = motion_since(p.counts_at_start, p.events_at_start);
+  if (p.task == "explore") {
+    p.judge = {{"explored_fraction", world_.explored_fraction()},
+               {"steps_to_99", steps_to_99_ ? nlohmann::json(*steps_to_99_) : nlohmann::json(nullptr)}};
+  } else if (p.task == "cover") {
+    nlohmann::json curve = nlohmann::json::array();
+    for (const auto& [tick, f] : p.curve) curve.push_back({tick, f});
+    p.judge = {{"covered_fraction", world_.covered_fraction()},
+               {"covered_cells", world_.covered_cells()},
+               {"target_cells", world_.coverage_target_cells()},
+               {"makespan_ticks", p.full_tick ? nlohmann::json(*p.full_tick - p.start_tick) : nlohmann::json(nullptr)},
+               {"coverage_curve", curve}};
+  }
+  p.judged = true;
 }
 
 std::vector<msgs::RobotState> SimNode::states() const {
@@ -43,62 +96,89 @@ std::vector<msgs::RobotState> SimNode::states() const {
   return out;
 }
 
+void SimNode::begin_tick(std::uint32_t k) {
+  clock_.begin_tick(k);
+  if (next_phase_ && *next_phase_ < mission_.size() && *next_phase_ != phases_.back().index) start_phase(*next_phase_, k);
+  next_phase_.reset();
+  for (std::size_t r = 0; r < alive_.size(); ++r) {
+    const bool lost = clock_.is_lost(static_cast<comm::AgentId>(r));
+    // A lost robot stands where it was; one whose link healed senses and moves again.
+    if (alive_[r] && lost) world_.command(static_cast<int>(r), world_.route(static_cast<int>(r)).id, {});
+    alive_[r] = !lost;
+  }
+  if (k > 0) world_.move();
+  for (std::size_t r = 0; r < sense_.size(); ++r) {
+    if (!alive_[r]) continue;
+    world_.scan(static_cast<int>(r), ranges_);
+    const planner::RouteProgress& route = world_.route(static_cast<int>(r));
+    msgs::Sense s;
+    s.x(static_cast<std::int16_t>(world_.robots()[r].x));
+    s.y(static_cast<std::int16_t>(world_.robots()[r].y));
+    s.route_id(route.id);
+    s.route_step(route.step);
+    s.route_state(static_cast<std::uint8_t>(route.state));
+    s.max_range(world_.lidar().range_cells);
+    s.ranges(ranges_);
+    sense_[r]->send(s);
+  }
+  const double explored = world_.explored_fraction();
+  if (!steps_to_99_ && explored >= 0.99) steps_to_99_ = k;
+  if (k % 10 == 0) curve_.emplace_back(k, explored);
+  if (PhaseLog& p = phases_.back(); p.task == "cover") {
+    if (!p.full_tick && world_.covered_cells() >= world_.coverage_target_cells()) p.full_tick = k;
+    if (k % 5 == 0) p.curve.emplace_back(k, world_.covered_fraction());
+  }
+  clock_.publish_clock(k, states(), false);
+}
+
+bool SimNode::end_tick(std::uint32_t k) {
+  complete_ = clock_.wait_done(k);
+  last_tick_ = k;
+  if (!complete_ && k + 1 < max_ticks_) return false;
+  curve_.emplace_back(k, world_.explored_fraction());
+  if (PhaseLog& p = phases_.back(); p.task == "cover") p.curve.emplace_back(k, world_.covered_fraction());
+  judge_phase();
+  clock_.publish_clock(k + 1, states(), true);
+  return true;
+}
+
 std::uint32_t SimNode::run() {
   clock_.wait_ready();
-  std::vector<float> ranges;
   for (std::uint32_t k = 0;; ++k) {
-    clock_.begin_tick(k);
-    for (std::size_t r = 0; r < alive_.size(); ++r) {
-      const bool lost = clock_.is_lost(static_cast<comm::AgentId>(r));
-      // A lost robot stands where it was; one whose link healed senses and moves again.
-      if (alive_[r] && lost) world_.command(static_cast<int>(r), {});
-      alive_[r] = !lost;
-    }
-    if (k > 0) world_.move();
-    for (std::size_t r = 0; r < sense_.size(); ++r) {
-      if (!alive_[r]) continue;
-      world_.scan(static_cast<int>(r), ranges);
-      msgs::Sense s;
-      s.x(static_cast<std::int16_t>(world_.robots()[r].x));
-      s.y(static_cast<std::int16_t>(world_.robots()[r].y));
-      s.max_range(world_.lidar().range_cells);
-      s.ranges(ranges);
-      sense_[r]->send(s);
-    }
-    const double explored = world_.explored_fraction();
-    if (!steps_to_99_ && explored >= 0.99) steps_to_99_ = k;
-    if (k % 10 == 0) curve_.emplace_back(k, explored);
-    clock_.publish_clock(k, states(), false);
-    complete_ = clock_.wait_done(k);
-    last_tick_ = k;
-    if (complete_ || k + 1 >= max_ticks_) {
-      curve_.emplace_back(k, explored);
-      clock_.publish_clock(k + 1, states(), true);
-      return k;
-    }
+    begin_tick(k);
+    if (end_tick(k)) return k;
   }
 }
 
-std::string SimNode::report_json() const {
-  nlohmann::json curve = nlohmann::json::array();
-  for (const auto& [tick, f] : curve_) curve.push_back({tick, f});
-  nlohmann::json losses = nlohmann::json::array();
-  for (const auto& l : clock_.losses()) {
-    losses.push_back({{"agent", clock_.topology().name_of(l.agent)},
-                      {"missed_tick", l.tick},
-                      {"detection_seconds", l.detection_seconds},
-                      {"rejoined_tick", l.rejoined_tick ? nlohmann::json(*l.rejoined_tick) : nlohmann::json(nullptr)}});
+
+record::MotionNumbers SimNode::motion_since(const std::vector<MotionCounts>& start, const ConflictEvents& events) const {
+  record::MotionNumbers m;
+  for (std::size_t r = 0; r < world_.counts().size(); ++r) {
+    const MotionCounts c = world_.counts()[r] - (start.empty() ? MotionCounts{} : start[r]);
+    m.per_robot[clock_.topology().name_of(static_cast<comm::AgentId>(r))] = c;
+    m.total += c;
   }
-  return nlohmann::json{{"last_tick", last_tick_},
-                        {"agents_lost", losses},
-                        {"steps_to_99", steps_to_99_ ? nlohmann::json(*steps_to_99_) : nlohmann::json(nullptr)},
-                        {"explored_fraction", world_.explored_fraction()},
-                        {"reachable_free_cells", world_.reachable_free_cells()},
-                        {"moves", world_.moves()},
-                        {"blocked_moves", world_.blocked_moves()},
-                        {"wall_stops", world_.wall_stops()},
-                        {"explored_curve", curve}}
-      .dump();
+  m.vertex_conflict_events = world_.events().vertex - events.vertex;
+  m.edge_conflict_events = world_.events().edge - events.edge;
+  return m;
+}
+
+std::string SimNode::report_json() const {
+  record::SimReport r;
+  r.last_tick = last_tick_;
+  r.steps_to_99 = steps_to_99_;
+  r.explored_fraction = world_.explored_fraction();
+  r.reachable_free_cells = static_cast<std::uint32_t>(world_.reachable_free_cells());
+  r.explored_curve = curve_;
+  r.motion = motion_since({}, {});
+  for (PhaseLog p : phases_) {
+    if (!p.judged) fill_judge(p);  // the phase in force, when the run is reported before it stopped
+    r.phases.push_back({p.index, p.task, p.start_tick, p.motion, p.judge});
+  }
+  for (const auto& l : clock_.losses()) {
+    r.agents_lost.push_back({clock_.topology().name_of(l.agent), l.tick, l.detection_seconds, l.rejoined_tick});
+  }
+  return record::to_json(r).dump();
 }
 
 }  // namespace swarm::sim

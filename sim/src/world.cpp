@@ -1,10 +1,13 @@
 #include "swarm/sim/world.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cstdlib>
+#include <unordered_map>
 
 #include "swarm/planner/frontier.hpp"
 #include "swarm/planner/raycast.hpp"
+#include "swarm/planner/turns.hpp"
 
 namespace swarm::sim {
 
@@ -12,61 +15,134 @@ using planner::Cell;
 using planner::CellChange;
 using planner::CellState;
 
-World::World(planner::OccupancyGrid truth, std::vector<Cell> robot_cells, LidarConfig lidar)
-    : truth_(std::move(truth)),
-      lidar_(lidar),
-      robots_(std::move(robot_cells)),
-      paths_(robots_.size()),
-      next_(robots_.size(), 0),
-      seen_(truth_.width(), truth_.height(), truth_.resolution()) {
-  reachable_ = planner::reachable_mask(truth_, {robots_.front()});
-  reachable_free_ = static_cast<int>(std::count(reachable_.begin(), reachable_.end(), 1));
-}
+Resolution resolve(const std::vector<Cell>& current, const std::vector<Cell>& intended) {
+  assert(current.size() == intended.size());
+  const std::size_t n = current.size();
+  Resolution r;
+  r.next = current;
+  r.moved.assign(n, 0);
+  r.vertex.assign(n, 0);
+  r.edge.assign(n, 0);
+  r.blocked.assign(n, 0);
+  std::vector<std::uint8_t> failed(n, 0);
+  const auto mover = [&](std::size_t i) { return intended[i] != current[i]; };
 
-void World::command(int robot, const std::vector<Cell>& path) {
-  auto& p = paths_[robot];
-  p = path;
-  next_[robot] = p.size();  // no motion unless the robot's place in the path is found
-  const Cell here = robots_[robot];
-  for (std::size_t i = p.size(); i-- > 0;) {
-    if (p[i] == here) {
-      next_[robot] = i + 1;
-      return;
+  // Step 2: conflicts among the intentions; every mover in one stays.
+  const planner::StepConflicts c = planner::find_step_conflicts(current, intended);
+  for (const auto& v : c.vertex) {
+    // A conflict among robots that all stay cannot happen (they stand on distinct cells).
+    ++r.events.vertex;
+    for (int i : v.robots) {
+      r.vertex[i] = 1;
+      if (mover(i)) failed[i] = 1;
     }
   }
-  if (!p.empty() && std::max(std::abs(p[0].x - here.x), std::abs(p[0].y - here.y)) == 1) next_[robot] = 0;
+  for (const auto& e : c.edge) {
+    ++r.events.edge;
+    r.edge[e.a] = r.edge[e.b] = 1;
+    failed[e.a] = failed[e.b] = 1;
+  }
+  // Step 3: a mover into the cell of a robot that stays is blocked, until nothing changes. Each
+  // pass fails at least one more robot or ends, so at most n passes.
+  std::unordered_map<std::int64_t, std::size_t> at;
+  at.reserve(n * 2);
+  const auto key = [](Cell x) { return (static_cast<std::int64_t>(x.y) << 32) ^ static_cast<std::uint32_t>(x.x); };
+  for (std::size_t i = 0; i < n; ++i) at.emplace(key(current[i]), i);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!mover(i) || failed[i]) continue;
+      const auto it = at.find(key(intended[i]));
+      if (it == at.end()) continue;
+      const std::size_t j = it->second;
+      if (mover(j) && !failed[j]) continue;  // it leaves this tick: follow it
+      failed[i] = 1;
+      r.blocked[i] = 1;
+      changed = true;
+    }
+  }
+  // Step 4: everyone else moves (chains into vacated cells, rotations of three or more).
+  for (std::size_t i = 0; i < n; ++i) {
+    if (mover(i) && !failed[i]) {
+      r.next[i] = intended[i];
+      r.moved[i] = 1;
+    }
+  }
+  return r;
 }
 
-bool World::can_step(Cell from, Cell to) const {
-  const int dx = to.x - from.x;
-  const int dy = to.y - from.y;
-  if (std::max(std::abs(dx), std::abs(dy)) != 1) return false;
-  if (!truth_.is_free(to)) return false;
-  if (dx != 0 && dy != 0) {
-    // No corner cutting: both orthogonal cells must be free.
-    if (!truth_.is_free({from.x + dx, from.y}) || !truth_.is_free({from.x, from.y + dy})) return false;
+World::World(planner::OccupancyGrid truth, std::vector<Cell> robot_cells, LidarConfig lidar, int footprint_radius)
+    : truth_(std::move(truth)),
+      lidar_(lidar),
+      footprint_radius_(std::max(0, footprint_radius)),
+      robots_(std::move(robot_cells)),
+      routes_(robots_.size()),
+      progress_(robots_.size()),
+      seen_(truth_.width(), truth_.height(), truth_.resolution()),
+      counts_(robots_.size()),
+      heading_(robots_.size(), -1) {
+  reachable_ = planner::reachable_mask(truth_, {robots_.front()});
+  reachable_free_ = static_cast<int>(std::count(reachable_.begin(), reachable_.end(), 1));
+  reset_coverage();
+}
+
+void World::command(int robot, std::uint32_t route_id, const std::vector<Cell>& route) {
+  planner::RouteProgress& p = progress_[robot];
+  p.id = route_id;
+  p.step = 0;
+  routes_[robot].clear();
+  if (route.empty()) {
+    p.state = RouteState::Stopped;
+  } else if (route.front() != robots_[robot]) {
+    p.state = RouteState::Rejected;
+    ++counts_[robot].routes_rejected;
+  } else {
+    routes_[robot] = route;
+    p.state = route.size() == 1 ? RouteState::Finished : RouteState::Active;
   }
-  return true;
 }
 
 void World::move() {
-  for (std::size_t r = 0; r < robots_.size(); ++r) {
-    if (next_[r] >= paths_[r].size()) continue;
-    const Cell to = paths_[r][next_[r]];
-    if (!can_step(robots_[r], to)) {
-      ++wall_stops_;
-      next_[r] = paths_[r].size();
+  const std::size_t n = robots_.size();
+  std::vector<Cell> intended = robots_;
+  // Step 1: actions the motion model forbids are wall stops.
+  for (std::size_t r = 0; r < n; ++r) {
+    planner::RouteProgress& p = progress_[r];
+    if (p.state != RouteState::Active) continue;
+    const Cell to = routes_[r][p.step + 1];
+    const planner::MoveCheck check = motion_.check(truth_, robots_[r], to);
+    if (check == planner::MoveCheck::Wait) continue;
+    if (check != planner::MoveCheck::Ok) {
+      ++counts_[r].wall_stops;
+      p.state = RouteState::Abandoned;
+      routes_[r].clear();
       continue;
     }
-    const bool taken = std::any_of(robots_.begin(), robots_.end(), [&](const Cell& c) { return c == to; });
-    if (taken) {
-      ++blocked_moves_;
-      continue;
-    }
-    robots_[r] = to;
-    ++next_[r];
-    ++moves_;
+    intended[r] = to;
   }
+  const Resolution res = resolve(robots_, intended);
+  events_.vertex += res.events.vertex;
+  events_.edge += res.events.edge;
+  for (std::size_t r = 0; r < n; ++r) {
+    MotionCounts& c = counts_[r];
+    c.vertex_conflicts += res.vertex[r];
+    c.edge_conflicts += res.edge[r];
+    c.blocked_moves += res.blocked[r];
+    planner::RouteProgress& p = progress_[r];
+    if (p.state != RouteState::Active) continue;
+    const bool waited = routes_[r][p.step + 1] == robots_[r];
+    if (!waited && !res.moved[r]) continue;  // failed: the same action again next tick
+    if (waited) ++c.waits;
+    if (res.moved[r]) {
+      ++c.moves;
+      const int h = *planner::step_heading(robots_[r], res.next[r]);
+      if (heading_[r] >= 0) c.turn_eighths += static_cast<std::uint64_t>(planner::turn_eighths(heading_[r], h));
+      heading_[r] = h;
+    }
+    robots_[r] = res.next[r];
+    if (++p.step + 1 >= routes_[r].size()) p.state = RouteState::Finished;
+  }
+  for (std::size_t r = 0; r < n; ++r) coverage_.visit(robots_[r]);
 }
 
 void World::scan(int robot, std::vector<float>& ranges) {
@@ -81,6 +157,17 @@ void World::scan(int robot, std::vector<float>& ranges) {
 
 double World::explored_fraction() const {
   return reachable_free_ == 0 ? 1.0 : static_cast<double>(reachable_seen_) / reachable_free_;
+}
+
+void World::reset_coverage() {
+  coverage_ = planner::CoverageTracker(truth_, planner::reachable_mask(truth_, robots_, motion_), footprint_radius_);
+  for (const Cell& c : robots_) coverage_.visit(c);
+}
+
+MotionCounts World::total_counts() const {
+  MotionCounts t;
+  for (const auto& c : counts_) t += c;
+  return t;
 }
 
 }  // namespace swarm::sim

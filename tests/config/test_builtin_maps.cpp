@@ -9,6 +9,7 @@
 #include "swarm/config/scenario.hpp"
 #include "swarm/planner/frontier.hpp"
 #include "swarm/planner/map_io.hpp"
+#include "swarm/planner/mapf/warehouse.hpp"
 
 namespace {
 
@@ -22,6 +23,9 @@ struct Expected {
   int width;
   int height;
   long free_cells;  // as printed by maps/generate.py; change both together
+  double resolution = 0.2;
+  bool footprint = true;  // a 0.6 m robot reaches every free cell (not in the Group-k rooms, whose
+                          // robot is one 10 cm cell)
 };
 
 class BuiltinMap : public ::testing::TestWithParam<Expected> {
@@ -41,7 +45,7 @@ TEST_P(BuiltinMap, HasItsSizeAndFreeCells) {
   const OccupancyGrid g = load();
   EXPECT_EQ(g.width(), GetParam().width);
   EXPECT_EQ(g.height(), GetParam().height);
-  EXPECT_DOUBLE_EQ(g.resolution(), 0.2);
+  EXPECT_DOUBLE_EQ(g.resolution(), GetParam().resolution);
   EXPECT_DOUBLE_EQ(g.origin_x(), 0.0);
   EXPECT_DOUBLE_EQ(g.origin_y(), 0.0);
   EXPECT_EQ(count(g, CellState::Free), GetParam().free_cells);
@@ -77,6 +81,7 @@ TEST_P(BuiltinMap, EveryFreeCellIsReachableFromTheCentreStart) {
 // A 3 x 3 cell (0.6 m) footprint must pass every door and gap and get next to every free cell:
 // the cells where it fits form one connected area, and every free cell touches that area.
 TEST_P(BuiltinMap, OpeningsAreAtLeastThreeCellsWide) {
+  if (!GetParam().footprint) GTEST_SKIP() << "a room for a one-cell robot";
   const OccupancyGrid g = load();
   auto fits = [&](Cell c) {
     for (int dy = -1; dy <= 1; ++dy) {
@@ -117,11 +122,26 @@ INSTANTIATE_TEST_SUITE_P(Maps, BuiltinMap,
                          ::testing::Values(Expected{"open", 100, 100, 9332},
                                            Expected{"maze1", 100, 100, 8940},
                                            Expected{"maze2", 100, 100, 8687},
-                                           Expected{"small", 40, 40, 1398}),
+                                           Expected{"small", 40, 40, 1398},
+                                           Expected{"clutter", 60, 50, 2513, 0.1, false},
+                                           Expected{"empty", 60, 50, 2784, 0.1, false},
+                                           Expected{"terminal", 140, 100, 4582},
+                                           Expected{"rectangle", 80, 60, 4508}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 TEST(BuiltinMaps, AreAllListed) {
-  EXPECT_EQ(cfg::builtin_map_names().size(), 4u);
+  EXPECT_EQ(cfg::builtin_map_names().size(), 9u);
+}
+
+// The MAPF paper's world (a multi-agent path finding map: one-cell aisles on purpose, so not the
+// 0.6 m footprint checks above): the same cells as planner/mapf/warehouse.hpp's warehouse_map.
+TEST(BuiltinMaps, WarehouseIsThePapersFiveByEightWorld) {
+  const OccupancyGrid g = swarm::planner::load_map_yaml(cfg::resolve_map_path("warehouse-5x8", ""));
+  EXPECT_EQ(g.width(), 17);
+  EXPECT_EQ(g.height(), 11);
+  EXPECT_EQ(count(g, CellState::Free), 107);  // 40 intersections + 67 passage middles
+  const OccupancyGrid w = swarm::planner::mapf::warehouse_map(5, 8);
+  for (int i = 0; i < static_cast<int>(g.size()); ++i) EXPECT_EQ(g.at(i), w.at(i)) << "cell " << i;
 }
 
 }  // namespace

@@ -94,7 +94,20 @@ TEST_F(World, BuiltInNamesResolveIntoTheDataFolder) {
     EXPECT_TRUE(fs::is_regular_file(p)) << p;
   }
   EXPECT_EQ(cfg::builtin_map_names(),
-            (std::vector<std::string>{"open", "maze1", "maze2", "small"}));
+            (std::vector<std::string>{"open", "maze1", "maze2", "small", "clutter", "empty", "warehouse-5x8",
+                                      "terminal", "rectangle"}));
+}
+
+// Regression: a 33,000 x 6 map with the start at column 32,950 ran 400 ticks with 0 planning
+// rounds and exit 0 (coordinates narrowed to 16 bits on the wire). It is refused at load.
+TEST_F(World, AMapTooLargeForTheWireCoordinatesIsRefusedNamingTheLimit) {
+  swarm::planner::save_map_yaml((dir_ / "maps" / "long.yaml").string(),
+                                OccupancyGrid(33000, 6, 0.2, 0.0, 0.0, CellState::Free));
+  Scenario s = with_start(on_pocket(1, 1), 32950 * 0.2 + 0.1, 0.5);
+  s.set_map("maps/long.yaml");
+  const std::string e = error_of([&] { (void)cfg::resolve_world(s, dir_.string()); });
+  EXPECT_TRUE(contains(e, "33000 x 6 cells; at most 32767 cells per side")) << e;
+  EXPECT_TRUE(contains(e, "long.yaml")) << e;
 }
 
 TEST_F(World, PathsAreTakenFromTheScenarioFolder) {
@@ -106,8 +119,8 @@ TEST_F(World, PathsAreTakenFromTheScenarioFolder) {
 
 TEST_F(World, UnknownMapNameListsTheBuiltIns) {
   const std::string e = error_of([&] { (void)cfg::resolve_map_path("maze3", dir_.string()); });
-  EXPECT_EQ(e.rfind("unknown map 'maze3': not a built-in (open, maze1, maze2, small) nor an "
-                    "existing file",
+  EXPECT_EQ(e.rfind("unknown map 'maze3': not a built-in (open, maze1, maze2, small, clutter, "
+                    "empty, warehouse-5x8, terminal, rectangle) nor an existing file",
                     0),
             0u)
       << e;

@@ -39,10 +39,10 @@ done
 ((checked)) || echo "note: no compose command installed; compose files not validated by compose itself"
 
 # 3. The container profile keeps the loopback one's discovery timing and every writer/reader
-#    profile (with data sharing off added).
+#    profile, verbatim.
 same_part() {  # same_part SED_RANGE WHAT
   if ! diff <(sed -n "$1p" "$deploy/fastdds_loopback.xml") \
-    <(sed -n "$1p" "$deploy/fastdds_container.xml" | sed '/<data_sharing>/,/<\/data_sharing>/d') >"$work/part.diff"; then
+    <(sed -n "$1p" "$deploy/fastdds_container.xml") >"$work/part.diff"; then
     fail "deploy/fastdds_container.xml's $2 differs from deploy/fastdds_loopback.xml's (change both):"
     cat "$work/part.diff" >&2
   fi

@@ -117,5 +117,17 @@ TEST(RunFailure, AFailingProcessStopsTheRunAndIsNamed) {
   EXPECT_NE(WEXITSTATUS(alive), 0) << "processes of the failed run are still running";
 }
 
+// Regression: an abort during Fast DDS's teardown, after the process's work, used to be turned
+// into exit 0. A process that dies by a signal, whenever, fails the run and is named.
+TEST(RunFailure, AProcessDyingByASignalAfterItsWorkFailsTheRun) {
+  const std::string dir = fresh_dir("abort_after_work") + "/run";
+  setenv("SWARM_ABORT_AFTER_WORK", "member-0-1", 1);
+  const CommandResult f = run_swarm("run --scenario " + source_path("scenarios/small.pbtxt") + " --out " + dir);
+  unsetenv("SWARM_ABORT_AFTER_WORK");
+  EXPECT_EQ(f.exit_code, 1) << f.output;
+  EXPECT_NE(f.output.find("member-0-1"), std::string::npos) << f.output;
+  EXPECT_NE(f.output.find("signal 6"), std::string::npos) << f.output;
+}
+
 }  // namespace
 }  // namespace swarm::test

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,12 +21,31 @@ using swarm::test::ascii_map;
 
 constexpr int kBeams = 360;  // one beam per degree, as the shipped scenarios
 
+// What the simulator would report on the robot's latest route with the robot at `at`: the
+// route's first cell at or after where it stood last (tests move robots by hand along routes
+// that never pass a cell twice).
+planner::RouteProgress report_at(const RobotAgent& robot, Cell at) {
+  const auto& route = robot.route();
+  planner::RouteProgress r;
+  r.id = robot.route_id();
+  if (route.empty()) {
+    r.state = planner::RouteState::Stopped;
+    return r;
+  }
+  const auto it = std::find(route.begin(), route.end(), at);
+  r.step = it == route.end() ? 0 : static_cast<std::uint32_t>(it - route.begin());
+  r.state = it == route.end()         ? planner::RouteState::Rejected
+            : it + 1 == route.end() ? planner::RouteState::Finished
+                                    : planner::RouteState::Active;
+  return r;
+}
+
 // One tick of a robot's loop as swarm-member runs it: the simulator's scan of the truth from
-// `at` is integrated, then the agent steps.
+// `at` is integrated with the simulator's report on the route, then the agent steps.
 RobotAgent::Step tick_at(RobotAgent& robot, const OccupancyGrid& truth, Cell at, float range) {
   std::vector<float> ranges(kBeams);
   planner::scan(truth, at, kBeams, range, ranges.data());
-  robot.sense(at, ranges, range);
+  robot.sense(at, ranges, range, report_at(robot, at));
   return robot.step();
 }
 
@@ -269,7 +289,8 @@ TEST(RobotAgent, BeingStuckForKStuckTicksStepsTriesADetour) {
   EXPECT_EQ(robot.replans(), 3u);
 }
 
-TEST(RobotAgent, StuckWithinTwoCellsOfTheGoalCountsAsArrived) {
+// Regression: a robot blocked next to its goal used to report Arrived; it never stood on it.
+TEST(RobotAgent, StuckWithinTwoCellsOfTheGoalIsBlockedNearNotArrived) {
   const OccupancyGrid truth = swarm::test::grid_from({"......"});
   RobotAgent near = agent_for(truth);
   tick_at(near, truth, {0, 0}, 10.0f);
@@ -278,7 +299,7 @@ TEST(RobotAgent, StuckWithinTwoCellsOfTheGoalCountsAsArrived) {
   for (int i = 1; i < RobotAgent::kStuckTicks; ++i) EXPECT_FALSE(tick_at(near, truth, {0, 0}, 10.0f).report);
   RobotAgent::Step s = tick_at(near, truth, {0, 0}, 10.0f);
   ASSERT_TRUE(s.report);
-  EXPECT_EQ(*s.report, WaypointState::Arrived);
+  EXPECT_EQ(*s.report, WaypointState::BlockedNear);
   EXPECT_EQ(s.round, 5u);
   EXPECT_TRUE(s.path_changed);
   EXPECT_TRUE(s.path.empty());

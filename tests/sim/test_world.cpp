@@ -2,9 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <numeric>
 #include <vector>
 
 #include "swarm_test/ascii_grid.hpp"
+#include "swarm_test/motion_cases.hpp"
 
 namespace swarm::sim {
 namespace {
@@ -18,116 +21,160 @@ constexpr LidarConfig kLidar{360, 15.0f};
 
 OccupancyGrid open_room(int w, int h) { return OccupancyGrid(w, h, 0.2, 0.0, 0.0, CellState::Free); }
 
-TEST(World, MovesOneCellPerTickAlongTheCommandedPath) {
+TEST(World, MovesOneCellPerTickAlongTheRoute) {
   World w(open_room(5, 5), {{0, 0}}, kLidar);
-  w.command(0, {{0, 0}, {1, 1}, {2, 1}, {3, 2}});
+  w.command(0, 7, {{0, 0}, {1, 1}, {2, 1}, {3, 2}});
+  EXPECT_EQ(w.route(0).state, RouteState::Active);
   w.move();
   EXPECT_EQ(w.robots()[0], (Cell{1, 1}));
+  EXPECT_EQ(w.route(0).step, 1u);
   w.move();
   EXPECT_EQ(w.robots()[0], (Cell{2, 1}));
   w.move();
   EXPECT_EQ(w.robots()[0], (Cell{3, 2}));
-  w.move();  // end of the path: stays
+  EXPECT_EQ(w.route(0).state, RouteState::Finished);
+  EXPECT_EQ(w.route(0).id, 7u);
+  w.move();  // the end of the route: stays
   EXPECT_EQ(w.robots()[0], (Cell{3, 2}));
-  EXPECT_EQ(w.moves(), 3u);
-  EXPECT_EQ(w.wall_stops(), 0u);
-  EXPECT_EQ(w.blocked_moves(), 0u);
+  EXPECT_EQ(w.total_counts().moves, 3u);
+  EXPECT_EQ(w.total_counts().wall_stops, 0u);
+  EXPECT_EQ(w.total_counts().blocked_moves, 0u);
 }
 
-TEST(World, APathContinuesFromTheRobotsPlaceInIt) {
-  World w(open_room(5, 1), {{2, 0}}, kLidar);
-  // The robot is at index 2: it goes on to (3, 0), not back to (0, 0).
-  w.command(0, {{0, 0}, {1, 0}, {2, 0}, {3, 0}});
-  w.move();
-  EXPECT_EQ(w.robots()[0], (Cell{3, 0}));
-  // A path starting next to the robot (Chebyshev distance 1) is taken from its first cell.
-  w.command(0, {{4, 0}});
-  w.move();
-  EXPECT_EQ(w.robots()[0], (Cell{4, 0}));
-  EXPECT_EQ(w.moves(), 2u);
-}
-
-TEST(World, APathNeitherContainingNorNextToTheRobotIsIgnored) {
+TEST(World, ARouteNotStartingOnTheRobotsCellIsRejectedAndStopsIt) {
   World w(open_room(6, 6), {{0, 0}}, kLidar);
-  w.command(0, {{2, 2}, {3, 3}});  // starts 2 cells away
+  w.command(0, 1, {{0, 0}, {1, 0}, {2, 0}, {3, 0}});
+  w.move();
+  w.command(0, 2, {{0, 0}, {1, 0}, {2, 0}});  // the robot is on (1, 0) already
+  EXPECT_EQ(w.route(0).state, RouteState::Rejected);
+  EXPECT_EQ(w.route(0).id, 2u);
   for (int i = 0; i < 3; ++i) w.move();
-  EXPECT_EQ(w.robots()[0], (Cell{0, 0}));
-  // It also replaces the path the robot was following: the robot stops (its agent sees that it
-  // does not move and re-plans).
-  w.command(0, {{0, 0}, {1, 0}, {2, 0}, {3, 0}});
-  w.move();
   EXPECT_EQ(w.robots()[0], (Cell{1, 0}));
-  w.command(0, {{5, 5}});
-  w.move();
-  w.move();
-  EXPECT_EQ(w.robots()[0], (Cell{1, 0}));
-  EXPECT_EQ(w.moves(), 1u);
-  EXPECT_EQ(w.wall_stops(), 0u);
-  EXPECT_EQ(w.blocked_moves(), 0u);
+  EXPECT_EQ(w.counts()[0].routes_rejected, 1u);
+  w.command(0, 3, {});  // an empty route: stop
+  EXPECT_EQ(w.route(0).state, RouteState::Stopped);
 }
 
-TEST(World, ADiagonalMoveMayNotCutACornerAndStopsTheRobot) {
+TEST(World, AWaitKeepsTheRobotAndIsNoWallStop) {
+  World w(open_room(3, 1), {{0, 0}}, kLidar);
+  w.command(0, 1, {{0, 0}, {0, 0}, {0, 0}, {1, 0}});
+  w.move();
+  w.move();
+  EXPECT_EQ(w.robots()[0], (Cell{0, 0}));
+  EXPECT_EQ(w.route(0).step, 2u);
+  w.move();
+  EXPECT_EQ(w.robots()[0], (Cell{1, 0}));
+  EXPECT_EQ(w.route(0).state, RouteState::Finished);
+  EXPECT_EQ(w.total_counts().waits, 2u);
+  EXPECT_EQ(w.total_counts().moves, 1u);
+  EXPECT_EQ(w.total_counts().wall_stops, 0u);
+}
+
+// Regression: a route through a cell twice used to skip ahead (the robot's place was looked up
+// from the end of the path).
+TEST(World, ARouteThroughACellTwiceIsFollowedToItsEnd) {
+  World w(open_room(3, 3), {{0, 0}}, kLidar);
+  const std::vector<Cell> loop = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}, {1, 0}, {2, 0}};
+  w.set_motion(planner::MotionModel::four());
+  w.command(0, 1, loop);
+  std::vector<Cell> visited = {w.robots()[0]};
+  for (int i = 0; i < 8; ++i) {
+    w.move();
+    visited.push_back(w.robots()[0]);
+  }
+  EXPECT_EQ(std::vector<Cell>(visited.begin(), visited.begin() + 7), loop);
+  EXPECT_EQ(w.robots()[0], (Cell{2, 0}));
+  EXPECT_EQ(w.total_counts().moves, 6u);
+}
+
+TEST(World, AnIllegalActionIsAWallStopThatAbandonsTheRoute) {
   const OccupancyGrid truth = grid_from({
       "...",  // y = 1
       ".#.",  // y = 0
   });
   World w(truth, {{0, 0}}, kLidar);
-  // (0,0)->(1,1) passes the corner of the wall (1, 0): refused, counted, and the path dropped.
-  w.command(0, {{0, 0}, {1, 1}, {2, 1}});
+  // (0,0)->(1,1) passes the corner of the wall (1, 0): refused, counted, and the route dropped.
+  w.command(0, 1, {{0, 0}, {1, 1}, {2, 1}});
   w.move();
   EXPECT_EQ(w.robots()[0], (Cell{0, 0}));
-  EXPECT_EQ(w.wall_stops(), 1u);
-  w.move();  // no path left: neither a move nor another wall stop
-  EXPECT_EQ(w.robots()[0], (Cell{0, 0}));
-  EXPECT_EQ(w.wall_stops(), 1u);
+  EXPECT_EQ(w.route(0).state, RouteState::Abandoned);
+  EXPECT_EQ(w.total_counts().wall_stops, 1u);
   // The same cell reached without cutting the corner.
-  w.command(0, {{0, 0}, {0, 1}, {1, 1}});
+  w.command(0, 2, {{0, 0}, {0, 1}, {1, 1}});
   w.move();
   w.move();
   EXPECT_EQ(w.robots()[0], (Cell{1, 1}));
-  EXPECT_EQ(w.moves(), 2u);
-  // Straight into the wall: another stop.
-  w.command(0, {{1, 1}, {1, 0}});
+  // Under the 4-connected model of coverage and MAPF a diagonal is no action at all.
+  w.set_motion(planner::MotionModel::four());
+  w.command(0, 3, {{1, 1}, {2, 0}});
   w.move();
   EXPECT_EQ(w.robots()[0], (Cell{1, 1}));
-  EXPECT_EQ(w.wall_stops(), 2u);
-  EXPECT_EQ(w.blocked_moves(), 0u);
+  EXPECT_EQ(w.total_counts().wall_stops, 2u);
 }
 
-TEST(World, TwoRobotsContendingForACellTheLowerIdMovesAndTheOtherWaits) {
-  World w(open_room(3, 3), {{0, 1}, {2, 1}}, kLidar);
-  w.command(0, {{0, 1}, {1, 1}, {1, 2}});
-  w.command(1, {{2, 1}, {1, 1}, {0, 1}});
-  // Tick 1: robot 0 takes (1, 1); robot 1 finds it held and waits (one blocked move).
-  w.move();
-  EXPECT_EQ(w.robots()[0], (Cell{1, 1}));
-  EXPECT_EQ(w.robots()[1], (Cell{2, 1}));
-  EXPECT_EQ(w.blocked_moves(), 1u);
-  // Tick 2: robot 0 moves on to (1, 2) first, so robot 1 gets (1, 1) in the same tick.
-  w.move();
-  EXPECT_EQ(w.robots()[0], (Cell{1, 2}));
-  EXPECT_EQ(w.robots()[1], (Cell{1, 1}));
-  // Tick 3: robot 1 finishes its path.
-  w.move();
-  EXPECT_EQ(w.robots()[1], (Cell{0, 1}));
-  EXPECT_EQ(w.blocked_moves(), 1u);
-  EXPECT_EQ(w.moves(), 4u);
-  EXPECT_EQ(w.wall_stops(), 0u);
+// The shared table (swarm_test/motion_cases.hpp), as the simulator executes it.
+TEST(Resolve, TheSharedMotionCases) {
+  for (const auto& c : swarm::test::motion_cases()) {
+    const Resolution r = resolve(c.from, c.to);
+    EXPECT_EQ(r.events.vertex, static_cast<std::uint64_t>(c.vertex_events)) << c.name;
+    EXPECT_EQ(r.events.edge, static_cast<std::uint64_t>(c.edge_events)) << c.name;
+    EXPECT_EQ(r.next, c.after) << c.name;
+    EXPECT_EQ(std::count(r.blocked.begin(), r.blocked.end(), 1), c.blocked) << c.name;
+  }
 }
 
-TEST(World, IdOrderNotPositionDecidesWhoMovesFirst) {
-  // Mirror image of the test above: now robot 1 comes from the left and still loses.
-  World w(open_room(3, 1), {{2, 0}, {0, 0}}, kLidar);
-  w.command(0, {{2, 0}, {1, 0}});
-  w.command(1, {{0, 0}, {1, 0}});
+TEST(Resolve, PermutingRobotIdsChangesNoOutcome) {
+  for (const auto& c : swarm::test::motion_cases()) {
+    std::vector<int> perm(c.from.size());
+    std::iota(perm.begin(), perm.end(), 0);
+    const Resolution base = resolve(c.from, c.to);
+    int tried = 0;
+    do {
+      std::vector<Cell> from, to;
+      for (int i : perm) {
+        from.push_back(c.from[i]);
+        to.push_back(c.to[i]);
+      }
+      const Resolution r = resolve(from, to);
+      EXPECT_EQ(r.events.vertex, base.events.vertex) << c.name;
+      EXPECT_EQ(r.events.edge, base.events.edge) << c.name;
+      for (std::size_t k = 0; k < perm.size(); ++k) {
+        EXPECT_EQ(r.next[k], base.next[perm[k]]) << c.name;
+        EXPECT_EQ(r.blocked[k], base.blocked[perm[k]]) << c.name;
+      }
+      ++tried;
+    } while (std::next_permutation(perm.begin(), perm.end()));
+    EXPECT_GE(tried, 1);
+  }
+}
+
+TEST(World, ConflictsAreCountedPerRobotAndRetriedEveryTick) {
+  World w(open_room(3, 1), {{0, 0}, {1, 0}}, kLidar);
+  w.command(0, 1, {{0, 0}, {1, 0}});
+  w.command(1, 1, {{1, 0}, {0, 0}});
   w.move();
-  EXPECT_EQ(w.robots()[0], (Cell{1, 0}));
-  EXPECT_EQ(w.robots()[1], (Cell{0, 0}));
-  EXPECT_EQ(w.blocked_moves(), 1u);
-  // The waiting robot keeps its path and retries every tick: one more blocked move per tick.
+  w.move();  // they try the same swap again
+  EXPECT_EQ(w.robots()[0], (Cell{0, 0}));
+  EXPECT_EQ(w.events().edge, 2u);
+  EXPECT_EQ(w.counts()[0].edge_conflicts, 2u);
+  EXPECT_EQ(w.counts()[1].edge_conflicts, 2u);
+  EXPECT_EQ(w.route(0).state, RouteState::Active);
+}
+
+TEST(World, AFootprintCoversAroundTheRobot) {
+  // 5 x 5 open room; radius 1 covers the robot's cell and its 4 orthogonal neighbours.
+  World w(open_room(5, 5), {{2, 2}}, kLidar, 1);
+  EXPECT_EQ(w.coverage_target_cells(), 25);
+  EXPECT_EQ(w.covered_cells(), 5);
+  EXPECT_TRUE(w.is_covered({2, 3}));
+  EXPECT_FALSE(w.is_covered({3, 3}));
+  w.command(0, 1, {{2, 2}, {3, 2}});
   w.move();
-  EXPECT_EQ(w.blocked_moves(), 2u);
-  EXPECT_EQ(w.robots()[1], (Cell{0, 0}));
+  // (3,2) adds (4,2), (3,3), (3,1).
+  EXPECT_EQ(w.covered_cells(), 8);
+  EXPECT_DOUBLE_EQ(w.covered_fraction(), 8.0 / 25.0);
+  World bare(open_room(5, 5), {{2, 2}}, kLidar);  // radius 0: the cell stood on only
+  EXPECT_EQ(bare.covered_cells(), 1);
 }
 
 TEST(World, ExploredFractionAfterOneScanCountsSeenReachableFreeCells) {
@@ -153,7 +200,7 @@ TEST(World, ExploredFractionAfterOneScanCountsSeenReachableFreeCells) {
   w.scan(0, ranges);
   EXPECT_DOUBLE_EQ(w.explored_fraction(), 5.0 / 7.0);
   // From (3, 1) the rest is seen: all 7.
-  w.command(0, {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1}});
+  w.command(0, 1, {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1}});
   for (int i = 0; i < 4; ++i) w.move();
   ASSERT_EQ(w.robots()[0], (Cell{3, 1}));
   w.scan(0, ranges);

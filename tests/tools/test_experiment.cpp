@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "swarm_test/files.hpp"
+#include "swarm_test/metrics_fixture.hpp"
 #include "experiment.hpp"
 #include "experiment_command.hpp"
 #include "swarm/config/scenario.hpp"
@@ -28,16 +29,9 @@ using swarm::test::contains;
 // A run directory as the GCS leaves it (only what the experiment reads).
 void fake_run(const std::string& dir, const std::string& map, const std::string& mode, int seed,
               int steps, int rounds, bool complete = true, double explored = 0.999) {
-  std::ostringstream m;
-  m << R"({"scenario": "default", "map": ")" << map << R"(", "mode": ")" << mode
-    << R"(", "seed": )" << seed << R"(, "groups": 3, "robots_per_group": 3, "robots": 9, "steps": )"
-    << steps << R"(, "steps_to_99": )" << steps - 10 << R"(, "planning_rounds": )" << rounds
-    << R"(, "explored_fraction": )" << explored << R"(, "complete": )" << (complete ? "true" : "false")
-    << R"(, "ticks_run": )" << steps + 1 << R"(, "wall_seconds": 2.5,
-    "traffic": {"by_topic": {"patch_up": {"bytes": 1000}, "patch_gcs": {"bytes": 500},
-                             "sense": {"bytes": 99999}},
-                "total": {"messages": 10, "bytes": 101499}}})";
-  spit(dir + "/metrics.json", m.str());
+  spit(dir + "/metrics.json", swarm::record::to_json(swarm::test::run_metrics(map, mode, static_cast<std::uint64_t>(seed),
+                                                        static_cast<std::uint32_t>(steps),
+                                                        static_cast<std::uint32_t>(rounds), complete, explored)).dump(2));
   spit(dir + "/scenario.pbtxt", "map: \"" + map + "\"\ntick_seconds: 0.2\n");
 }
 

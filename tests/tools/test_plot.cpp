@@ -105,3 +105,42 @@ TEST(Plot, NiceTicksCoverTheValues) {
     EXPECT_LE(t.top / t.step, 9.01) << v;
   }
 }
+
+// Tukey boxes: quartiles by linear interpolation between order statistics (type 7).
+TEST(Plot, BoxStatsOfTenSamples) {
+  const BoxStats b = box_stats({9, 1, 2, 3, 4, 5, 6, 7, 8, 100, NAN});
+  EXPECT_EQ(b.n, 10u);                // the NaN is ignored
+  EXPECT_DOUBLE_EQ(b.q1, 3.25);       // x[2] + 0.25 (x[3] - x[2]), (10 - 1) * 0.25 = 2.25
+  EXPECT_DOUBLE_EQ(b.median, 5.5);
+  EXPECT_DOUBLE_EQ(b.q3, 7.75);
+  EXPECT_DOUBLE_EQ(b.low, 1);         // fences at 3.25 - 6.75 and 7.75 + 6.75 = 14.5
+  EXPECT_DOUBLE_EQ(b.high, 9);
+  EXPECT_EQ(b.outliers, (std::vector<double>{100}));
+  EXPECT_EQ(box_stats({}).n, 0u);
+  EXPECT_TRUE(std::isnan(box_stats({}).median));
+}
+
+TEST(Plot, DrawsBoxPanels) {
+  BoxPanel p;
+  p.title = "iterations";
+  p.y_label = "iterations";
+  p.groups = {"far", "near"};
+  p.series.push_back({"standalone", {213, 94, 0}, {{100, 120, 130, 900}, {2000, 2500, 10000}}});
+  p.series.push_back({"bfs-kmeans", {0, 114, 178}, {{3000, 4000, 5000, 6000}, {}}});
+  Figure f;
+  f.title = "boxes";
+  f.panels = {p};
+  const std::string png = temp_png("boxes.png");
+  write_figure_png(f, png);
+  const cv::Mat img = cv::imread(png, cv::IMREAD_COLOR);
+  ASSERT_FALSE(img.empty());
+  EXPECT_EQ(img.cols, 640);
+  int blue = 0;
+  for (int y = kFigureBandPx; y < img.rows; ++y) {
+    for (int x = 0; x < img.cols; ++x) {
+      const cv::Vec3b c = img.at<cv::Vec3b>(y, x);
+      blue += c[0] == 178 && c[1] == 114 && c[2] == 0;
+    }
+  }
+  EXPECT_GT(blue, 20) << "the bfs-kmeans box is drawn";
+}

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "swarm_test/files.hpp"
+#include "swarm_test/metrics_fixture.hpp"
 #include "commands.hpp"
 #include "run_command.hpp"
 #include "swarm/record/record.hpp"
@@ -22,6 +23,18 @@ using namespace swarm::tools;
 namespace cfg = swarm::config;
 
 namespace {
+
+// The numbers the summary tests expect (368 steps, 99 % at 351, 17 rounds, 1.23 MB in 4321 messages).
+swarm::record::RunMetrics summary_fixture() {
+  swarm::record::RunMetrics m = swarm::test::run_metrics("small", "group-frontier", 1, 368, 17, true, 0.995);
+  m.steps_to_99 = 351;
+  m.ticks_run = 368;
+  m.wall_seconds = 12.5;
+  m.ticks_per_second = 368 / 12.5;
+  m.traffic.total_messages = 4321;
+  m.traffic.total_bytes = 1234567;
+  return m;
+}
 
 using swarm::test::slurp;
 using swarm::test::spit;
@@ -51,11 +64,7 @@ std::string fake_bin(const TempDir& dir, const std::string& leader_script = "exi
     s.mutable_summary()->set_planning_rounds(17);
     w.append(s);
   }
-  spit(fixtures + "/metrics.json",
-       R"({"steps": 368, "steps_to_99": 351, "planning_rounds": 17, "explored_fraction": 0.995,
-           "complete": true, "ticks_run": 368, "wall_seconds": 12.5,
-           "traffic": {"by_topic": {"map": {"bytes": 5}},
-                       "total": {"messages": 4321, "bytes": 1234567}}})");
+  swarm::record::write_metrics(fixtures + "/metrics.json", summary_fixture());
   const std::string args = "echo \"args: $*\"\n";
   const std::string run_dir =
       "while [ $# -gt 0 ]; do case \"$1\" in --run-dir) RUN=\"$2\"; shift;; esac; shift; done\n";
@@ -198,11 +207,7 @@ TEST(RunCommandHelpers, LastLinesKeepWhatATerminalShows) {
 
 TEST(RunCommandHelpers, MetricsSummary) {
   TempDir dir;
-  spit(dir.file("m.json"),
-       R"({"steps": 368, "steps_to_99": 351, "planning_rounds": 17, "explored_fraction": 0.995,
-           "complete": true, "ticks_run": 368, "wall_seconds": 12.5,
-           "traffic": {"by_topic": {"map": {"bytes": 5}},
-                       "total": {"messages": 4321, "bytes": 1234567}}})");
+  swarm::record::write_metrics(dir.file("m.json"), summary_fixture());
   const std::string s = summarize_metrics(dir.file("m.json"));
   EXPECT_TRUE(contains(s, "steps            368 (99 % explored at step 351)")) << s;
   EXPECT_TRUE(contains(s, "planning rounds  17")) << s;
@@ -211,13 +216,36 @@ TEST(RunCommandHelpers, MetricsSummary) {
   EXPECT_TRUE(contains(s, "traffic          1.23 MB in 4321 messages")) << s;
   EXPECT_TRUE(contains(s, "complete")) << s;
   // steps_to_99 is null when 99 % was never reached; the line then has no "(99 % ...)".
-  spit(dir.file("n.json"), R"({"steps": 10, "steps_to_99": null, "complete": false})");
+  auto incomplete = summary_fixture();
+  incomplete.steps = 10;
+  incomplete.steps_to_99.reset();
+  incomplete.complete = false;
+  swarm::record::write_metrics(dir.file("n.json"), incomplete);
   const std::string n = summarize_metrics(dir.file("n.json"));
   EXPECT_TRUE(contains(n, "steps            10\n")) << n;
   EXPECT_TRUE(contains(n, "INCOMPLETE")) << n;
   spit(dir.file("bad.json"), "{not json");
   EXPECT_THROW((void)summarize_metrics(dir.file("bad.json")), std::runtime_error);
   EXPECT_THROW((void)summarize_metrics(dir.file("none.json")), std::runtime_error);
+  // A required key missing, or another schema version, is an error naming it.
+  auto j = swarm::record::to_json(summary_fixture());
+  j.erase("explored_fraction");
+  spit(dir.file("missing.json"), j.dump());
+  try {
+    (void)summarize_metrics(dir.file("missing.json"));
+    ADD_FAILURE() << "no error for a missing key";
+  } catch (const std::runtime_error& e) {
+    EXPECT_TRUE(contains(e.what(), "missing key 'explored_fraction'")) << e.what();
+  }
+  j = swarm::record::to_json(summary_fixture());
+  j["schema_version"] = 1;
+  spit(dir.file("old.json"), j.dump());
+  try {
+    (void)summarize_metrics(dir.file("old.json"));
+    ADD_FAILURE() << "no error for an unknown schema version";
+  } catch (const std::runtime_error& e) {
+    EXPECT_TRUE(contains(e.what(), "schema_version 1")) << e.what();
+  }
 }
 
 TEST(RunCommand, SuccessWritesTheRunDirectoryPictureAndSummary) {

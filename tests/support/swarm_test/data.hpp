@@ -1,5 +1,6 @@
-// Where tests find data that lives outside the repository: the team's MovingAI benchmark maps in
-// shared/benchmarks beside the checkout (set at configure time; $SWARM_BENCHMARKS_DIR overrides).
+// Where tests find data: the team's MovingAI benchmark maps in shared/benchmarks beside the
+// checkout (set at configure time; $SWARM_BENCHMARKS_DIR overrides), and the source tree's own
+// files (built-in maps, scenarios).
 #pragma once
 
 #include <cstdlib>
@@ -11,5 +12,8 @@ inline std::string benchmarks_dir() {
   const char* env = std::getenv("SWARM_BENCHMARKS_DIR");
   return env != nullptr && *env != '\0' ? env : SWARM_BENCHMARKS_DIR;
 }
+
+// The source tree (maps/, scenarios/), as configured.
+inline std::string source_dir() { return SWARM_TEST_SOURCE_DIR; }
 
 }  // namespace swarm::test

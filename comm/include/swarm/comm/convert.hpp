@@ -7,6 +7,8 @@
 
 #include "swarm/planner/grid.hpp"
 #include "swarm/planner/map_patch.hpp"
+#include "swarm/planner/route.hpp"
+#include "swarm_msgs.h"
 
 namespace swarm::comm {
 
@@ -17,12 +19,20 @@ std::vector<planner::Cell> from_xy(const std::vector<std::int16_t>& xy);
 std::vector<std::int16_t> to_xy(const std::vector<std::optional<planner::Cell>>& cells);
 std::vector<std::optional<planner::Cell>> optional_cells_from_xy(const std::vector<std::int16_t>& xy);
 
+// The simulator's report on a robot's latest route, carried in its Sense.
+planner::RouteProgress route_progress(const msgs::Sense& sense);
+
 // Map patches in the run's encoding (scenario map_encoding; see planner/map_patch.hpp).
 planner::PatchEncoding patch_encoding(int scenario_map_encoding);
 std::vector<std::uint8_t> encode_patch(const std::vector<planner::CellChange>& changes, planner::PatchEncoding encoding);
 // Throws std::runtime_error on a malformed patch (a peer bug, not an expected condition). The
 // encoding is read from the patch itself.
 std::vector<planner::CellChange> decode_patch(const std::vector<std::uint8_t>& data);
+
+// Cell sets (masks of a width x height map, 1 = in the set), run-length encoded.
+std::vector<std::uint8_t> encode_mask(const std::vector<std::uint8_t>& mask, int width, int height);
+// Throws std::runtime_error when the bytes do not decode to a mask of that size.
+std::vector<std::uint8_t> decode_mask(const std::vector<std::uint8_t>& data, int width, int height);
 
 // Whole global maps: run-length, zstd-compressed when the run's encoding is ZstdRunLength.
 std::vector<std::uint8_t> encode_map(const planner::OccupancyGrid& map, planner::PatchEncoding encoding);

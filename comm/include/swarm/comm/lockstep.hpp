@@ -13,7 +13,7 @@
 // at any time; the mailbox holds each until its deliver tick (link.hpp) and hands the due ones
 // over sorted by (deliver tick, subscription order, sender, sequence number).
 //
-//   LockstepAgent agent(participant, topology, links, self);
+//   LockstepAgent agent(bus, topology, links, self);   // bus: a Participant (DDS) or a FakeBus
 //   agent.subscribe<msgs::MapPatch>(topic::patch_up(g), LinkClass::MemberLeader,
 //                                   [&](const msgs::MapPatch& p) { node.on_patch(p); });
 //   auto& out = agent.advertise<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, {gcs});
@@ -33,6 +33,7 @@
 // behind skips to the newest tick. Runs are then not reproducible, by nature.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
@@ -60,7 +61,7 @@ std::chrono::seconds stall_timeout();  // $SWARM_STALL_TIMEOUT seconds, default 
 
 class Mailbox {
  public:
-  Mailbox(Participant& participant, const Topology& topology, const LinkTable& links, AgentId self);
+  Mailbox(Bus& bus, const Topology& topology, const LinkTable& links, AgentId self);
   virtual ~Mailbox();
   Mailbox(const Mailbox&) = delete;
   Mailbox& operator=(const Mailbox&) = delete;
@@ -81,6 +82,10 @@ class Mailbox {
   template <class T>
   Outlet<T>& advertise(const std::string& topic_name, LinkClass link, std::vector<AgentId> receivers);
 
+  // Whether this mailbox already reads / writes a topic (test stand-ins complete a role's set).
+  bool subscribes(const std::string& topic_name) const;
+  bool advertises(const std::string& topic_name) const;
+
   // End of run: this agent's traffic and role numbers, sent to the GCS (which calls make_report
   // for its own). Waits briefly for the GCS to acknowledge.
   void send_report(const std::string& role, const std::string& extra_json);
@@ -88,9 +93,11 @@ class Mailbox {
 
   std::uint32_t tick() const { return tick_; }
   AgentId self() const { return self_; }
+  // Bookkeeping held for ticks not yet passed (flat over a run: for tests).
+  std::size_t arrival_ticks_held() const;
   const Topology& topology() const { return topology_; }
   TrafficAccount& traffic() { return traffic_; }
-  Participant& participant() { return participant_; }
+  Bus& bus() { return bus_; }
 
  protected:
   // Blocks until `expected` messages counted for tick k are here (throws after stall_timeout()),
@@ -102,13 +109,14 @@ class Mailbox {
   std::vector<std::uint32_t> take_sent_counts();
   // Every outlet sees its readers and every reader its writers (see Start-up above).
   bool outlets_matched(std::string* missing) const;
-  std::uint64_t arrivals_counted_for(std::uint32_t k) const;  // caller holds mutex_
+  std::uint64_t arrivals_counted_for(std::uint32_t k);  // caller holds mutex_
 
-  Participant& participant_;
+  Bus& bus_;
   Topology topology_;
   LinkTable links_;
   AgentId self_;
-  std::uint32_t tick_ = 0;
+  // Written by the owner's loop, read by DDS threads (LockstepClock::on_done): atomic.
+  std::atomic<std::uint32_t> tick_{0};
   LinkSender link_sender_;
   TrafficAccount traffic_;
 
@@ -150,8 +158,17 @@ class Mailbox {
               std::function<void()> run);
 
   std::vector<Held> held_;
-  std::map<std::uint32_t, std::uint64_t> agent_arrivals_;  // stamp tick -> count (from agents)
-  std::map<std::uint32_t, std::uint64_t> sim_arrivals_;    // stamp tick -> count (from the sim)
+  // Arrivals counted for the barrier: per stamp tick for the ticks still ahead, and one running
+  // total for those behind (folded in as the ticks pass, so memory stays flat over long runs).
+  struct Arrivals {
+    std::uint64_t below = 0;  // arrivals stamped before `watermark`
+    std::uint32_t watermark = 0;
+    std::map<std::uint32_t, std::uint64_t> by_tick;
+    void add(std::uint32_t tick) { tick < watermark ? ++below : ++by_tick[tick]; }
+    std::uint64_t count_before(std::uint32_t k);  // folds every tick < k into `below`
+  };
+  Arrivals agent_arrivals_;  // from agents: due before acting at k if stamped < k
+  Arrivals sim_arrivals_;    // from the sim: due if stamped <= k
   std::vector<std::uint32_t> sent_counts_;
   std::vector<ReaderEntry> readers_;
   std::deque<std::unique_ptr<OutletBase>> outlets_;
@@ -164,7 +181,7 @@ class Mailbox::Outlet : public Mailbox::OutletBase {
  public:
   Outlet(Mailbox& box, const std::string& topic_name, LinkClass link, std::vector<AgentId> receivers)
       : box_(box),
-        writer_(box.participant_, topic_name),
+        writer_(box.bus_, topic_name),
         name_(topic_name),
         family_(topic::family(topic_name)),
         link_(link),
@@ -211,7 +228,7 @@ void Mailbox::subscribe(const std::string& topic_name, LinkClass link, std::func
   const std::uint64_t topic_hash = hash_string(topic_name);
   const std::string family = topic::family(topic_name);
   auto reader = std::make_shared<Reader<T>>(
-      participant_, topic_name, [this, link, order, topic_hash, family, handler, delivery](T&& msg) {
+      bus_, topic_name, [this, link, order, topic_hash, family, handler, delivery](T&& msg) {
         const std::size_t bytes = wire_size(msg);
         const msgs::Stamp& h = msg.header();
         const std::uint32_t lost = lost_transmissions(links_, link, h.sender(), topic_hash, h.seq(), self_);
@@ -241,7 +258,7 @@ Mailbox::Outlet<T>& Mailbox::advertise(const std::string& topic_name, LinkClass 
 // A robot's or the GCS's side of the protocol.
 class LockstepAgent : public Mailbox {
  public:
-  LockstepAgent(Participant& participant, const Topology& topology, const LinkTable& links, AgentId self);
+  LockstepAgent(Bus& bus, const Topology& topology, const LinkTable& links, AgentId self);
   ~LockstepAgent() override;
 
   // Waits until every outlet sees all its receivers, then tells the clock master this agent is
@@ -283,7 +300,7 @@ struct AgentLoss {
 // The simulator's side: it owns the clock and the barrier counts.
 class LockstepClock : public Mailbox {
  public:
-  LockstepClock(Participant& participant, const Topology& topology, const LinkTable& links);
+  LockstepClock(Bus& bus, const Topology& topology, const LinkTable& links);
   ~LockstepClock() override;
 
   // Blocks until every agent has announced itself ready (throws after stall_timeout()).
@@ -300,22 +317,23 @@ class LockstepClock : public Mailbox {
   bool wait_done(std::uint32_t k);
   std::vector<AgentLoss> losses() const;
   bool is_lost(AgentId a) const;
+  // Ticks whose Done markers are held (at most the ones not finished yet: for tests).
+  std::size_t done_ticks_held() const;
 
  private:
-  class HeartbeatListener;
-  void on_done(msgs::Done&& d, const eprosima::fastdds::dds::InstanceHandle_t& writer);
-  void on_liveliness_lost(const eprosima::fastdds::dds::InstanceHandle_t& writer);
+  void on_done(msgs::Done&& d, WriterId writer);
+  void on_liveliness_lost(WriterId writer);
 
   std::unique_ptr<Writer<msgs::Clock>> clock_writer_;
-  std::unique_ptr<HeartbeatListener> heartbeat_;
+  std::unique_ptr<Reader<msgs::Done>> heartbeat_;
   // guarded by mutex_:
   std::vector<std::uint64_t> from_agents_;        // cumulative messages agents sent to each agent
-  std::map<std::uint32_t, std::vector<bool>> done_;  // tick -> which agents reported
+  std::map<std::uint32_t, std::vector<bool>> done_;  // tick -> which agents reported (ticks not yet finished)
   std::vector<bool> ready_;
   bool complete_ = false;
   std::vector<std::uint64_t> from_sim_;  // cumulative messages the sim sent to each agent
   std::chrono::steady_clock::time_point realtime_start_{};
-  std::map<eprosima::fastdds::dds::InstanceHandle_t, AgentId> writer_agent_;
+  std::map<WriterId, AgentId> writer_agent_;
   std::vector<bool> lost_;
   std::vector<AgentLoss> losses_;
   bool stopped_ = false;

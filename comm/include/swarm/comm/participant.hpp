@@ -1,6 +1,7 @@
-// One DDS participant per process, with the run's isolation applied: its own domain id and a
-// partition unique to the run, so parallel runs on one machine never see each other's samples.
-// QoS comes from the XML profile (deploy/fastdds_loopback.xml by default), not from code.
+// The Fast DDS implementation of the Bus (bus.hpp): one DDS participant per process, with the run's
+// isolation applied: its own domain id and a partition unique to the run, so parallel runs on one
+// machine never see each other's samples. QoS comes from the XML profile
+// (deploy/fastdds_loopback.xml by default), not from code.
 //
 //   Participant p({.domain = 7, .partition = "swarm-123", .name = "gcs"});
 //   Writer<msgs::Clock> w(p, "clock");
@@ -14,11 +15,14 @@
 #include <mutex>
 #include <string>
 
-#include <fastdds/dds/domain/DomainParticipant.hpp>
-#include <fastdds/dds/publisher/Publisher.hpp>
-#include <fastdds/dds/subscriber/Subscriber.hpp>
-#include <fastdds/dds/topic/Topic.hpp>
-#include <fastdds/dds/topic/TypeSupport.hpp>
+#include "swarm/comm/bus.hpp"
+
+namespace eprosima::fastdds::dds {
+class DomainParticipant;
+class Publisher;
+class Subscriber;
+class Topic;
+}  // namespace eprosima::fastdds::dds
 
 namespace swarm::comm {
 
@@ -33,30 +37,22 @@ struct DdsOptions {
 // The profile file a process uses when none is given (see DdsOptions::profile_path).
 std::string default_profile_path();
 
-class Participant {
+class Participant : public Bus {
  public:
   explicit Participant(const DdsOptions& options);
-  ~Participant();
+  ~Participant() override;
   Participant(const Participant&) = delete;
   Participant& operator=(const Participant&) = delete;
 
-  // The topic `name` of type T's PubSubType, created on first use.
-  template <class PubSubT>
-  eprosima::fastdds::dds::Topic* topic(const std::string& name) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    auto it = topics_.find(name);
-    if (it != topics_.end()) return it->second;
-    eprosima::fastdds::dds::TypeSupport type(new PubSubT());
-    return create_topic(name, type);
-  }
+  std::unique_ptr<RawWriter> make_writer(const std::string& topic, const MessageType& type,
+                                         EndpointKind kind) override;
+  std::unique_ptr<RawReader> make_reader(const std::string& topic, const MessageType& type, EndpointKind kind,
+                                         ReaderCallbacks callbacks) override;
 
-  eprosima::fastdds::dds::Publisher* publisher() { return publisher_; }
-  eprosima::fastdds::dds::Subscriber* subscriber() { return subscriber_; }
   const DdsOptions& options() const { return options_; }
 
  private:
-  eprosima::fastdds::dds::Topic* create_topic(const std::string& name,
-                                              eprosima::fastdds::dds::TypeSupport type);
+  eprosima::fastdds::dds::Topic* topic(const std::string& name, const MessageType& type);
 
   DdsOptions options_;
   eprosima::fastdds::dds::DomainParticipant* participant_ = nullptr;

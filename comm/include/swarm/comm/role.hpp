@@ -53,14 +53,19 @@ RoleSetup load_role(const RoleOptions& options, RoleKind kind, const std::string
 
 LinkTable link_table(const swarm::scenario::Scenario& scenario, const Topology& topology);
 
-// Called once a role's work is done and acknowledged (its report sent, its outputs written).
-// From then on an abort inside Fast DDS's own threads during teardown is logged and the process
-// exits 0: Fast DDS 2.9.1 can hit an assertion in its remote-participant lease check
-// (PDP::check_remote_participant_liveliness) while the run's other processes leave, which would
-// otherwise fail a run that already finished correctly (seen in 1 of 45 runs). Likewise a
-// teardown that hangs (eProsima/Fast-DDS#6502 describes a deadlock there; seen about 1 run in 45)
-// is cut short: 10 s after this call the process exits 0 whatever DDS is doing.
-void mark_work_done(const std::string& role);
+// Ends the process once its work is done and acknowledged (its report sent, its outputs written),
+// with exit status 0 and WITHOUT tearing down Fast DDS: Fast DDS 2.9.1 can abort in its
+// remote-participant lease check (PDP::check_remote_participant_liveliness) or deadlock
+// (eProsima/Fast-DDS#6502) while the run's other processes leave (seen about 1 run in 45). A
+// process that dies by a signal must fail the run (tools/supervisor.hpp), so the teardown, which
+// has nothing left to do for a finished role, is skipped rather than its crash excused. Shared
+// memory segments of an exited participant are reclaimed by Fast DDS (checked: /dev/shm does not
+// grow over runs).
+//
+// Test hook: with $SWARM_ABORT_AFTER_WORK set to this agent's name (e.g. member-0-1) the process
+// aborts here instead, as Fast DDS's teardown might: the run must then fail, naming the process
+// and the signal (tests/integration/test_bad_input.cpp).
+[[noreturn]] void exit_after_work(const std::string& agent);
 
 // Parses argv, runs body, and maps exceptions to the exit codes above.
 int run_role(CLI::App& app, int argc, char** argv, const std::string& role, const std::function<int()>& body);

@@ -60,11 +60,17 @@ inline const std::string kGroupStatus = "group_status";
 inline const std::string kHeartbeat = "heartbeat";
 inline const std::string kPlanReport = "plan_report";
 inline const std::string kReport = "report";
+inline const std::string kPhase = "phase";
+inline const std::string kTaskOrder = "task_order";
+inline const std::string kTaskReport = "task_report";
 inline std::string sense(AgentId robot) { return "sense_" + std::to_string(robot); }
 inline std::string patch_up(int group) { return "patch_up_g" + std::to_string(group); }
 inline std::string patch_down(int group) { return "patch_down_g" + std::to_string(group); }
 inline std::string assign(int group) { return "assign_g" + std::to_string(group); }
 inline std::string status(int group) { return "status_g" + std::to_string(group); }
+inline std::string route(int group) { return "route_g" + std::to_string(group); }
+inline std::string release(int group) { return "release_g" + std::to_string(group); }
+inline std::string progress(int group) { return "progress_g" + std::to_string(group); }
 // "sense_3" -> "sense", "patch_up_g1" -> "patch_up".
 std::string family(const std::string& topic_name);
 }  // namespace topic

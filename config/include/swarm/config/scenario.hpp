@@ -70,19 +70,44 @@ void validate(const swarm::scenario::Scenario& scenario, const std::string& sour
 // The inverse of parse_mode: "group-frontier", "baseline" or "ideal".
 [[nodiscard]] std::string mode_name(swarm::scenario::Mode mode);
 
+// ---- Missions ----------------------------------------------------------------------------------
+
+// The kinds of task a phase runs, in the order of scenario.proto's Phase oneof.
+enum class TaskKind { Explore, Cover, Mapf, Collect };
+
+// "explore" | "cover" | "mapf" | "collect".
+[[nodiscard]] std::string task_name(TaskKind kind);
+// The inverse of task_name; a ConfigError listing the accepted names otherwise.
+[[nodiscard]] TaskKind parse_task(const std::string& name);
+[[nodiscard]] TaskKind task_of(const swarm::scenario::Phase& phase);
+
+// The phases a scenario's mission runs, in order, each with its full configuration: the mission's
+// phases, or (no mission) explore alone with the top-level `explore`. An explore phase's settings
+// are merged over the top-level `explore` (so `--mode` and the top-level settings apply to it).
+[[nodiscard]] std::vector<swarm::scenario::Phase> mission_phases(const swarm::scenario::Scenario& scenario);
+
+// `--mission explore,cover`: replaces the scenario's mission by these phases with default settings.
+// Throws ConfigError naming an unknown task.
+void set_mission(swarm::scenario::Scenario& scenario, const std::vector<std::string>& tasks);
+
 // ---- Data files and the world ----------------------------------------------------------------
 
 // The folder holding maps/ and scenarios/: $SWARM_DATA_DIR if set and non-empty, else the source
 // tree this library was built from.
 [[nodiscard]] std::string data_dir();
 
-// The built-in maps, in maps/ of data_dir(): open, maze1, maze2, small.
+// The built-in maps, in maps/ of data_dir(): open, maze1, maze2, small, clutter, empty (Group-k's
+// cleaning rooms), warehouse-5x8 (the MAPF paper's world, one-cell aisles), terminal, rectangle
+// (the DARP comparisons' complex and near-empty maps).
 [[nodiscard]] std::vector<std::string> builtin_map_names();
 
 // A built-in name gives data_dir()/maps/NAME.yaml; anything else is a path to a map_server YAML
 // file, relative paths taken from `scenario_dir` (the scenario file's folder; "" = the working
 // directory). Throws ConfigError if neither exists.
 [[nodiscard]] std::string resolve_map_path(const std::string& map, const std::string& scenario_dir);
+
+// The largest map side a run accepts: cells travel as 16-bit signed coordinates.
+inline constexpr int kMaxMapSide = 32767;
 
 // Everything a run needs that follows from the scenario and its map. Only the simulator (and
 // offline tools) may hold `truth`: agents learn the world from their scans.
@@ -99,7 +124,8 @@ struct World {
 // validate()s `scenario`, loads its map, picks the start and the robots' cells (see World).
 // `source` names the scenario in messages (default: "scenario 'NAME'"). Throws ConfigError when
 // the map cannot be read, or the start lies outside the map, in a wall or unknown cell, or where
-// fewer free cells are reachable than there are robots; the message suggests a start that works.
+// fewer free cells are reachable than there are robots, or the map has a side longer than
+// kMaxMapSide; the message suggests a start that works.
 [[nodiscard]] World resolve_world(const swarm::scenario::Scenario& scenario,
                                   const std::string& scenario_dir, const std::string& source = {});
 

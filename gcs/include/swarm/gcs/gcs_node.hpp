@@ -1,10 +1,12 @@
-// swarm-gcs's node: the Mission wired to its topics, plus the run's outputs. It fuses the
-// leaders' map patches, starts planning rounds (sending each leader the delayed global map),
-// declares completion, shows progress, records the run (run.pb) and, once the simulator stops the
-// run, gathers every agent's report into metrics.json.
+// swarm-gcs's node: the mission's phase machine (gcs_task.hpp) wired to its topics, plus the
+// run's outputs. It fuses the leaders' map patches, runs each phase's GcsTask (exploration's
+// planning rounds, coverage's division, ...), starts the next phase when one is done, declares the
+// mission complete after the last, shows progress, records the run (run.pb) and, once the
+// simulator stops the run, gathers every agent's report into metrics.json.
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -13,6 +15,7 @@
 
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/comm/role.hpp"
+#include "swarm/gcs/gcs_task.hpp"
 #include "swarm/gcs/mission.hpp"
 #include "swarm/gcs/outages.hpp"
 #include "swarm/gcs/progress.hpp"
@@ -27,20 +30,30 @@ class GcsNode {
           Progress::Style progress);
   // One tick; returns true once the mission is complete.
   bool step(const msgs::Clock& clock);
-  // After the run stopped: waits for the agents' reports, writes metrics.json and closes run.pb.
-  void finish();
+  // After the run stopped: waits up to `wait` for the living agents' reports, writes metrics.json
+  // and closes run.pb. Throws std::runtime_error naming what is missing when the simulator's
+  // report (the ground truth the run is judged by) did not come or lacks a key.
+  void finish(std::chrono::milliseconds wait = std::chrono::seconds(15));
 
  private:
   void on_plan(const msgs::PlanReport& p);
+  void record_phase(std::uint32_t tick, bool ended, bool complete);
 
   comm::LockstepAgent& agent_;
   const comm::RoleSetup& setup_;
   std::string run_dir_;
-  Mission mission_;
-  planner::PatchEncoding encoding_;
+  Mission mission_;  // the fused map, and exploration's planning rounds
+  std::vector<swarm::scenario::Phase> phases_;
+  std::vector<std::unique_ptr<GcsTask>> tasks_;
+  std::uint32_t phase_ = 0;
+  std::vector<std::uint32_t> phase_starts_;
+  std::vector<std::uint32_t> phase_ends_;
+  GcsOutlets outlets_;
+  std::function<void(std::uint32_t, const std::string&)> announce_phase_;
+  std::vector<msgs::GroupStatus> statuses_;
+  std::vector<msgs::TaskReport> task_reports_;
   Progress progress_;
   record::RecordWriter record_;
-  comm::Mailbox::Outlet<msgs::RoundStart>& round_;
   std::unique_ptr<comm::Reader<msgs::AgentReport>> reports_reader_;
   std::mutex reports_mutex_;
   std::map<comm::AgentId, msgs::AgentReport> reports_;

@@ -2,10 +2,15 @@
 // on what it knows, and re-plans when it meets an obstacle. Used by swarm-member for its robot and
 // by swarm-leader for the leader's own robot.
 //
+// Its paths go to the simulator as routes (sim/world.hpp) numbered 1, 2, ...; every scan comes
+// with the simulator's word on the latest route it applied (planner::RouteProgress), so the robot knows
+// exactly where along its route it is, and that a route still in flight (sent, not yet applied:
+// a delayed link) must not be judged yet.
+//
 //   RobotAgent robot(map_width, map_height, resolution);
-//   auto changes = robot.sense(pose, ranges, max_range);  // send these to the leader
+//   auto changes = robot.sense(pose, ranges, max_range, report);  // send these to the leader
 //   robot.assign(round, waypoint);
-//   RobotAgent::Step s = robot.step();                     // s.path_changed -> send s.path to the sim
+//   RobotAgent::Step s = robot.step();  // s.path_changed -> send s.path as route s.route_id
 //
 // Unknown cells count as free for planning (optimistic), so a robot heads into unexplored space
 // and re-plans once its scans show the way is blocked. Not thread-safe.
@@ -16,40 +21,66 @@
 #include <vector>
 
 #include "swarm/planner/grid.hpp"
+#include "swarm/planner/route.hpp"
 
 namespace swarm::member {
 
-enum class WaypointState : std::uint8_t { Arrived = 1, Unreachable = 2 };
+// How a waypoint ended. BlockedNear: the robot could not get onto it for kStuckTicks (another
+// robot there or in the way) but stands within 2 cells: done for planning, never counted as reached.
+enum class WaypointState : std::uint8_t { Arrived = 1, Unreachable = 2, BlockedNear = 3 };
+
 
 class RobotAgent {
  public:
   RobotAgent(int width, int height, double resolution);
 
   // Integrates a scan taken at `pose` (ranges in cells); returns the cells it changed.
-  std::vector<planner::CellChange> sense(planner::Cell pose, const std::vector<float>& ranges, float max_range);
+  std::vector<planner::CellChange> sense(planner::Cell pose, const std::vector<float>& ranges, float max_range,
+                                         const planner::RouteProgress& route = {});
   // Map knowledge from elsewhere (the leader's group map); returns how many cells changed.
   int learn(const std::vector<planner::CellChange>& changes);
-  // A new waypoint for `round`; nullopt = stay.
+  // A new waypoint for `round`; nullopt = stay. Replaces a route being followed.
   void assign(std::uint32_t round, std::optional<planner::Cell> waypoint);
+
+  // Follow the leader's route `id` exactly (planner/route.hpp: cells[0] is where the robot stands
+  // when it starts), as far as index `release`; the objects under the robot are picked up at the
+  // indices in `picks` and dropped at those in `drops`. Replaces a waypoint or an earlier route.
+  // The robot drives the released part, then waits for release() to go on.
+  void follow(std::uint32_t id, std::vector<planner::Cell> cells, std::uint32_t release,
+              std::vector<std::uint32_t> picks = {}, std::vector<std::uint32_t> drops = {});
+  void release(std::uint32_t id, std::uint32_t up_to);
 
   struct Step {
     bool path_changed = false;
-    std::vector<planner::Cell> path;           // the new path (empty = stop), if path_changed
+    std::vector<planner::Cell> path;           // the new route (empty = stop), if path_changed
+    std::uint32_t route_id = 0;                // its number, if path_changed
+    std::vector<std::uint32_t> pick_steps;     // its pick-up and drop indices (following a route)
+    std::vector<std::uint32_t> drop_steps;
     std::optional<WaypointState> report;       // the waypoint is done with
     std::uint32_t round = 0;                   // the round the report belongs to
   };
   Step step();
 
+  // Where the robot is along the leader's route it follows (id 0: none): the index it stands on
+  // and the state (Active while it drives or waits for a release, Finished at the end, Abandoned
+  // when it cannot go on: a wall, or it is not where the route says).
+  planner::RouteProgress following() const { return follow_progress_; }
+
   const planner::OccupancyGrid& map() const { return map_; }
   planner::Cell pose() const { return pose_; }
   std::optional<planner::Cell> waypoint() const { return waypoint_; }
   std::uint64_t replans() const { return replans_; }
+  // The latest route sent (empty after a stop) and its number.
+  const std::vector<planner::Cell>& route() const { return path_; }
+  std::uint32_t route_id() const { return sent_id_; }
 
   // A robot that has not moved for this many ticks while it has a path tries a detour around the
   // cell in front of it (another robot, usually), and counts as arrived within 2 cells of its goal.
   static constexpr int kStuckTicks = 4;
 
  private:
+  bool in_flight() const { return report_.id != sent_id_; }
+  void step_following(Step& out);
   bool path_still_valid(std::size_t& at) const;
   bool replan(std::optional<planner::Cell> avoid);
 
@@ -61,7 +92,22 @@ class RobotAgent {
   std::uint32_t round_ = 0;
   std::vector<planner::Cell> path_;
   bool stop_sent_ = true;
+  std::uint32_t sent_id_ = 0;
+  planner::RouteProgress report_;
   std::uint64_t replans_ = 0;
+
+  // Following the leader's route: its cells, how far it is released, and which simulator route
+  // (sent_id_) carries which part of it (leader index = base + simulator index).
+  struct Follow {
+    std::vector<planner::Cell> cells;
+    std::uint32_t release = 0;
+    std::vector<std::uint32_t> picks, drops;
+    std::uint32_t sim_id = 0;  // 0: no part sent yet
+    std::uint32_t base = 0;
+    std::uint32_t sent_to = 0;
+  };
+  std::optional<Follow> follow_;
+  planner::RouteProgress follow_progress_;
 };
 
 }  // namespace swarm::member

@@ -1,9 +1,10 @@
 // A* shortest paths on an occupancy grid with the robots' motion model.
 //
 // Hart, Nilsson & Raphael, "A Formal Basis for the Heuristic Determination of Minimum Cost
-// Paths", IEEE Trans. SSC 1968. 8-connected moves costing 1 (orthogonal) and sqrt(2) (diagonal),
-// octile-distance heuristic (admissible and consistent, so the first expansion of the goal is
-// optimal). A diagonal move never cuts a corner: both orthogonal cells it sweeps must be passable.
+// Paths", IEEE Trans. SSC 1968. Moves are the motion model's (motion.hpp): by default 8-connected,
+// costing 1 (orthogonal) and sqrt(2) (diagonal), with the octile heuristic, never cutting a corner;
+// 4-connected with the Manhattan heuristic on request. Both heuristics are admissible and
+// consistent, so the first expansion of the goal is optimal.
 // Occupied and out-of-bounds cells are never passable; Unknown ones are iff unknown_is_free. The
 // start cell is always allowed (a robot standing on a cell its map calls Occupied can still leave).
 //
@@ -19,11 +20,13 @@
 #include <vector>
 
 #include "swarm/planner/grid.hpp"
+#include "swarm/planner/motion.hpp"
 
 namespace swarm::planner {
 
 struct AStarOptions {
   bool unknown_is_free = true;  // optimistic planning through unexplored space
+  MotionModel motion = MotionModel::eight();
 };
 
 // The cells of a cheapest path, start and goal included; {start} when start == goal; nullopt when

@@ -1,8 +1,8 @@
 // Frontier detection and reachability on an occupancy grid.
 //
 // A frontier cell is a Free cell with at least one 4-neighbour that is Unknown (in bounds).
-// Reachability uses the robots' motion model: 8-connected moves through Free cells that never cut
-// a corner (a diagonal step needs both orthogonal cells passable). Unknown cells are not passable.
+// Reachability uses the robots' motion model (motion.hpp; by default exploration's: 8-connected
+// moves through Free cells that never cut a corner). Unknown cells are not passable.
 //
 //   auto all = find_frontiers(map);                       // row-major order (y, then x)
 //   auto mine = reachable_frontiers(map, {robot_cell});   // only those a robot can drive to
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "swarm/planner/grid.hpp"
+#include "swarm/planner/motion.hpp"
 
 namespace swarm::planner {
 
@@ -22,7 +23,8 @@ std::vector<Cell> find_frontiers(const OccupancyGrid& map);
 
 // mask[index] = 1 for every Free cell reachable from any of `from` (cells that are not Free are
 // skipped as seeds). Deterministic.
-std::vector<std::uint8_t> reachable_mask(const OccupancyGrid& map, const std::vector<Cell>& from);
+std::vector<std::uint8_t> reachable_mask(const OccupancyGrid& map, const std::vector<Cell>& from,
+                                         const MotionModel& motion = MotionModel::eight());
 
 // The frontier cells reachable from any of `from`, in row-major order.
 std::vector<Cell> reachable_frontiers(const OccupancyGrid& map, const std::vector<Cell>& from);

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 namespace swarm::planner {
@@ -100,5 +101,8 @@ inline constexpr int kNeighbourDy[8] = {0, 0, 1, -1, 1, -1, 1, -1};
 // Octile distance in cells (diagonal = sqrt 2): the exact cost of an obstacle-free 8-connected path.
 double octile_distance(Cell a, Cell b);
 double euclidean_distance(Cell a, Cell b);
+
+// "(x, y)", for messages.
+std::string to_string(Cell c);
 
 }  // namespace swarm::planner

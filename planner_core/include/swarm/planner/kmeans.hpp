@@ -9,7 +9,7 @@
 // points, until no label changes or max_iterations.
 //
 // Details the references leave open:
-// - k is clipped to [1, number of distinct points]: asking for more clusters than distinct points
+// - k is clipped to [1, number of distinct points] (k-means++ seeding only): asking for more clusters than distinct points
 //   would only create duplicate centres. Empty input gives empty centres and labels.
 // - Distance ties go to the lowest centre index. A centre that loses all its points keeps its
 //   position (it cannot happen after k-means++ seeding on distinct points, only later, rarely).
@@ -43,6 +43,9 @@ struct KMeansConfig {
   int k = 3;                // wanted clusters; clipped to [1, distinct points]
   int max_iterations = 50;  // Lloyd iterations at most (0 = k-means++ seeding only)
   std::uint64_t seed = 1;   // k-means++ draws; see mix_seed() in rng.hpp to derive per-call seeds
+  // Non-empty: Lloyd starts from these centres instead of k-means++ (k = their count, not
+  // clipped; centre i stays centre i, so a caller can tell which start each cluster grew from).
+  std::vector<Eigen::Vector2d> initial_centres;
 };
 
 struct KMeansResult {

@@ -27,6 +27,7 @@
 //   OccupancyGrid lab = load_map_yaml("maps/lab.yaml");
 //   save_map_yaml("/tmp/explored.yaml", lab);            // writes /tmp/explored.pgm beside it
 //   OccupancyGrid maze = load_movingai_map("maze-32-32-2.map");
+//   save_movingai_map("/tmp/maze.map", maze);
 //
 // All functions are thread-safe (no shared state).
 #pragma once
@@ -55,6 +56,12 @@ void save_map_yaml(const std::string& yaml_path, const OccupancyGrid& map);
 // Reads a MovingAI `.map` file; each character is one cell of `resolution_m` metres, origin (0, 0).
 // Throws MapFileError.
 [[nodiscard]] OccupancyGrid load_movingai_map(const std::string& path, double resolution_m = 0.2);
+
+// Writes a MovingAI `.map` (`type octile`, height, width, `map`, rows from the top): Free cells
+// '.', Occupied '@', Unknown 'T' (not passable either: the format has no "unknown").
+// load_movingai_map of the result gives back the same Free/blocked cells.
+// Throws MapFileError if the file cannot be written.
+void save_movingai_map(const std::string& path, const OccupancyGrid& map);
 
 // MovingAI coordinates (x right, y down from the top row, as in `.scen` files) to a grid cell.
 inline Cell from_movingai_xy(const OccupancyGrid& map, int x, int y) {

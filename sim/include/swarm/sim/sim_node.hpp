@@ -1,14 +1,24 @@
 // swarm-sim's node: the World driven by the lockstep clock. Each tick it applies the motion
-// commands due, moves the robots, sends each robot its scan, publishes the clock, and waits for
-// every agent; it stops the run when the GCS declares the mission complete or at max_ticks.
+// commands due, moves the robots, sends each robot its scan (with the progress of its route),
+// publishes the clock, and waits for every agent; it stops the run when the GCS declares the
+// mission complete or at max_ticks.
+//
+//   SimNode node(clock, setup);
+//   node.run();                       // the whole run (swarm-sim's main)
+// or, one tick at a time (unit tests on a FakeBus, with the agents stepped in between):
+//   clock.wait_ready();
+//   for (k = 0; node.begin_tick(k), step the agents, !node.end_tick(k); ++k) {}
 #pragma once
 
 #include <optional>
+
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/comm/role.hpp"
+#include "swarm/record/metrics.hpp"
 #include "swarm/sim/world.hpp"
 
 namespace swarm::sim {
@@ -18,10 +28,23 @@ class SimNode {
   SimNode(comm::LockstepClock& clock, const comm::RoleSetup& setup);
   // The whole run; returns the last tick.
   std::uint32_t run();
+  // Tick k up to the clock: motion, scans, Clock(k).
+  void begin_tick(std::uint32_t k);
+  // Waits for every agent to finish tick k; true when the run stopped (the stop is published).
+  bool end_tick(std::uint32_t k);
   std::string report_json() const;
+  const World& world() const { return world_; }
 
  private:
   std::vector<msgs::RobotState> states() const;
+  // Phase `index` of the mission begins at `tick`: the motion model of its task, and its judge.
+  void start_phase(std::uint32_t index, std::uint32_t tick);
+  // The ground-truth numbers of the phase in force, frozen when the next one starts.
+  void judge_phase();
+  struct PhaseLog;
+  void fill_judge(PhaseLog& p) const;
+  // What robots did since `start` (per-robot counts then; empty = the start of the run).
+  record::MotionNumbers motion_since(const std::vector<MotionCounts>& start, const ConflictEvents& events) const;
 
   comm::LockstepClock& clock_;
   World world_;
@@ -30,6 +53,24 @@ class SimNode {
   std::optional<std::uint32_t> steps_to_99_;
   std::vector<std::pair<std::uint32_t, double>> curve_;  // (tick, explored fraction)
   std::vector<bool> alive_;
+  std::vector<float> ranges_;
+
+  // The mission's phases as the GCS announces them, and what the simulator judged in each.
+  std::vector<swarm::scenario::Phase> mission_;
+  std::optional<std::uint32_t> next_phase_;
+  struct PhaseLog {
+    std::uint32_t index = 0;
+    std::string task;
+    std::uint32_t start_tick = 0;
+    std::vector<MotionCounts> counts_at_start;
+    ConflictEvents events_at_start;
+    std::vector<std::pair<std::uint32_t, double>> curve;  // cover: (tick, covered fraction)
+    std::optional<std::uint32_t> full_tick;              // cover: every target cell covered
+    nlohmann::json judge = nlohmann::json::object();
+    record::MotionNumbers motion;
+    bool judged = false;
+  };
+  std::vector<PhaseLog> phases_;
   std::uint32_t last_tick_ = 0;
   bool complete_ = false;
 };

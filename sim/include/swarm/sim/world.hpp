@@ -1,21 +1,43 @@
 // The simulated world, free of DDS: ground truth, robot bodies and their motion, LiDAR, and the
-// ground-truth coverage the run is judged by. The simulator process is the only holder of it.
+// ground-truth numbers a run is judged by. The simulator process is the only holder of it.
 //
-// Motion: each tick each robot moves at most one cell along its commanded path (8-connected, no
-// corner cutting). Robots move in id order; a robot whose next cell holds another robot waits and
-// the wait is counted. A path into a wall (planned through unknown space) stops the robot; its
-// agent re-plans when its scan shows the wall.
+// Routes. A robot is given a route: the cell it stands on, then one cell per tick (the same cell
+// again = a wait; a neighbouring cell = a step, under the phase's motion model, planner/motion.hpp).
+// Each tick every robot with a route performs its next action. A route whose first cell is not
+// where the robot stands when it arrives is rejected (the robot stops; its agent sees the state in
+// its next Sense). Where the robot is in its route is an index, never looked up by cell, so a route
+// may pass a cell several times.
+//
+// Moves are resolved all at once, independently of robot ids (resolve()):
+//   1. An action the motion model forbids (a wall, outside the map, a corner cut, a jump) is a
+//      wall stop: the robot stays and its route is abandoned.
+//   2. Every robot intends a cell: its next route cell, or its own cell (waiting, idle, lost).
+//      Conflicts among the intentions (planner::find_step_conflicts): two or more robots meant for
+//      one cell is a vertex conflict; two robots meant to swap is an edge conflict. Every robot
+//      that meant to MOVE in a conflict stays this tick and tries the same action next tick.
+//   3. A mover whose target cell is held by a robot that stays (because its own move failed) stays
+//      too: a blocked move. This is repeated until nothing changes.
+//   4. Every remaining mover moves: followers into cells vacated this tick, and rotations of three
+//      or more robots, move together.
+// Counted per robot: moves, waits, vertex and edge conflicts it took part in, blocked moves, wall
+// stops, the rotation between its consecutive moves (planner/turns.hpp); and per tick the conflict
+// events (one per cell, one per swapping pair).
 //
 //   World w(truth, robot_cells, {.beams = 360, .range_cells = 15});
-//   w.command(robot, path);  // when a motion command is due
-//   w.move();                // once per tick, before scanning
-//   w.scan(robot, ranges);   // ranges in cells
+//   w.set_motion(planner::MotionModel::four());
+//   w.command(robot, route_id, route);   // when a motion command is due
+//   w.move();                            // once per tick, before scanning
+//   w.scan(robot, ranges);               // ranges in cells
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "swarm/planner/coverage_tracker.hpp"
 #include "swarm/planner/grid.hpp"
+#include "swarm/planner/motion.hpp"
+#include "swarm/planner/route.hpp"
+#include "swarm/record/metrics.hpp"
 
 namespace swarm::sim {
 
@@ -24,43 +46,82 @@ struct LidarConfig {
   float range_cells = 15.0f;
 };
 
+using planner::RouteState;
+
+// Per robot, cumulative: what the simulator saw the robot do (record/metrics.hpp names them).
+using MotionCounts = record::MotionCounts;
+
+// The whole team's conflict events (a vertex conflict of three robots is one event).
+struct ConflictEvents {
+  std::uint64_t vertex = 0;
+  std::uint64_t edge = 0;
+};
+
+// One tick's resolution, on plain data (World::move applies it). `intended[i]` is where robot i
+// means to be after the tick (its own cell to stay); every intended move is already legal.
+struct Resolution {
+  std::vector<planner::Cell> next;  // where each robot is after the tick
+  std::vector<std::uint8_t> moved;  // 1 = performed its move
+  std::vector<std::uint8_t> vertex, edge, blocked;  // per robot: why its move failed
+  ConflictEvents events;
+};
+[[nodiscard]] Resolution resolve(const std::vector<planner::Cell>& current,
+                                 const std::vector<planner::Cell>& intended);
+
 class World {
  public:
-  World(planner::OccupancyGrid truth, std::vector<planner::Cell> robot_cells, LidarConfig lidar);
+  // `footprint_radius`: a robot covers every cell within this many cells (Euclidean) of its cell.
+  World(planner::OccupancyGrid truth, std::vector<planner::Cell> robot_cells, LidarConfig lidar,
+        int footprint_radius = 0);
 
-  // A new path for `robot`; it continues from its current cell's place in the path. A path that
-  // does not contain the robot's cell and does not start next to it is ignored (the agent sees it
-  // did not move and re-plans).
-  void command(int robot, const std::vector<planner::Cell>& path);
+  void set_motion(const planner::MotionModel& motion) { motion_ = motion; }
+  const planner::MotionModel& motion() const { return motion_; }
+
+  // A new route for `robot` (see the file comment); an empty route stops it.
+  void command(int robot, std::uint32_t route_id, const std::vector<planner::Cell>& route);
+  // Every robot performs its next action.
   void move();
-  // Scans from the robot's cell and records what it saw in the coverage map.
+  // Scans from the robot's cell and records what it saw in the explored map.
   void scan(int robot, std::vector<float>& ranges);
 
   const std::vector<planner::Cell>& robots() const { return robots_; }
   const planner::OccupancyGrid& truth() const { return truth_; }
   const LidarConfig& lidar() const { return lidar_; }
+
+  const planner::RouteProgress& route(int robot) const { return progress_[robot]; }
+
   // Share of the free cells reachable from the start that some scan has seen.
   double explored_fraction() const;
   int reachable_free_cells() const { return reachable_free_; }
-  std::uint64_t blocked_moves() const { return blocked_moves_; }
-  std::uint64_t wall_stops() const { return wall_stops_; }
-  std::uint64_t moves() const { return moves_; }
+  // Coverage: the free cells robots have stood on (within the footprint) since the last reset,
+  // out of those reachable under the current motion model from where the robots stand at the
+  // reset (the cells a coverage phase must visit).
+  void reset_coverage();
+  double covered_fraction() const { return coverage_.fraction(); }
+  int coverage_target_cells() const { return coverage_.target_cells(); }
+  int covered_cells() const { return coverage_.covered_cells(); }
+  bool is_covered(planner::Cell c) const { return coverage_.is_covered(c); }
+
+  const std::vector<MotionCounts>& counts() const { return counts_; }
+  MotionCounts total_counts() const;
+  const ConflictEvents& events() const { return events_; }
 
  private:
-  bool can_step(planner::Cell from, planner::Cell to) const;
-
   planner::OccupancyGrid truth_;
   LidarConfig lidar_;
+  int footprint_radius_;
+  planner::MotionModel motion_ = planner::MotionModel::eight();
   std::vector<planner::Cell> robots_;
-  std::vector<std::vector<planner::Cell>> paths_;
-  std::vector<std::size_t> next_;  // index of the next path cell per robot
-  planner::OccupancyGrid seen_;    // union of every scan
-  std::vector<std::uint8_t> reachable_;  // ground truth: free cells reachable from the start
+  std::vector<std::vector<planner::Cell>> routes_;
+  std::vector<planner::RouteProgress> progress_;
+  planner::OccupancyGrid seen_;              // union of every scan
+  std::vector<std::uint8_t> reachable_;      // ground truth: free cells reachable from the start
+  planner::CoverageTracker coverage_;
   int reachable_free_ = 0;
   int reachable_seen_ = 0;
-  std::uint64_t blocked_moves_ = 0;
-  std::uint64_t wall_stops_ = 0;
-  std::uint64_t moves_ = 0;
+  std::vector<MotionCounts> counts_;
+  std::vector<int> heading_;  // of each robot's last move, -1 before its first
+  ConflictEvents events_;
 };
 
 }  // namespace swarm::sim

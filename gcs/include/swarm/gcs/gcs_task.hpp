@@ -1,0 +1,87 @@
+// The GCS's side of the task seam (DESIGN.md "Missions, phases and tasks"; the leader's side is
+// leader/group_task.hpp, which says what a task is).
+//
+// The GCS runs the phase machine: phase 0 starts at tick 0; each tick the current phase's GcsTask
+// steps and says whether the phase is complete, judged from what the GCS knows (the fused map, the
+// robots' cells and living flags in the clock, the leaders' reports; never the ground truth); then
+// the GCS announces the next phase (PhaseStart, to the leaders and the simulator) and starts its
+// task, until the last phase completes the mission.
+//   start(ctx)   the phase begins: split the work among the groups (task orders), ...
+//   step(ctx)    every tick of the phase
+//   complete()   the phase is done
+//   progress()   what the progress display shows
+//   on_report / on_group_status   the leaders' messages of the current phase
+//   numbers()    the task's own numbers: metrics.json phases[i].task
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "swarm/comm/role.hpp"
+#include "swarm/gcs/mission.hpp"
+#include "swarm/planner/map_patch.hpp"
+#include "swarm/record/record.hpp"
+#include "swarm_msgs.h"
+
+namespace swarm::gcs {
+
+struct GcsOutlets {
+  std::function<void(msgs::TaskOrder&)> order;    // to every leader (the order names its group)
+  std::function<void(msgs::RoundStart&)> round;   // explore
+};
+
+struct GcsContext {
+  const comm::RoleSetup& setup;
+  std::uint32_t phase = 0;
+  const msgs::Clock& clock;
+  Mission& mission;  // the fused map (and exploration's planning rounds)
+  record::RecordWriter& record;
+  GcsOutlets& out;
+
+  std::uint32_t tick() const { return clock.tick(); }
+  planner::Cell cell_of(int robot) const {
+    const auto& r = clock.robots()[static_cast<std::size_t>(robot)];
+    return {r.x(), r.y()};
+  }
+  bool alive(int robot) const { return clock.robots()[static_cast<std::size_t>(robot)].alive(); }
+};
+
+struct ProgressLine {
+  std::string label;    // "mapped", "covered", ...
+  double fraction = 0;  // 0..1
+  std::string detail;   // e.g. "round  12  frontier cells 40"
+};
+
+class GcsTask {
+ public:
+  virtual ~GcsTask() = default;
+  virtual void start(GcsContext& ctx) = 0;
+  virtual void step(GcsContext& ctx) = 0;
+  [[nodiscard]] virtual bool complete() const = 0;
+  [[nodiscard]] virtual ProgressLine progress(const GcsContext& ctx) const = 0;
+  virtual void on_report(const msgs::TaskReport&, GcsContext&) {}
+  virtual void on_group_status(const msgs::GroupStatus&, GcsContext&) {}
+  [[nodiscard]] virtual nlohmann::json numbers() const = 0;
+};
+
+// The task of one phase of the mission (config: the phase's settings from config::mission_phases).
+[[nodiscard]] std::unique_ptr<GcsTask> make_gcs_task(const swarm::scenario::Phase& phase,
+                                                     const comm::RoleSetup& setup, std::uint32_t index);
+
+}  // namespace swarm::gcs
+
+namespace swarm::gcs {
+
+// A MapVersion frame of the run record: `map` as the GCS had fused it at `tick`.
+[[nodiscard]] record::Frame map_frame(std::uint32_t tick, std::uint32_t round, std::uint32_t phase,
+                                      const planner::OccupancyGrid& map);
+// The encoding whole maps travel in for the run's map_encoding: run-length, zstd-compressed when
+// the run's encoding is ZstdRunLength.
+[[nodiscard]] planner::PatchEncoding map_encoding(const comm::RoleSetup& setup);
+
+}  // namespace swarm::gcs

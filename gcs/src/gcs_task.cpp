@@ -1,0 +1,48 @@
+#include "swarm/gcs/gcs_task.hpp"
+
+#include "swarm/comm/convert.hpp"
+#include "swarm/config/scenario.hpp"
+#include "swarm/gcs/cover_task.hpp"
+#include "swarm/gcs/explore_task.hpp"
+#include "swarm/planner/map_patch.hpp"
+
+namespace swarm::gcs {
+
+record::Frame map_frame(std::uint32_t tick, std::uint32_t round, std::uint32_t phase,
+                        const planner::OccupancyGrid& map) {
+  record::Frame f;
+  auto* m = f.mutable_map();
+  m->set_tick(tick);
+  m->set_round(round);
+  m->set_phase(phase);
+  const auto rle = planner::encode_grid_rle(map);
+  m->set_rle(std::string(rle.begin(), rle.end()));
+  return f;
+}
+
+planner::PatchEncoding map_encoding(const comm::RoleSetup& setup) {
+  return comm::patch_encoding(setup.world.scenario.map_encoding()) == planner::PatchEncoding::ZstdRunLength
+             ? planner::PatchEncoding::ZstdRunLength
+             : planner::PatchEncoding::RunLength;
+}
+
+std::unique_ptr<GcsTask> make_gcs_task(const swarm::scenario::Phase& phase, const comm::RoleSetup& setup,
+                                       std::uint32_t index) {
+  // The robots are given the map (as DARP assumes) when no exploration comes before.
+  const auto phases = config::mission_phases(setup.world.scenario);
+  bool explored = false;
+  for (std::uint32_t i = 0; i < index && i < phases.size(); ++i) {
+    explored = explored || config::task_of(phases[i]) == config::TaskKind::Explore;
+  }
+  switch (config::task_of(phase)) {
+    case config::TaskKind::Explore:
+      return std::make_unique<ExploreGcsTask>(index);
+    case config::TaskKind::Cover:
+      return std::make_unique<CoverGcsTask>(phase.cover(), index, !explored);
+    default:
+      break;
+  }
+  throw config::ConfigError("task '" + config::task_name(config::task_of(phase)) + "' has no GCS side in this build");
+}
+
+}  // namespace swarm::gcs

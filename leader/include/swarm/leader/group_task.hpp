@@ -1,0 +1,93 @@
+// The leader's side of the task seam (DESIGN.md "Missions, phases and tasks").
+//
+// A mission is a list of phases; the GCS starts each (PhaseStart) and judges it done. A leader runs
+// one GroupTask per phase of the scenario's mission, made at start-up by make_group_task(), and
+// hands it the group's life while its phase is current:
+//   start(ctx)            the phase begins (phase 0 at tick 0; later ones when PhaseStart arrives)
+//   step(ctx)             every tick of the phase, after the due messages' handlers ran and
+//                         before the leader's own robot acts
+//   finish_step(ctx)      every tick, after the own robot acted (its waypoint report, if any,
+//                         came through on_member_status)
+//   on_order / on_round / on_member_status / on_progress
+//                         the messages of the current phase, routed by the node
+//   member_lost / member_back
+//                         a member the simulator declared lost, or one whose link healed
+//   numbers()             the task's own numbers for the leader's end-of-run report
+// What a task may do goes through the GroupContext: the group map, the living members and the
+// robots' true cells (the clock), the leader's own robot, and outlets that send routes, releases,
+// assignments and reports. The node owns every topic (created once at start-up, as DDS discovery
+// must be complete before tick 0), the map merging, the map relays to members and GCS, the
+// heartbeat and the leader's own robot; a task never touches DDS.
+//
+// Adding a task = a planner in planner_core + a GcsTask (gcs/gcs_task.hpp) + a GroupTask + its
+// config message in idl/scenario.proto. The lockstep protocol, link emulation, fault handling and
+// traffic accounting do not change. Members know no task: they drive to waypoints or follow routes.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "swarm/comm/role.hpp"
+#include "swarm/leader/group_map.hpp"
+#include "swarm/member/robot_agent.hpp"
+#include "swarm/planner/grid.hpp"
+#include "swarm_msgs.h"
+
+namespace swarm::leader {
+
+// Sending, for a task (the node stamps and routes: index 0 is the leader's own robot).
+struct GroupOutlets {
+  // Gives the route a number of its own (route ids never repeat in a run) and returns it.
+  std::function<std::uint32_t(int index, msgs::Route&)> route;
+  std::function<void(int index, msgs::RouteRelease&)> release;
+  std::function<void(msgs::TaskReport&)> report;
+  std::function<void(msgs::Assignment&)> assignment;     // explore: waypoints for the whole group
+  std::function<void(msgs::GroupStatus&)> group_status;  // explore: the round's waypoints are done
+  std::function<void(msgs::PlanReport&)> plan_report;    // explore: telemetry for pictures
+};
+
+struct GroupContext {
+  const comm::RoleSetup& setup;
+  int group = 0;
+  std::uint32_t phase = 0;
+  const msgs::Clock& clock;
+  const std::vector<bool>& alive;  // per index of the group (index 0, the leader, always)
+  GroupMap& map;
+  member::RobotAgent& own;         // the leader's robot
+  GroupOutlets& out;
+
+  const comm::Topology& topology() const { return setup.topology; }
+  // Robot `index` of the group: its true cell, shared in real time in the clock.
+  planner::Cell cell_of(int index) const {
+    const auto& r = clock.robots()[setup.topology.robot(group, index)];
+    return {r.x(), r.y()};
+  }
+  std::vector<int> living() const;
+};
+
+class GroupTask {
+ public:
+  virtual ~GroupTask() = default;
+  virtual void start(GroupContext& ctx) = 0;
+  virtual void step(GroupContext& ctx) = 0;
+  virtual void finish_step(GroupContext&) {}
+  virtual void on_order(const msgs::TaskOrder&, GroupContext&) {}
+  virtual void on_round(std::uint32_t /*round*/, GroupContext&) {}
+  virtual void on_member_status(const msgs::MemberStatus&, GroupContext&) {}
+  // Progress of a member's route (index 0: the leader's own robot, polled by the node each tick).
+  virtual void on_progress(int /*index*/, const planner::RouteProgress&, GroupContext&) {}
+  virtual void member_lost(int /*index*/, GroupContext&) {}
+  virtual void member_back(int /*index*/, GroupContext&) {}
+  [[nodiscard]] virtual nlohmann::json numbers() const = 0;
+};
+
+// The task of one phase of the mission (config: the phase's settings from config::mission_phases).
+[[nodiscard]] std::unique_ptr<GroupTask> make_group_task(const swarm::scenario::Phase& phase,
+                                                         const comm::RoleSetup& setup, int group);
+
+}  // namespace swarm::leader

@@ -1,0 +1,24 @@
+#include "swarm/leader/group_task.hpp"
+
+#include "swarm/config/scenario.hpp"
+#include "swarm/leader/cover_task.hpp"
+#include "swarm/leader/explore_task.hpp"
+
+namespace swarm::leader {
+
+std::unique_ptr<GroupTask> make_group_task(const swarm::scenario::Phase& phase, const comm::RoleSetup& setup,
+                                           int group) {
+  const auto& s = setup.world.scenario;
+  switch (config::task_of(phase)) {
+    case config::TaskKind::Explore:
+      return std::make_unique<ExploreGroupTask>(phase.explore(), s.seed(), setup.topology.robots_per_group());
+    case config::TaskKind::Cover:
+      return std::make_unique<CoverGroupTask>(phase.cover(), setup, group);
+    default:
+      break;
+  }
+  throw config::ConfigError("task '" + config::task_name(config::task_of(phase)) +
+                            "' has no leader side in this build");
+}
+
+}  // namespace swarm::leader

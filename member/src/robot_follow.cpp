@@ -1,0 +1,71 @@
+// RobotAgent's route following (robot_agent.hpp, follow()): the leader's route is driven exactly,
+// in parts as it is released, each part sent to the simulator as a route of its own.
+#include <algorithm>
+
+#include "swarm/member/robot_agent.hpp"
+
+namespace swarm::member {
+
+using planner::Cell;
+using planner::RouteState;
+
+void RobotAgent::follow(std::uint32_t id, std::vector<Cell> cells, std::uint32_t release,
+                        std::vector<std::uint32_t> picks, std::vector<std::uint32_t> drops) {
+  waypoint_.reset();
+  path_.clear();
+  Follow f;
+  f.cells = std::move(cells);
+  f.release = std::min<std::uint32_t>(release, f.cells.empty() ? 0 : static_cast<std::uint32_t>(f.cells.size() - 1));
+  f.picks = std::move(picks);
+  f.drops = std::move(drops);
+  follow_ = std::move(f);
+  follow_progress_ = {id, 0, follow_->cells.empty() ? RouteState::Finished : RouteState::Active};
+}
+
+void RobotAgent::release(std::uint32_t id, std::uint32_t up_to) {
+  if (!follow_ || follow_progress_.id != id) return;  // a release for a route replaced since
+  const auto last = static_cast<std::uint32_t>(follow_->cells.size() - 1);
+  follow_->release = std::max(follow_->release, std::min(up_to, last));
+}
+
+void RobotAgent::step_following(Step& out) {
+  Follow& f = *follow_;
+  if (follow_progress_.state != RouteState::Active) return;
+  // Where the simulator says the robot is along the part it drives.
+  if (f.sim_id != 0 && report_.id == f.sim_id) {
+    follow_progress_.step = f.base + report_.step;
+    if (report_.state == RouteState::Rejected || report_.state == RouteState::Abandoned) {
+      follow_progress_.state = RouteState::Abandoned;  // the leader re-plans it
+      return;
+    }
+  }
+  const std::uint32_t at = follow_progress_.step;
+  const auto last = static_cast<std::uint32_t>(f.cells.size() - 1);
+  if (at >= last) {
+    follow_progress_.state = RouteState::Finished;
+    return;
+  }
+  // The next part: from where the robot stands to the release, once the last part is driven
+  // (or none was sent). A part in flight is waited for.
+  const bool part_done = f.sim_id == 0 || (report_.id == f.sim_id && f.base + report_.step == f.sent_to);
+  if (!part_done || f.release <= at) return;
+  if (pose_ != f.cells[at]) {
+    follow_progress_.state = RouteState::Abandoned;  // not where the route says: cannot go on
+    return;
+  }
+  out.path_changed = true;
+  out.path.assign(f.cells.begin() + at, f.cells.begin() + f.release + 1);
+  // An action at index `at` belongs to this part only if no part was sent before (the route's
+  // first cell); otherwise the previous part ended there and carried it.
+  const std::uint32_t from = f.sim_id == 0 ? at : at + 1;
+  for (std::uint32_t p : f.picks) {
+    if (p >= from && p <= f.release) out.pick_steps.push_back(p - at);
+  }
+  for (std::uint32_t d : f.drops) {
+    if (d >= from && d <= f.release) out.drop_steps.push_back(d - at);
+  }
+  f.base = at;
+  f.sent_to = f.release;
+}
+
+}  // namespace swarm::member

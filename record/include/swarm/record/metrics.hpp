@@ -1,0 +1,178 @@
+// metrics.json: the one schema of a run's numbers, as typed structs, written in one place
+// (write_metrics, by the GCS) and read in one place (read_metrics, by `swarm run`, `swarm report`,
+// the experiments and tests). Also the simulator's end-of-run report to the GCS (SimReport), whose
+// keys are required: a missing one is an error naming the process and the key, never a silent 0.
+//
+// Versioning: `schema_version` is kMetricsSchemaVersion; a reader refuses any other version with
+// a message saying which it found and which it reads (re-run, or use the swarm that wrote it).
+//
+// Definitions:
+//   steps       the tick at which the GCS declared the mission complete; for a run that did not
+//               complete (stopped at max_ticks), the ticks it ran: a lower bound, flagged by
+//               complete = false. ticks_run is always the ticks actually run.
+//   phases      one entry per mission phase that started, in order: its name, the ticks it began
+//               and ended (end_tick null while it never ended), whether it completed, the
+//               simulator's ground-truth judge of it (motion: moves, conflicts, ...) and the
+//               task's own numbers.
+//
+//   RunMetrics m = read_metrics(run_dir + "/metrics.json");   // throws MetricsError
+//   write_metrics(run_dir + "/metrics.json", m);
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace swarm::record {
+
+inline constexpr int kMetricsSchemaVersion = 2;
+
+class MetricsError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// What the simulator judged robots did, from ground truth (sim/world.hpp).
+struct MotionCounts {
+  std::uint64_t moves = 0;
+  std::uint64_t waits = 0;
+  std::uint64_t vertex_conflicts = 0;  // per robot: conflicts it took part in
+  std::uint64_t edge_conflicts = 0;
+  std::uint64_t blocked_moves = 0;
+  std::uint64_t wall_stops = 0;
+  std::uint64_t routes_rejected = 0;
+  std::uint64_t turn_eighths = 0;  // rotation between consecutive moves, eighths of a turn (turns.hpp)
+  MotionCounts& operator+=(const MotionCounts& o);
+  MotionCounts operator-(const MotionCounts& o) const;
+};
+
+struct MotionNumbers {
+  MotionCounts total;
+  std::uint64_t vertex_conflict_events = 0;  // one per cell and tick
+  std::uint64_t edge_conflict_events = 0;    // one per swapping pair and tick
+  std::map<std::string, MotionCounts> per_robot;
+};
+
+struct TopicTraffic {
+  std::string link;
+  std::uint64_t messages = 0;
+  std::uint64_t bytes = 0;
+  std::uint64_t received_messages = 0;
+  std::uint64_t lost_transmissions = 0;
+  std::uint64_t dropped_messages = 0;
+};
+
+struct LinkTraffic {
+  std::uint64_t messages = 0;
+  std::uint64_t bytes = 0;
+  std::uint64_t lost_transmissions = 0;
+  std::uint64_t dropped_messages = 0;
+};
+
+struct Traffic {
+  std::map<std::string, TopicTraffic> by_topic;
+  std::map<std::string, LinkTraffic> by_link;
+  std::uint64_t total_messages = 0;
+  std::uint64_t total_bytes = 0;
+};
+
+struct AgentLost {
+  std::string agent;
+  std::uint32_t marked_lost_at_tick = 0;
+  std::optional<std::uint32_t> rejoined_at_tick;
+  std::optional<std::uint32_t> stopped_answering_at_tick;
+  std::optional<double> detection_seconds;
+};
+
+struct Unreachable {
+  std::string agent;
+  std::uint32_t from_tick = 0;
+  std::uint32_t to_tick = 0;
+};
+
+struct PhaseMetrics {
+  std::string name;  // explore | cover | mapf | collect
+  std::uint32_t start_tick = 0;
+  std::optional<std::uint32_t> end_tick;
+  bool complete = false;
+  MotionNumbers motion;
+  nlohmann::json task = nlohmann::json::object();  // the task's own numbers (its README section)
+};
+
+struct RunMetrics {
+  int schema_version = kMetricsSchemaVersion;
+  std::string scenario;
+  std::string map;
+  std::string mode;
+  std::uint64_t seed = 0;
+  std::uint32_t groups = 0;
+  std::uint32_t robots_per_group = 0;
+  std::uint32_t robots = 0;
+  std::uint32_t steps = 0;
+  std::optional<std::uint32_t> steps_to_99;
+  std::uint32_t planning_rounds = 0;
+  double explored_fraction = 0;
+  bool complete = false;
+  std::uint32_t ticks_run = 0;
+  double wall_seconds = 0;
+  double ticks_per_second = 0;
+  Traffic traffic;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> rounds;  // (round, start tick)
+  std::vector<std::pair<std::uint32_t, double>> explored_curve;  // (tick, explored fraction)
+  double planning_seconds_total = 0;
+  double planning_ms_per_group_round = 0;
+  std::vector<AgentLost> agents_lost;
+  std::vector<Unreachable> unreachable;
+  MotionNumbers motion;  // the whole run
+  std::vector<PhaseMetrics> phases;
+  std::map<std::string, nlohmann::json> agents;  // each agent's own numbers, by name
+  std::vector<std::string> reports_missing;
+};
+
+[[nodiscard]] nlohmann::json to_json(const RunMetrics& m);
+// Throws MetricsError naming `source` and the first missing or mistyped key, or an unknown
+// schema_version.
+[[nodiscard]] RunMetrics metrics_from_json(const nlohmann::json& j, const std::string& source);
+void write_metrics(const std::string& path, const RunMetrics& m);  // throws MetricsError
+[[nodiscard]] RunMetrics read_metrics(const std::string& path);    // throws MetricsError
+
+// The simulator's report at the end of a run (AgentReport.extra_json of the "sim" agent).
+struct SimPhase {
+  std::uint32_t phase = 0;
+  std::string name;
+  std::uint32_t start_tick = 0;
+  MotionNumbers motion;
+  nlohmann::json judge = nlohmann::json::object();  // the phase's ground-truth numbers (covered, ...)
+};
+
+struct SimReport {
+  std::uint32_t last_tick = 0;
+  std::optional<std::uint32_t> steps_to_99;
+  double explored_fraction = 0;
+  std::uint32_t reachable_free_cells = 0;
+  std::vector<std::pair<std::uint32_t, double>> explored_curve;
+  MotionNumbers motion;
+  std::vector<SimPhase> phases;
+  struct Loss {
+    std::string agent;
+    std::uint32_t missed_tick = 0;
+    double detection_seconds = 0;
+    std::optional<std::uint32_t> rejoined_tick;
+  };
+  std::vector<Loss> agents_lost;
+};
+
+[[nodiscard]] nlohmann::json to_json(const SimReport& r);
+// Throws MetricsError: "<process>'s report: missing key 'explored_fraction'".
+[[nodiscard]] SimReport sim_report_from_json(const nlohmann::json& j, const std::string& process);
+
+nlohmann::json to_json(const MotionNumbers& m);
+MotionNumbers motion_from_json(const nlohmann::json& j, const std::string& where);
+
+}  // namespace swarm::record

@@ -1,0 +1,117 @@
+// The GCS node on the FakeBus with scripted leaders: it starts round 1 once every group's map has
+// arrived, sends the delayed global map with it, and declares the mission complete when the fused
+// map has no frontier left, which stops the run.
+#include "swarm/gcs/gcs_node.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "swarm/comm/convert.hpp"
+#include "swarm_test/ascii_grid.hpp"
+#include "swarm_test/fake_swarm.hpp"
+
+namespace swarm::gcs {
+namespace {
+
+using comm::LinkClass;
+using planner::Cell;
+using planner::CellChange;
+using planner::CellState;
+namespace topic = comm::topic;
+
+std::vector<CellChange> cells_of(const planner::OccupancyGrid& g, int x_from, int x_to) {
+  std::vector<CellChange> out;
+  for (int y = 0; y < g.height(); ++y) {
+    for (int x = x_from; x < x_to; ++x) out.push_back({g.index({x, y}), g.at(Cell{x, y})});
+  }
+  return out;
+}
+
+TEST(GcsNode, StartsRoundsFromTheGroupsMapsAndDeclaresCompletionWhenNoFrontierIsLeft) {
+  const auto art = swarm::test::ascii_map({
+      "########",
+      "#S.....#",
+      "########",
+  });
+  swarm::scenario::Scenario sc;
+  sc.set_groups(2);
+  sc.set_robots_per_group(1);
+  sc.set_max_ticks(50);
+  auto setup = swarm::test::setup_for(art.grid, art.at.at('S'), sc);
+  const comm::Topology& t = setup.topology;
+  swarm::test::FakeSwarm s(setup, {t.leader(0), t.leader(1)});
+
+  // Leader g sends the west half of the truth at tick 0 (group 0) or 1 (group 1), and group 0 the
+  // east half at tick 6; both keep their heartbeats going.
+  std::vector<msgs::RoundStart> rounds;
+  for (int g = 0; g < 2; ++g) {
+    auto& a = s.agent(t.leader(g));
+    a.subscribe<msgs::Sense>(topic::sense(t.leader(g)), LinkClass::SimRobot, [](const msgs::Sense&) {},
+                             comm::Delivery::BestEffort, 1);
+    a.subscribe<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs,
+                                  [&rounds, g](const msgs::RoundStart& r) { if (g == 0) rounds.push_back(r); },
+                                  comm::Delivery::Reliable, 1);
+    a.advertise<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, {t.sim()});
+    auto& patch = a.advertise<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, {t.gcs()});
+    auto& beat = a.advertise<msgs::Heartbeat>(topic::kHeartbeat, LinkClass::LeaderGcs, {t.gcs()});
+    a.advertise<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs, {t.gcs()});
+    a.advertise<msgs::PlanReport>(topic::kPlanReport, LinkClass::Telemetry, {t.gcs()});
+    s.script(t.leader(g), [&, g, &patch = patch, &beat = beat](const msgs::Clock& c) {
+      msgs::Heartbeat h;
+      h.group(static_cast<std::uint16_t>(g));
+      beat.send(h);
+      std::vector<CellChange> changes;
+      if (c.tick() == static_cast<std::uint32_t>(g)) changes = cells_of(art.grid, 0, 4);
+      if (g == 0 && c.tick() == 6) changes = cells_of(art.grid, 4, 8);
+      if (changes.empty()) return;
+      msgs::MapPatch p;
+      p.group(static_cast<std::uint16_t>(g));
+      p.data(comm::encode_patch(changes, planner::PatchEncoding::RunLength));
+      patch.send(p);
+    });
+  }
+  s.start();
+  while (s.step()) {
+  }
+  // Group 1's map arrives at tick 2: round 1 starts then; its map is the west half.
+  ASSERT_FALSE(rounds.empty());
+  EXPECT_EQ(rounds[0].round(), 1u);
+  EXPECT_EQ(rounds[0].fused_tick(), 2u);
+  planner::OccupancyGrid sent(art.grid.width(), art.grid.height());
+  comm::decode_map(rounds[0].map_rle(), static_cast<planner::PatchEncoding>(rounds[0].encoding()), sent);
+  EXPECT_EQ(sent.at(Cell{3, 1}), CellState::Free);
+  EXPECT_EQ(sent.at(Cell{4, 1}), CellState::Unknown);
+  // The east half is fused at tick 7: no frontier, complete; the simulator stops the run.
+  EXPECT_TRUE(s.complete());
+  EXPECT_EQ(s.tick(), 8u);
+
+  s.finish();
+  std::ifstream in(s.run_dir() + "/metrics.json");
+  const auto m = nlohmann::json::parse(in);
+  EXPECT_EQ(m["steps"], 7);
+  EXPECT_EQ(m["complete"], true);
+  EXPECT_EQ(m["planning_rounds"], 1);
+}
+
+// Regression: without the simulator's report explored_fraction silently read 0.
+TEST(GcsNode, ARunWithoutTheSimulatorsReportIsAnErrorNamingIt) {
+  auto setup = swarm::test::setup_from_text("map: 'small' groups: 1 robots_per_group: 1 max_ticks: 3");
+  swarm::test::FakeSwarm s(setup);
+  s.start();
+  while (s.step()) {
+  }
+  try {
+    s.finish(/*sim_reports=*/false);
+    ADD_FAILURE() << "finish() accepted a run without the simulator's report";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no end-of-run report from the simulator (sim)"), std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace swarm::gcs

@@ -1,0 +1,149 @@
+// The leader node on the FakeBus with its real members and a scripted GCS: given a global map with
+// one unexplored region, it plans case B (no group frontiers) and assigns its three robots three
+// distinct frontier cells of that region, nearest first as the Hungarian assignment says.
+#include "swarm/leader/leader_node.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "swarm/comm/convert.hpp"
+#include "swarm/planner/explore.hpp"
+#include "swarm/planner/frontier.hpp"
+#include "swarm_test/ascii_grid.hpp"
+#include "swarm_test/fake_swarm.hpp"
+
+namespace swarm::leader {
+namespace {
+
+using comm::LinkClass;
+using planner::Cell;
+using planner::CellState;
+namespace topic = comm::topic;
+
+// A 30 x 7 hall; the robots start at its west end.
+planner::OccupancyGrid hall() {
+  std::vector<std::string> rows(7, std::string(30, '.'));
+  for (auto& r : rows) r.front() = r.back() = '#';
+  rows.front() = rows.back() = std::string(30, '#');
+  return swarm::test::grid_from(rows);
+}
+
+TEST(LeaderNode, PlansCaseBOnTheGlobalMapAndAssignsEachRobotAFrontierCellOfTheRegion) {
+  const planner::OccupancyGrid truth = hall();
+  swarm::scenario::Scenario sc;
+  sc.set_groups(1);
+  sc.set_robots_per_group(3);
+  sc.set_sensing_range_m(0.6);  // 3 cells: the robots see nothing the global map lacks
+  sc.set_max_ticks(30);
+  auto setup = swarm::test::setup_for(truth, {3, 3}, sc);
+  const comm::Topology& t = setup.topology;
+  swarm::test::FakeSwarm s(setup, {t.gcs()});
+
+  // The global map the scripted GCS sends: the truth west of x = 20, unknown east of it.
+  planner::OccupancyGrid global(truth.width(), truth.height(), truth.resolution());
+  for (int y = 0; y < truth.height(); ++y) {
+    for (int x = 0; x < 20; ++x) global.set(Cell{x, y}, truth.at(Cell{x, y}));
+  }
+  auto& gcs = s.agent(t.gcs());
+  std::vector<msgs::PlanReport> plans;
+  gcs.subscribe<msgs::Heartbeat>(topic::kHeartbeat, LinkClass::LeaderGcs, [](const msgs::Heartbeat&) {},
+                                 comm::Delivery::Reliable, 1);
+  gcs.subscribe<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, [](const msgs::MapPatch&) {},
+                                comm::Delivery::Reliable, 1);
+  gcs.subscribe<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs, [](const msgs::GroupStatus&) {},
+                                   comm::Delivery::Reliable, 1);
+  gcs.subscribe<msgs::PlanReport>(topic::kPlanReport, LinkClass::Telemetry,
+                                  [&](const msgs::PlanReport& p) { plans.push_back(p); }, comm::Delivery::Reliable, 1);
+  auto& round = gcs.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, {t.leader(0)});
+  s.script(t.gcs(), [&](const msgs::Clock& c) {
+    if (c.tick() != 1) return;
+    msgs::RoundStart r;
+    r.round(1);
+    r.fused_tick(1);
+    r.width(static_cast<std::uint16_t>(global.width()));
+    r.height(static_cast<std::uint16_t>(global.height()));
+    r.encoding(static_cast<std::uint8_t>(planner::PatchEncoding::RunLength));
+    r.map_rle(comm::encode_map(global, planner::PatchEncoding::RunLength));
+    round.send(r);
+  });
+  // A spy on the group's assignments.
+  comm::FakeBus spy(s.network());
+  std::vector<msgs::Assignment> assignments;
+  comm::Reader<msgs::Assignment> reader(spy, topic::assign(0), [&](msgs::Assignment&& a) { assignments.push_back(a); });
+
+  s.start();
+  ASSERT_TRUE(s.run_until([&] { return !plans.empty(); }, 10));
+  ASSERT_EQ(assignments.size(), 1u);
+  EXPECT_EQ(assignments[0].round(), 1u);
+  EXPECT_EQ(plans[0].plan_case(), static_cast<std::uint8_t>(planner::PlanCase::GlobalAssignment));
+
+  // Every waypoint is a distinct frontier cell of the global map: the column x = 19, y = 1..5.
+  const auto waypoints = comm::optional_cells_from_xy(assignments[0].waypoints_xy());
+  ASSERT_EQ(waypoints.size(), 3u);
+  std::vector<Cell> cells;
+  for (const auto& w : waypoints) {
+    ASSERT_TRUE(w.has_value());
+    EXPECT_EQ(w->x, 19);
+    EXPECT_TRUE(planner::is_frontier(global, *w)) << w->x << "," << w->y;
+    cells.push_back(*w);
+  }
+  std::sort(cells.begin(), cells.end());
+  EXPECT_TRUE(std::adjacent_find(cells.begin(), cells.end()) == cells.end());
+  // The robots' assignment is the cheapest of the 3! ways (Euclidean distance, as the planner).
+  const std::vector<Cell>& at = setup.world.robot_cells;
+  const auto cost = [&](const std::vector<Cell>& w) {
+    double c = 0;
+    for (int i = 0; i < 3; ++i) c += std::hypot(at[i].x - w[i].x, at[i].y - w[i].y);
+    return c;
+  };
+  std::vector<Cell> given = {*waypoints[0], *waypoints[1], *waypoints[2]};
+  std::vector<Cell> perm = cells;
+  double best = std::numeric_limits<double>::infinity();
+  do best = std::min(best, cost(perm));
+  while (std::next_permutation(perm.begin(), perm.end()));
+  EXPECT_NEAR(cost(given), best, 1e-9);
+}
+
+TEST(LeaderNode, ALostMemberIsNoticedPlannedWithoutAndTheMissionStillCompletes) {
+  auto setup = swarm::test::setup_from_text("map: 'small' groups: 1 robots_per_group: 3 max_ticks: 800");
+  const comm::Topology& t = setup.topology;
+  swarm::test::FakeSwarm s(setup);
+  comm::FakeBus spy(s.network());
+  std::vector<msgs::Assignment> assignments;
+  comm::Reader<msgs::Assignment> reader(spy, topic::assign(0), [&](msgs::Assignment&& a) { assignments.push_back(a); });
+  s.start();
+  for (int k = 0; k < 40; ++k) ASSERT_TRUE(s.step());
+  const std::size_t before = assignments.size();
+  ASSERT_GT(before, 0u);
+  s.disconnect(t.robot(0, 2));  // member-0-2 crashes
+  while (s.step()) {
+  }
+  EXPECT_TRUE(s.complete());
+  ASSERT_GT(assignments.size(), before + 1);
+  // The clock marks it lost at once on the fake (its writers are gone): from the next round on
+  // it gets no waypoint.
+  for (std::size_t i = before + 1; i < assignments.size(); ++i) {
+    const auto w = comm::optional_cells_from_xy(assignments[i].waypoints_xy());
+    EXPECT_FALSE(w[2].has_value()) << "round " << assignments[i].round();
+  }
+  s.finish();
+  std::ifstream in(s.run_dir() + "/metrics.json");
+  const auto m = nlohmann::json::parse(in);
+  ASSERT_EQ(m["faults"]["agents_lost"].size(), 1u);
+  EXPECT_EQ(m["faults"]["agents_lost"][0]["agent"], "member-0-2");
+  EXPECT_EQ(m["faults"]["agents_lost"][0]["marked_lost_at_tick"], 40);
+  EXPECT_EQ(m["agents"]["leader-0"]["members_lost"][0]["agent"], "member-0-2");
+  EXPECT_GE(m["explored_fraction"].get<double>(), 0.99);
+}
+
+}  // namespace
+}  // namespace swarm::leader

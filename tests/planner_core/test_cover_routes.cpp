@@ -1,0 +1,114 @@
+// Routes for the live coverage task: every cell of the set visited by the routes together, each
+// route a legal 4-connected walk from its robot's cell; leftovers and detours.
+#include "swarm/planner/cover_routes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <vector>
+
+#include "swarm/planner/coverage_check.hpp"
+#include "swarm/planner/motion.hpp"
+#include "swarm_test/ascii_grid.hpp"
+
+namespace swarm::planner {
+namespace {
+
+std::vector<std::uint8_t> free_cells(const OccupancyGrid& g) {
+  std::vector<std::uint8_t> m(g.size(), 0);
+  for (std::size_t i = 0; i < g.size(); ++i) m[i] = g.at(static_cast<int>(i)) == CellState::Free;
+  return m;
+}
+
+// Independent check: each route starts at its robot, every step is a legal 4-connected action on
+// the map, and together the routes stand on every cell of the set.
+void expect_covers(const OccupancyGrid& map, const std::vector<std::uint8_t>& set, const std::vector<Cell>& robots,
+                   const std::vector<std::vector<Cell>>& routes) {
+  ASSERT_EQ(routes.size(), robots.size());
+  std::vector<std::uint8_t> seen(map.size(), 0);
+  for (std::size_t r = 0; r < routes.size(); ++r) {
+    ASSERT_FALSE(routes[r].empty());
+    EXPECT_EQ(routes[r].front(), robots[r]) << "robot " << r;
+    for (std::size_t k = 0; k < routes[r].size(); ++k) {
+      if (k > 0) {
+        EXPECT_EQ(MotionModel::four().check(map, routes[r][k - 1], routes[r][k]), MoveCheck::Ok)
+            << "robot " << r << " step " << k;
+      }
+      seen[static_cast<std::size_t>(map.index(routes[r][k]))] = 1;
+    }
+  }
+  int missed = 0;
+  for (std::size_t i = 0; i < map.size(); ++i) missed += set[i] && !seen[i];
+  EXPECT_EQ(missed, 0);
+}
+
+TEST(CoverRoutes, TwoRobotsOnAnOpenRoomSplitItEquallyAndCoverEveryCell) {
+  const OccupancyGrid map(10, 6, 0.2, 0.0, 0.0, CellState::Free);
+  const std::vector<Cell> robots = {{0, 0}, {9, 5}};
+  CoverRoutesConfig cfg;
+  cfg.darp.init = DarpInit::Given;
+  const CoverRoutes r = divide_and_route(map, free_cells(map), robots, {}, cfg);
+  EXPECT_EQ(r.darp.status, DarpStatus::Converged);
+  EXPECT_EQ(r.region_cells, (std::vector<int>{30, 30}));
+  expect_covers(map, free_cells(map), robots, r.routes);
+  // Each robot stands in its own region: STC visits each of its 30 cells, 29 steps at the least.
+  for (const auto& route : r.routes) EXPECT_GE(route.size(), 30u);
+}
+
+TEST(CoverRoutes, RobotsOutsideTheSetDriveToItsNearestCellsFirst) {
+  const auto art = swarm::test::ascii_map({
+      "A.........",
+      "##.#######",
+      "....B.....",
+      "..........",
+  });
+  const OccupancyGrid& map = art.grid;
+  std::vector<std::uint8_t> set(map.size(), 0);  // the lower room only
+  for (int y = 0; y < 2; ++y) {
+    for (int x = 0; x < 10; ++x) set[static_cast<std::size_t>(map.index({x, y}))] = 1;
+  }
+  const std::vector<Cell> robots = {art.at.at('A'), art.at.at('B')};
+  const CoverRoutes r = divide_and_route(map, set, robots, {}, CoverRoutesConfig{});
+  EXPECT_EQ(r.starts[0], (Cell{2, 1}));  // through the door (2, 2)
+  EXPECT_EQ(r.starts[1], (Cell{4, 1}));
+  expect_covers(map, set, robots, r.routes);
+  EXPECT_EQ(r.routes[0][1], (Cell{1, 3}));  // A leaves its room first
+}
+
+TEST(CoverRoutes, APieceWithNoRobotGoesToTheNearestAndLeftoversCoverIt) {
+  // Two rooms joined by a corridor that is not in the set: DARP cannot reach the right room's
+  // piece from the robot in the left one; it is assigned anyway, and cover_leftovers covers it.
+  const auto art = swarm::test::ascii_map({
+      "R..#...",
+      "......." ,
+      "...#...",
+  });
+  const OccupancyGrid& map = art.grid;
+  std::vector<std::uint8_t> set = free_cells(map);
+  set[static_cast<std::size_t>(map.index({3, 1}))] = 0;  // the doorway is already covered
+  const CoverRoutes r = divide_and_route(map, set, {art.at.at('R')}, {}, CoverRoutesConfig{});
+  EXPECT_EQ(r.region_cells[0], 18);  // both pieces are its
+  // The route covers the left piece; the right one comes through cover_leftovers.
+  std::vector<std::uint8_t> left = set;
+  for (const Cell& c : r.routes[0]) left[static_cast<std::size_t>(map.index(c))] = 0;
+  const auto more = cover_leftovers(map, left, {r.routes[0].back()});
+  std::vector<Cell> all = r.routes[0];
+  all.insert(all.end(), more[0].begin() + 1, more[0].end());
+  expect_covers(map, set, {art.at.at('R')}, {all});
+}
+
+TEST(CoverRoutes, ADetourGoesAroundABlockedCellAndRejoinsTheRoute) {
+  const OccupancyGrid map(5, 3, 0.2, 0.0, 0.0, CellState::Free);
+  const std::vector<Cell> route = {{0, 1}, {1, 1}, {2, 1}, {3, 1}, {4, 1}};
+  const std::vector<Cell> d = detour(map, route, 1, {{2, 1}});
+  ASSERT_FALSE(d.empty());
+  EXPECT_EQ(d.front(), (Cell{1, 1}));
+  EXPECT_EQ(d.back(), (Cell{4, 1}));
+  // Around (2, 1): up or down, then back onto (3, 1): 4 steps to (3, 1), 5 cells, then (4, 1).
+  EXPECT_EQ(d.size(), 6u);
+  for (const Cell& c : d) EXPECT_NE(c, (Cell{2, 1}));
+  EXPECT_TRUE(detour(map, route, 1, {{2, 0}, {2, 1}, {2, 2}}).empty());  // walled off
+}
+
+}  // namespace
+}  // namespace swarm::planner

@@ -1,0 +1,339 @@
+#include "mapf_command.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "mapf_maps.hpp"
+#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/mapf/movingai_scen.hpp"
+#include "swarm/planner/mapf/solver.hpp"
+#include "swarm/planner/mapf/validate.hpp"
+#include "swarm/planner/mapf/warehouse.hpp"
+#include "swarm/record/grid_canvas.hpp"
+
+namespace swarm::tools {
+namespace {
+
+namespace fs = std::filesystem;
+namespace pm = swarm::planner::mapf;
+using swarm::planner::Cell;
+using swarm::planner::OccupancyGrid;
+
+std::string now_stamp() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  localtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y%m%d-%H%M%S", &tm);
+  return buf;
+}
+
+std::string base64(const std::string& bytes) {
+  static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const unsigned b0 = static_cast<unsigned char>(bytes[i]);
+    const unsigned b1 = i + 1 < bytes.size() ? static_cast<unsigned char>(bytes[i + 1]) : 0;
+    const unsigned b2 = i + 2 < bytes.size() ? static_cast<unsigned char>(bytes[i + 2]) : 0;
+    const unsigned v = (b0 << 16) | (b1 << 8) | b2;
+    out += kAlphabet[(v >> 18) & 63];
+    out += kAlphabet[(v >> 12) & 63];
+    out += i + 1 < bytes.size() ? kAlphabet[(v >> 6) & 63] : '=';
+    out += i + 2 < bytes.size() ? kAlphabet[v & 63] : '=';
+  }
+  return out;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+int auto_scale(const OccupancyGrid& map, int requested) {
+  if (requested > 0) return requested;
+  return std::clamp(900 / std::max(map.width(), map.height()), 2, 32);
+}
+
+// The picture's title (solver, agents, status) and its numbers line.
+std::string title_of(const std::string& solver, const pm::Instance& in, const pm::Result& r) {
+  std::string t = solver + ": " + std::to_string(in.agents()) + " agents, " + pm::to_string(r.status);
+  if (r.conflicts > 0) t += ", " + std::to_string(r.conflicts) + " collisions";
+  return t;
+}
+std::string numbers_of(const pm::Result& r) {
+  std::string t;
+  if (r.soc != pm::kNoCost) t += "soc " + std::to_string(r.soc) + " (lb " + std::to_string(r.lower_bound) + "), ";
+  if (r.makespan != pm::kNoCost) t += "makespan " + std::to_string(r.makespan) + ", ";
+  return t + fixed(r.seconds, 3) + " s";
+}
+
+void write_paths_png(const std::string& path, const pm::Instance& in, const pm::Result& r, const std::string& title, int scale) {
+  swarm::record::GridCanvas canvas(in.map, scale);
+  for (int a = 0; a < in.agents(); ++a) {
+    const auto colour = swarm::record::palette_colour(a);
+    if (a < static_cast<int>(r.paths.size())) canvas.polyline(r.paths[static_cast<std::size_t>(a)], colour, std::max(1, scale / 4));
+    canvas.marker(in.starts[static_cast<std::size_t>(a)], colour, swarm::record::Marker::Ring);
+    canvas.marker(in.goals[static_cast<std::size_t>(a)], colour, swarm::record::Marker::Cross);
+  }
+  canvas.set_title(title);
+  canvas.add_legend(numbers_of(r), swarm::record::kInk);
+  canvas.add_legend("o start, x goal, one colour per agent", swarm::record::kInk);
+  canvas.write_png(path);
+}
+
+// A self-contained HTML page that plays the plan: the map (drawn by GridCanvas, embedded as a PNG)
+// with the agents moving on it, play/pause, step and a time slider.
+void write_animation(const std::string& dir, const pm::Instance& in, const pm::Result& r, const std::string& title, int scale) {
+  const std::string background = (fs::path(dir) / ".animation-background.png").string();
+  {
+    swarm::record::GridCanvas canvas(in.map, scale);
+    for (int a = 0; a < in.agents(); ++a) {
+      canvas.marker(in.goals[static_cast<std::size_t>(a)], swarm::record::palette_colour(a), swarm::record::Marker::Cross, 0.6);
+    }
+    canvas.set_title(title);
+    canvas.add_legend(numbers_of(r), swarm::record::kInk);
+    canvas.add_legend("discs: agents at time t, x: goals", swarm::record::kInk);
+    canvas.write_png(background);
+  }
+  nlohmann::json data;
+  data["image"] = "data:image/png;base64," + base64(slurp(background));
+  fs::remove(background);
+  data["scale"] = scale;
+  data["band"] = swarm::record::kBandPx;
+  data["height"] = in.map.height();
+  data["vanish"] = in.rules.at_goal == pm::GoalRule::Vanish;
+  nlohmann::json colours = nlohmann::json::array(), paths = nlohmann::json::array();
+  for (int a = 0; a < in.agents(); ++a) {
+    const auto c = swarm::record::palette_colour(a);
+    colours.push_back({c.r, c.g, c.b});
+    nlohmann::json p = nlohmann::json::array();
+    if (a < static_cast<int>(r.paths.size())) {
+      for (Cell c2 : r.paths[static_cast<std::size_t>(a)]) p.push_back({c2.x, c2.y});
+    }
+    paths.push_back(p);
+  }
+  data["colours"] = colours;
+  data["paths"] = paths;
+  std::ofstream html(fs::path(dir) / "animation.html");
+  html << R"(<!doctype html>
+<html><head><meta charset="utf-8"><title>swarm mapf</title>
+<style>body{font-family:sans-serif;margin:12px}canvas{image-rendering:pixelated;border:1px solid #ccc;max-width:100%}
+#bar{margin:6px 0}</style></head><body>
+<div id="bar"><button id="play">Play</button> <button id="prev">&lt;</button> <button id="next">&gt;</button>
+<input type="range" id="slider" min="0" value="0" step="1" style="width:420px">
+<span id="label"></span> &nbsp; steps/s <select id="speed"><option>1</option><option>2</option><option selected>4</option>
+<option>8</option><option>16</option></select></div>
+<canvas id="view"></canvas>
+<script>
+const D = )" << data.dump() << R"(;
+const img = new Image();
+const view = document.getElementById('view'), ctx = view.getContext('2d');
+const slider = document.getElementById('slider'), label = document.getElementById('label');
+const horizon = Math.max(1, ...D.paths.map(p => p.length)) - 1;
+slider.max = horizon;
+let t = 0, playing = false, last = null;
+function at(p, k) { return p[Math.min(k, p.length - 1)]; }
+function draw() {
+  ctx.drawImage(img, 0, 0);
+  const k = Math.floor(t), f = t - k, r = Math.max(1.5, D.scale * 0.4);
+  D.paths.forEach((p, a) => {
+    if (p.length === 0 || (D.vanish && k > p.length - 1)) return;  // arrived and left
+    const u = at(p, k), v = at(p, k + 1);
+    const x = (u[0] + (v[0] - u[0]) * f + 0.5) * D.scale;
+    const y = D.band + (D.height - 1 - (u[1] + (v[1] - u[1]) * f) + 0.5) * D.scale;
+    ctx.beginPath(); ctx.arc(x, y, r, 0, 2 * Math.PI);
+    ctx.fillStyle = 'rgb(' + D.colours[a].join(',') + ')'; ctx.fill();
+    ctx.lineWidth = 1; ctx.strokeStyle = '#222'; ctx.stroke();
+  });
+  slider.value = k;
+  label.textContent = 't = ' + k + ' / ' + horizon;
+}
+function tick(now) {
+  if (!playing) return;
+  if (last !== null) t = Math.min(horizon, t + (now - last) / 1000 * Number(document.getElementById('speed').value));
+  last = now;
+  draw();
+  if (t >= horizon) { playing = false; document.getElementById('play').textContent = 'Play'; return; }
+  requestAnimationFrame(tick);
+}
+document.getElementById('play').onclick = () => {
+  playing = !playing; last = null;
+  if (playing && t >= horizon) t = 0;
+  document.getElementById('play').textContent = playing ? 'Pause' : 'Play';
+  if (playing) requestAnimationFrame(tick);
+};
+document.getElementById('prev').onclick = () => { playing = false; t = Math.max(0, Math.ceil(t) - 1); draw(); };
+document.getElementById('next').onclick = () => { playing = false; t = Math.min(horizon, Math.floor(t) + 1); draw(); };
+slider.oninput = () => { playing = false; t = Number(slider.value); draw(); };
+img.onload = () => { view.width = img.width; view.height = img.height; draw(); };
+img.src = D.image;
+</script></body></html>
+)";
+}
+
+}  // namespace
+
+int mapf_command(const MapfOptions& o, std::ostream& out, std::ostream& err) {
+  const auto bad = [&](const std::string& msg) {
+    err << "swarm mapf: " << msg << "\n";
+    return 2;
+  };
+  pm::SolverConfig cfg;
+  if (!pm::parse_solver(o.solver, cfg.kind)) {
+    std::string names;
+    for (const auto& n : pm::solver_names()) names += (names.empty() ? "" : ", ") + n;
+    return bad("--solver: unknown solver '" + o.solver + "' (expected one of " + names + ")");
+  }
+  if (o.w < 1.0) return bad("--w: the suboptimality bound must be >= 1 (got " + fixed(o.w, 3) + ")");
+  if (!(o.time_limit_s > 0)) return bad("--time-limit: must be a positive number of seconds");
+  if (o.map.empty()) return bad("--map: required (a MovingAI .map, a map_server YAML, a built-in name or warehouse-RxC)");
+  const bool from_scen = !o.scen.empty();
+  if (from_scen == o.random.has_value()) return bad("give either --scen FILE --agents K or --random K");
+  if (from_scen && !o.agents) return bad("--agents: required with --scen (the first K rows are the agents)");
+  if (!from_scen && o.agents) return bad("--agents: only with --scen (use --random K for random agents)");
+
+  MapfMap m;
+  pm::Instance in;
+  try {
+    m = load_mapf_map(o.map);
+    if (from_scen) {
+      const pm::Scenario scen = pm::load_movingai_scen(o.scen);
+      in = pm::instance_from_scen(m.grid, scen, *o.agents, m.movingai_file ? m.file : "");
+      if (m.warehouse && !o.standard_rules) in.rules = pm::Rules::paper_warehouse();
+    } else {
+      in = make_random_instance(m, *o.random, o.seed, o.standard_rules);
+    }
+  } catch (const std::exception& e) {
+    return bad(e.what());
+  }
+  if (const auto problems = pm::check_instance(in); !problems.empty()) {
+    return bad((from_scen ? o.scen + ": " : std::string()) + problems.front());
+  }
+  if ((cfg.kind == pm::SolverKind::Ga || cfg.kind == pm::SolverKind::Ga1) &&
+      (!m.warehouse || in.rules != pm::Rules::paper_warehouse())) {
+    return bad("--solver " + o.solver + ": the paper's GA runs only on --map warehouse-RxC with the paper's rules");
+  }
+  cfg.ecbs.w = o.w;
+  const pm::TimeoutPlan plan = o.last_node_on_timeout ? pm::TimeoutPlan::LastExpanded : pm::TimeoutPlan::FewestConflicts;
+  cfg.cbs.timeout_plan = cfg.ecbs.timeout_plan = plan;
+  cfg.lacam.seed = cfg.ga.seed = o.seed;
+  cfg.lacam.refine = o.refine;
+  if (o.ga_population) cfg.ga.population = *o.ga_population;
+  if (o.ga_generations1) cfg.ga.stage1_generations = *o.ga_generations1;
+  if (o.ga_generations2) cfg.ga.stage2_generations = *o.ga_generations2;
+  if (o.ga_elite) cfg.ga.elite = *o.ga_elite;
+  if (o.ga_initial_idle) cfg.ga.max_initial_idle = *o.ga_initial_idle;
+  if (o.ga_crossover) cfg.ga.crossover_rate = *o.ga_crossover;
+  if (o.ga_mutation) cfg.ga.mutation_rate = *o.ga_mutation;
+
+  const std::string dir = o.out_dir.empty() ? "runs/mapf-" + now_stamp() : o.out_dir;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) return bad("--out: cannot create the directory " + dir);
+
+  if (!o.quiet) {
+    out << "swarm mapf: " << in.agents() << " agents on " << m.name << " (" << in.map.width() << " x " << in.map.height()
+        << ", " << pm::describe(in.rules) << " rules), solver " << o.solver << ", limit " << fixed(o.time_limit_s, 1)
+        << " s\n" << std::flush;
+  }
+  pm::StopCondition stop = pm::StopCondition::after(o.time_limit_s);
+  const auto started = std::chrono::steady_clock::now();
+  auto next_note = started + std::chrono::seconds(2);
+  if (!o.quiet) {
+    stop.predicate = [&]() {
+      const auto now = std::chrono::steady_clock::now();
+      if (now >= next_note) {
+        out << "  ... " << static_cast<int>(std::chrono::duration<double>(now - started).count()) << " s\n" << std::flush;
+        next_note = now + std::chrono::seconds(2);
+      }
+      return false;
+    };
+  }
+  const pm::Result r = pm::solve(in, cfg, stop);
+
+  // result.json: coordinates of the map file (MovingAI / warehouse: y from the top).
+  const auto file_xy = [&](Cell c) { return m.y_down ? pm::to_movingai_xy(in.map, c) : c; };
+  nlohmann::json j;
+  j["map"] = o.map;
+  j["scen"] = o.scen;
+  j["agents"] = in.agents();
+  if (o.random) j["seed"] = o.seed;
+  j["solver"] = o.solver;
+  if (cfg.kind == pm::SolverKind::Ecbs) j["w"] = o.w;
+  j["time_limit"] = o.time_limit_s;
+  j["rules"] = pm::describe(in.rules);
+  j["status"] = pm::to_string(r.status);
+  j["soc"] = r.soc;
+  j["makespan"] = r.makespan;
+  j["lower_bound"] = r.lower_bound;
+  j["seconds"] = r.seconds;
+  j["collisions"] = r.conflicts;
+  j["message"] = r.message;
+  j["coordinates"] = m.y_down ? "x = column, y = row from the top (MovingAI)" : "x = column, y = row from the bottom (map_server cells)";
+  j["stats"] = {{"high_level_expanded", r.stats.high_level_expanded},
+                {"high_level_generated", r.stats.high_level_generated},
+                {"low_level_expanded", r.stats.low_level_expanded}};
+  nlohmann::json starts = nlohmann::json::array(), goals = nlohmann::json::array(), paths = nlohmann::json::array();
+  double work = 0, idle = 0;
+  for (int a = 0; a < in.agents(); ++a) {
+    const Cell s = file_xy(in.starts[static_cast<std::size_t>(a)]), g = file_xy(in.goals[static_cast<std::size_t>(a)]);
+    starts.push_back({s.x, s.y});
+    goals.push_back({g.x, g.y});
+    nlohmann::json p = nlohmann::json::array();
+    if (a < static_cast<int>(r.paths.size())) {
+      for (Cell c : r.paths[static_cast<std::size_t>(a)]) {
+        const Cell f = file_xy(c);
+        p.push_back({f.x, f.y});
+      }
+      work += pm::path_cost(in, a, r.paths[static_cast<std::size_t>(a)]);
+      idle += pm::idle_steps(in, a, r.paths[static_cast<std::size_t>(a)]);
+    }
+    paths.push_back(p);
+  }
+  if (!r.paths.empty() && in.agents() > 0) {
+    j["work_time_per_agent"] = work / in.agents();
+    j["stop_time_per_agent"] = idle / in.agents();
+  }
+  const std::string title = title_of(o.solver, in, r);
+  try {
+    // The numbers indented, the arrays one agent a line (a 1000-agent plan stays readable).
+    std::string text = j.dump(1);
+    text.erase(text.find_last_of('}'));
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+    for (const auto& [key, arr] : {std::pair{"starts", &starts}, std::pair{"goals", &goals}, std::pair{"paths", &paths}}) {
+      text += ",\n \"" + std::string(key) + "\": [";
+      for (std::size_t a = 0; a < arr->size(); ++a) text += (a == 0 ? "\n  " : ",\n  ") + (*arr)[a].dump();
+      text += "\n ]";
+    }
+    std::ofstream(fs::path(dir) / "result.json") << text << "\n}\n";
+    const int scale = auto_scale(in.map, o.scale);
+    write_paths_png((fs::path(dir) / "paths.png").string(), in, r, title, scale);
+    write_animation(dir, in, r, title, scale);
+    swarm::planner::save_movingai_map((fs::path(dir) / "map.map").string(), in.map);
+    pm::save_movingai_scen((fs::path(dir) / "instance.scen").string(), in, "map.map");
+  } catch (const std::exception& e) {
+    err << "swarm mapf: cannot write the outputs into " << dir << ": " << e.what() << "\n";
+    return 1;
+  }
+  out << title << ", " << numbers_of(r) << "\n";
+  if (!r.message.empty()) out << "  " << r.message << "\n";
+  out << "  wrote " << dir << "/result.json, paths.png, animation.html\n";
+  return r.status == pm::Status::Solved ? 0 : 1;
+}
+
+}  // namespace swarm::tools
