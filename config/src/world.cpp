@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "swarm/config/scenario.hpp"
+#include "swarm/config/task_config.hpp"
 #include "swarm/planner/frontier.hpp"
 #include "swarm/planner/map_io.hpp"
 #include "swarm/planner/start_cells.hpp"
@@ -234,6 +235,12 @@ World resolve_world(const swarm::scenario::Scenario& scenario, const std::string
     throw ConfigError(src + ": found start cells for only " +
                       std::to_string(w.robot_cells.size()) + " of " + std::to_string(robots) +
                       " robots around " + start_text + " in " + w.map_path);
+  }
+  // Each mapf phase's goals, checked now so that a bad one stops the run before it starts.
+  const auto phases = mission_phases(scenario);
+  for (std::size_t i = 0; i < phases.size(); ++i) {
+    if (task_of(phases[i]) != TaskKind::Mapf) continue;
+    (void)mapf_goals(phases[i].mapf(), g, robots, src + ": mission.phase[" + std::to_string(i) + "].mapf");
   }
   return w;
 }

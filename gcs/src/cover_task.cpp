@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "swarm/comm/convert.hpp"
+#include "swarm/comm/task_codes.hpp"
 #include "swarm/config/task_config.hpp"
 #include "swarm/planner/frontier.hpp"
 
@@ -12,8 +13,6 @@ namespace swarm::gcs {
 using planner::Cell;
 
 namespace {
-// A TaskReport's state: the group has covered its whole share.
-constexpr std::uint8_t kGroupDone = 1;
 // Re-dividing is not repeated faster than this (ticks): orders need time to travel and act.
 constexpr std::uint32_t kRedivideCooldown = 10;
 }  // namespace
@@ -129,17 +128,8 @@ void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cell
     ctx.out.order(o);
     for (std::size_t a = 0; a < robot_ids.size() && !config_.hierarchical(); ++a) {
       if (t.group_of(static_cast<comm::AgentId>(robot_ids[a])) != g) continue;
-      record::Frame f;
-      auto* rp = f.mutable_route();
-      rp->set_tick(ctx.tick());
-      rp->set_phase(phase_);
-      rp->set_robot(static_cast<std::uint32_t>(robot_ids[a]));
-      for (const Cell& c : plan.routes[a]) {
-        rp->add_xy(c.x);
-        rp->add_xy(c.y);
-      }
-      rp->set_region_cells(static_cast<std::uint32_t>(plan.region_cells[a]));
-      ctx.record.append(f);
+      ctx.record.append(route_frame(ctx.tick(), phase_, robot_ids[a], plan.routes[a],
+                                    static_cast<std::uint32_t>(plan.region_cells[a])));
     }
   }
   nlohmann::json cells_per_group = nlohmann::json::array();
@@ -162,7 +152,7 @@ void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cell
 }
 
 void CoverGcsTask::on_report(const msgs::TaskReport& r, GcsContext&) {
-  if (r.group() < group_done_.size() && r.state() == kGroupDone) group_done_[r.group()] = true;
+  if (r.group() < group_done_.size() && r.state() == comm::task::kDone) group_done_[r.group()] = true;
 }
 
 void CoverGcsTask::step(GcsContext& ctx) {

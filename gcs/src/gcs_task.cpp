@@ -4,6 +4,7 @@
 #include "swarm/config/scenario.hpp"
 #include "swarm/gcs/cover_task.hpp"
 #include "swarm/gcs/explore_task.hpp"
+#include "swarm/gcs/mapf_task.hpp"
 #include "swarm/planner/map_patch.hpp"
 
 namespace swarm::gcs {
@@ -17,6 +18,21 @@ record::Frame map_frame(std::uint32_t tick, std::uint32_t round, std::uint32_t p
   m->set_phase(phase);
   const auto rle = planner::encode_grid_rle(map);
   m->set_rle(std::string(rle.begin(), rle.end()));
+  return f;
+}
+
+record::Frame route_frame(std::uint32_t tick, std::uint32_t phase, int robot, const std::vector<planner::Cell>& route,
+                          std::uint32_t region_cells) {
+  record::Frame f;
+  auto* rp = f.mutable_route();
+  rp->set_tick(tick);
+  rp->set_phase(phase);
+  rp->set_robot(static_cast<std::uint32_t>(robot));
+  for (const planner::Cell& c : route) {
+    rp->add_xy(c.x);
+    rp->add_xy(c.y);
+  }
+  if (region_cells > 0) rp->set_region_cells(region_cells);
   return f;
 }
 
@@ -39,6 +55,8 @@ std::unique_ptr<GcsTask> make_gcs_task(const swarm::scenario::Phase& phase, cons
       return std::make_unique<ExploreGcsTask>(index);
     case config::TaskKind::Cover:
       return std::make_unique<CoverGcsTask>(phase.cover(), index, !explored);
+    case config::TaskKind::Mapf:
+      return std::make_unique<MapfGcsTask>(phase.mapf(), index, !explored);
     default:
       break;
   }

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "swarm/comm/convert.hpp"
+#include "swarm/comm/task_codes.hpp"
 #include "swarm/config/task_config.hpp"
 
 namespace swarm::leader {
@@ -12,7 +13,6 @@ using planner::Cell;
 using planner::RouteState;
 
 namespace {
-constexpr std::uint8_t kGroupDone = 1;  // TaskReport.state: the share is covered
 }  // namespace
 
 CoverGroupTask::CoverGroupTask(const swarm::scenario::Cover& config, const comm::RoleSetup& setup, int group)
@@ -121,7 +121,7 @@ void CoverGroupTask::step(GroupContext& ctx) {
   if (tracker_.complete()) {
     if (!reported_done_) {
       msgs::TaskReport report;
-      report.state(kGroupDone);
+      report.state(comm::task::kDone);  // the share is covered
       ctx.out.report(report);
       reported_done_ = true;
     }

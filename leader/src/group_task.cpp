@@ -3,6 +3,7 @@
 #include "swarm/config/scenario.hpp"
 #include "swarm/leader/cover_task.hpp"
 #include "swarm/leader/explore_task.hpp"
+#include "swarm/leader/mapf_task.hpp"
 
 namespace swarm::leader {
 
@@ -14,6 +15,8 @@ std::unique_ptr<GroupTask> make_group_task(const swarm::scenario::Phase& phase, 
       return std::make_unique<ExploreGroupTask>(phase.explore(), s.seed(), setup.topology.robots_per_group());
     case config::TaskKind::Cover:
       return std::make_unique<CoverGroupTask>(phase.cover(), setup, group);
+    case config::TaskKind::Mapf:
+      return std::make_unique<MapfGroupTask>(setup, group);
     default:
       break;
   }

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "swarm/comm/convert.hpp"
+#include "swarm/comm/task_codes.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/member/member_node.hpp"
 #include "swarm/planner/map_patch.hpp"
@@ -110,7 +111,7 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
                                     [this](const msgs::PhaseStart& p) { next_phase_ = p.phase(); },
                                     comm::Delivery::Reliable, 1);
   agent.subscribe<msgs::TaskOrder>(topic::kTaskOrder, LinkClass::LeaderGcs, [this](const msgs::TaskOrder& o) {
-    if (o.group() == group_) orders_.push_back(o);
+    if (o.group() == group_ || o.group() == comm::task::kAllGroups) orders_.push_back(o);
   }, comm::Delivery::Reliable, 1);
 }
 

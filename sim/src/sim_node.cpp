@@ -80,6 +80,15 @@ void SimNode::fill_judge(PhaseLog& p) const {
                {"target_cells", world_.coverage_target_cells()},
                {"makespan_ticks", p.full_tick ? nlohmann::json(*p.full_tick - p.start_tick) : nlohmann::json(nullptr)},
                {"coverage_curve", curve}};
+  } else if (p.task == "mapf") {
+    // Executed makespan: ticks from the phase's start to the last move any robot made (orders and
+    // routes take a few ticks to arrive), and from the first move to the last (the plan's own
+    // measure, comparable with the planned makespan).
+    const bool moved = p.last_move_tick.has_value();
+    p.judge = {{"makespan_ticks", moved ? *p.last_move_tick - p.start_tick : 0},
+               {"driven_makespan_ticks", moved ? *p.last_move_tick - *p.first_move_tick + 1 : 0},
+               {"conflicts", p.motion.vertex_conflict_events + p.motion.edge_conflict_events},
+               {"blocked_moves", p.motion.total.blocked_moves}};
   }
   p.judged = true;
 }
@@ -106,7 +115,15 @@ void SimNode::begin_tick(std::uint32_t k) {
     if (alive_[r] && lost) world_.command(static_cast<int>(r), world_.route(static_cast<int>(r)).id, {});
     alive_[r] = !lost;
   }
-  if (k > 0) world_.move();
+  if (k > 0) {
+    const std::uint64_t moves_before = world_.total_counts().moves;
+    world_.move();
+    if (world_.total_counts().moves != moves_before) {
+      PhaseLog& p = phases_.back();
+      if (!p.first_move_tick) p.first_move_tick = k;
+      p.last_move_tick = k;
+    }
+  }
   for (std::size_t r = 0; r < sense_.size(); ++r) {
     if (!alive_[r]) continue;
     world_.scan(static_cast<int>(r), ranges_);

@@ -4,8 +4,11 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "swarm/planner/cover_routes.hpp"
+#include "swarm/planner/mapf/solver.hpp"
 #include "swarm/proto/scenario.pb.h"
 
 namespace swarm::config {
@@ -14,5 +17,16 @@ namespace swarm::config {
 // GCS's and each leader's divisions draw different numbers).
 [[nodiscard]] planner::CoverRoutesConfig cover_routes_config(const swarm::scenario::Cover& cover, std::uint64_t seed,
                                                              std::uint64_t salt);
+
+// The MAPF solver of a mapf phase (ECBS with its w by default).
+[[nodiscard]] planner::mapf::SolverConfig mapf_solver_config(const swarm::scenario::Mapf& mapf, std::uint64_t seed);
+
+// The goals of a mapf phase, one per robot in robot-id order: the scenario's points (metres in the
+// map frame) or the first rows of its MovingAI `scen` (x = column, y = row from the top); empty
+// when it gives neither (a random free cell per robot, chosen when the phase starts). Throws
+// ConfigError naming `field` (and the file and line) for a goal outside the map, on a blocked
+// cell, two robots with one goal, or a scen whose map size differs or with too few rows.
+[[nodiscard]] std::vector<planner::Cell> mapf_goals(const swarm::scenario::Mapf& mapf, const planner::OccupancyGrid& map,
+                                                    int robots, const std::string& field);
 
 }  // namespace swarm::config

@@ -80,6 +80,10 @@ namespace swarm::gcs {
 // A MapVersion frame of the run record: `map` as the GCS had fused it at `tick`.
 [[nodiscard]] record::Frame map_frame(std::uint32_t tick, std::uint32_t round, std::uint32_t phase,
                                       const planner::OccupancyGrid& map);
+// A RoutePlan frame of the run record: the route the GCS planned for `robot` (region_cells: cover's
+// region size, 0 otherwise).
+[[nodiscard]] record::Frame route_frame(std::uint32_t tick, std::uint32_t phase, int robot,
+                                        const std::vector<planner::Cell>& route, std::uint32_t region_cells = 0);
 // The encoding whole maps travel in for the run's map_encoding: run-length, zstd-compressed when
 // the run's encoding is ZstdRunLength.
 [[nodiscard]] planner::PatchEncoding map_encoding(const comm::RoleSetup& setup);

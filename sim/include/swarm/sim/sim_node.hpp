@@ -66,6 +66,8 @@ class SimNode {
     ConflictEvents events_at_start;
     std::vector<std::pair<std::uint32_t, double>> curve;  // cover: (tick, covered fraction)
     std::optional<std::uint32_t> full_tick;              // cover: every target cell covered
+    std::optional<std::uint32_t> first_move_tick;        // the first and last tick a robot moved
+    std::optional<std::uint32_t> last_move_tick;         // in the phase
     nlohmann::json judge = nlohmann::json::object();
     record::MotionNumbers motion;
     bool judged = false;

@@ -1,0 +1,68 @@
+// The GCS's multi-agent path-finding task (issue 9; PAPERS.md section 3; planner/mapf/): every
+// living robot drives to its goal cell, and no two robots ever meet.
+//
+// How the plan is conflict-free across groups: the GCS plans for ALL living robots at once (one
+// MAPF instance; ECBS by default, config Mapf.solver) on the known map (the map file when the
+// mission starts with mapf, else the fused map), with the cells of robots it does not plan for (lost,
+// or in a group without its leader) as obstacles. The plan goes to every leader in one order.
+//
+// How it is driven under link delay: by its action-dependency graph (planner/mapf/adg.hpp;
+// leader/mapf_task.hpp): a robot enters a cell only after the robots planned there before it have
+// left, as its leader learns from their progress. A leader knows its own members' progress from
+// their RouteProgress; the others' it learns from the GCS, which relays what every leader reports.
+//
+// Messages (the task's contract over TaskOrder / TaskReport, comm/task_codes.hpp):
+//   TaskOrder kOrderWork, group kAllGroups, seq s: route_robots = the planned robot ids,
+//     routes_xy = their timed paths (one cell per tick, waits included).
+//   TaskReport (leader -> GCS): values = [s, robot, step, release, robot, step, release, ...] for
+//     its robots whose progress or release changed; state kDone when all its robots of plan s have
+//     arrived; kHeld after a hold when they all stand still.
+//   TaskOrder kOrderProgress, kAllGroups: values = [s, robot, step, release, ...], relayed.
+//   TaskOrder kOrderHold, seq s: stop releasing plan s.
+// A planned robot lost midway: the GCS holds the plan, waits until every group reports its robots
+// still, and plans again from where the living robots stand (seq s + 1).
+// Complete when every group of the current plan has reported kDone.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "swarm/gcs/gcs_task.hpp"
+#include "swarm/planner/mapf/result.hpp"
+
+namespace swarm::gcs {
+
+class MapfGcsTask : public GcsTask {
+ public:
+  MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given);
+  void start(GcsContext& ctx) override;
+  void step(GcsContext& ctx) override;
+  [[nodiscard]] bool complete() const override { return complete_; }
+  [[nodiscard]] ProgressLine progress(const GcsContext& ctx) const override;
+  void on_report(const msgs::TaskReport& r, GcsContext& ctx) override;
+  [[nodiscard]] nlohmann::json numbers() const override;
+
+ private:
+  void plan(GcsContext& ctx, const char* why);
+  void send_order(GcsContext& ctx, std::uint8_t kind, std::vector<std::int32_t> values = {});
+  std::vector<planner::Cell> random_goals(const GcsContext& ctx) const;
+
+  swarm::scenario::Mapf config_;
+  std::uint32_t phase_;
+  bool map_given_;
+  planner::OccupancyGrid known_;
+  std::vector<planner::Cell> goals_;  // per robot id
+  std::vector<int> planned_;          // robot ids in the current plan
+  std::vector<bool> group_in_plan_, group_done_, group_held_;
+  std::uint32_t seq_ = 0;
+  bool holding_ = false;
+  bool failed_ = false;  // the last plan could not be made: nothing to drive
+  bool complete_ = false;
+  std::uint32_t start_tick_ = 0;
+  int arrived_ = 0;
+  std::vector<std::int32_t> relay_;  // progress triples to relay this tick
+  planner::mapf::Result first_;      // the first plan's numbers
+  nlohmann::json plans_ = nlohmann::json::array();
+};
+
+}  // namespace swarm::gcs

@@ -1,0 +1,56 @@
+// The leader's multi-agent path-finding task (issue 9): its robots drive the GCS's plan
+// (gcs/mapf_task.hpp: the contract of the messages) by the plan's action-dependency graph
+// (planner/mapf/adg.hpp).
+//
+// With the plan, the leader builds the graph for ALL planned robots (every leader builds the same
+// one) and sends each of its robots its route without the waits, released only as far as the
+// graph allows. Each tick it learns progress: its own robots' from their RouteProgress, the other
+// groups' from the GCS's relay; whenever a robot of its own may go further it sends a
+// RouteRelease. It reports its own robots' progress and releases to the GCS (for the other
+// leaders), kDone when they have all arrived, and after a hold, kHeld once they all stand at their
+// release. Late knowledge only makes robots wait longer: never collide, never deadlock (the graph
+// of a valid plan has no cycle).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "swarm/leader/group_task.hpp"
+#include "swarm/planner/mapf/adg.hpp"
+
+namespace swarm::leader {
+
+class MapfGroupTask : public GroupTask {
+ public:
+  MapfGroupTask(const comm::RoleSetup& setup, int group);
+  void start(GroupContext& ctx) override;
+  void step(GroupContext& ctx) override;
+  void on_order(const msgs::TaskOrder& order, GroupContext& ctx) override;
+  void on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) override;
+  [[nodiscard]] nlohmann::json numbers() const override;
+
+ private:
+  void take_plan(const msgs::TaskOrder& order, GroupContext& ctx);
+  // Sends a release to every robot of the group that may now go further.
+  void release(GroupContext& ctx);
+  void note(int k);  // robot k's progress/release goes into the next report
+
+  int group_;
+  std::uint32_t seq_ = 0;
+  bool have_plan_ = false;
+  bool holding_ = false;
+  planner::mapf::Dependencies adg_;
+  std::vector<int> robot_of_;                 // plan index -> robot id
+  std::vector<int> index_of_;                 // plan index -> group index (-1: another group's)
+  std::vector<std::uint32_t> progress_;       // per plan index: the route step it is known at
+  std::vector<std::uint32_t> released_;       // per plan index: how far it may drive
+  std::vector<std::uint32_t> route_id_;       // per plan index (own robots)
+  std::vector<int> own_;                      // plan indices of this group's robots
+  std::vector<std::int32_t> report_;          // (robot, step, release) triples to report
+  bool reported_done_ = false;
+  bool reported_held_ = false;
+  std::uint64_t releases_sent_ = 0;
+  std::uint64_t plans_taken_ = 0;
+};
+
+}  // namespace swarm::leader

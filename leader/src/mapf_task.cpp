@@ -1,0 +1,151 @@
+#include "swarm/leader/mapf_task.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+
+#include "swarm/comm/convert.hpp"
+#include "swarm/comm/task_codes.hpp"
+
+namespace swarm::leader {
+
+namespace task = comm::task;
+
+MapfGroupTask::MapfGroupTask(const comm::RoleSetup&, int group) : group_(group) {}
+
+void MapfGroupTask::start(GroupContext&) {
+  have_plan_ = false;
+  holding_ = false;
+}
+
+void MapfGroupTask::note(int k) {
+  report_.push_back(robot_of_[static_cast<std::size_t>(k)]);
+  report_.push_back(static_cast<std::int32_t>(progress_[static_cast<std::size_t>(k)]));
+  report_.push_back(static_cast<std::int32_t>(released_[static_cast<std::size_t>(k)]));
+}
+
+void MapfGroupTask::take_plan(const msgs::TaskOrder& o, GroupContext& ctx) {
+  std::vector<planner::mapf::Path> paths;
+  for (const auto& xy : o.routes_xy()) paths.push_back(comm::from_xy(xy));
+  try {
+    adg_ = planner::mapf::dependencies(paths);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "leader-%d: mapf plan %u dropped: %s\n", group_, o.seq(), e.what());
+    return;
+  }
+  seq_ = o.seq();
+  have_plan_ = true;
+  holding_ = false;
+  reported_done_ = reported_held_ = false;
+  ++plans_taken_;
+  const std::size_t n = paths.size();
+  robot_of_.assign(o.route_robots().begin(), o.route_robots().end());
+  index_of_.assign(n, -1);
+  progress_.assign(n, 0);
+  released_.assign(n, 0);
+  route_id_.assign(n, 0);
+  own_.clear();
+  report_.clear();
+  const comm::Topology& t = ctx.topology();
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto robot = static_cast<comm::AgentId>(robot_of_[k]);
+    if (t.group_of(robot) != group_) continue;
+    index_of_[k] = t.index_of(robot);
+    own_.push_back(static_cast<int>(k));
+  }
+  // Each robot of the group gets its whole route, released as far as the graph allows now.
+  for (int k : own_) {
+    const auto ku = static_cast<std::size_t>(k);
+    released_[ku] = planner::mapf::releasable(adg_, k, progress_);
+    msgs::Route m;
+    m.path_xy(comm::to_xy(adg_.routes[ku]));
+    m.release(released_[ku]);
+    route_id_[ku] = ctx.out.route(index_of_[ku], m);
+    note(k);
+  }
+}
+
+void MapfGroupTask::on_order(const msgs::TaskOrder& o, GroupContext& ctx) {
+  if (o.kind() == task::kOrderWork) {
+    if (!have_plan_ || o.seq() > seq_) take_plan(o, ctx);
+    return;
+  }
+  if (!have_plan_ || o.values().empty() || static_cast<std::uint32_t>(o.values()[0]) != seq_) return;  // stale
+  if (o.kind() == task::kOrderHold) {
+    holding_ = true;
+    return;
+  }
+  if (o.kind() != task::kOrderProgress) return;
+  const auto& v = o.values();
+  for (std::size_t i = 1; i + 2 < v.size(); i += 3) {
+    const auto it = std::find(robot_of_.begin(), robot_of_.end(), v[i]);
+    if (it == robot_of_.end()) continue;
+    const auto k = static_cast<std::size_t>(it - robot_of_.begin());
+    if (index_of_[k] >= 0) continue;  // its own: known first-hand
+    progress_[k] = std::max(progress_[k], static_cast<std::uint32_t>(v[i + 1]));
+    released_[k] = std::max(released_[k], static_cast<std::uint32_t>(v[i + 2]));
+  }
+  release(ctx);
+}
+
+void MapfGroupTask::on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) {
+  if (!have_plan_) return;
+  for (int k : own_) {
+    const auto ku = static_cast<std::size_t>(k);
+    if (index_of_[ku] != index || route_id_[ku] != p.id || p.step <= progress_[ku]) continue;
+    progress_[ku] = p.step;
+    note(k);
+  }
+  release(ctx);
+}
+
+void MapfGroupTask::release(GroupContext& ctx) {
+  if (!have_plan_ || holding_) return;
+  for (int k : own_) {
+    const auto ku = static_cast<std::size_t>(k);
+    if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
+    const std::uint32_t may = planner::mapf::releasable(adg_, k, progress_);
+    if (may <= released_[ku]) continue;
+    released_[ku] = may;
+    msgs::RouteRelease r;
+    r.route_id(route_id_[ku]);
+    r.release(may);
+    ctx.out.release(index_of_[ku], r);
+    ++releases_sent_;
+    note(k);
+  }
+}
+
+void MapfGroupTask::step(GroupContext& ctx) {
+  if (!have_plan_) return;
+  release(ctx);
+  bool arrived = true, still = true;
+  for (int k : own_) {
+    const auto ku = static_cast<std::size_t>(k);
+    if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
+    arrived = arrived && progress_[ku] + 1 >= adg_.routes[ku].size();
+    still = still && progress_[ku] >= released_[ku];
+  }
+  std::uint8_t state = task::kWorking;
+  if (arrived && !reported_done_) {
+    state = task::kDone;
+    reported_done_ = true;
+  } else if (holding_ && still && !reported_held_) {
+    state = task::kHeld;
+    reported_held_ = true;
+  }
+  if (report_.empty() && state == task::kWorking) return;
+  msgs::TaskReport r;
+  r.state(state);
+  std::vector<std::int32_t> values{static_cast<std::int32_t>(seq_)};
+  values.insert(values.end(), report_.begin(), report_.end());
+  r.values(std::move(values));
+  report_.clear();
+  ctx.out.report(r);
+}
+
+nlohmann::json MapfGroupTask::numbers() const {
+  return {{"plans", plans_taken_}, {"releases_sent", releases_sent_}};
+}
+
+}  // namespace swarm::leader

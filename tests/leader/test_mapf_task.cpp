@@ -1,0 +1,79 @@
+// The mapf task end to end on the FakeBus (the real GCS, leaders, members and simulator, in one
+// thread): every robot reaches its goal with no conflict the simulator sees, with and without
+// member<->leader delay and jitter, and when a member is lost midway.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "swarm_test/fake_swarm.hpp"
+
+namespace swarm::leader {
+namespace {
+
+nlohmann::json run_to_end(swarm::test::FakeSwarm& s, const std::function<void()>& at_tick_20 = {}) {
+  s.start();
+  while (s.step()) {
+    if (s.tick() == 20 && at_tick_20) at_tick_20();
+  }
+  s.finish();
+  std::ifstream in(s.run_dir() + "/metrics.json");
+  return nlohmann::json::parse(in);
+}
+
+const nlohmann::json& mapf_phase(const nlohmann::json& m) {
+  for (const auto& p : m["phases"]) {
+    if (p["name"] == "mapf") return p;
+  }
+  throw std::runtime_error("no mapf phase");
+}
+
+constexpr const char* kTwoGroups = "map: 'small' groups: 2 robots_per_group: 3 max_ticks: 600 ";
+
+TEST(MapfTask, WithoutDelayEveryRobotArrivesWithNoConflict) {
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(std::string(kTwoGroups) + "mission { phase { mapf {} } }"));
+  const auto m = run_to_end(s);
+  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto& p = mapf_phase(m);
+  EXPECT_EQ(p["task"]["solver_status"], "solved");
+  EXPECT_EQ(p["task"]["robots_at_goal"], 6);
+  EXPECT_EQ(p["motion"]["vertex_conflict_events"], 0);
+  EXPECT_EQ(p["motion"]["edge_conflict_events"], 0);
+  EXPECT_EQ(p["motion"]["blocked_moves"], 0);
+  EXPECT_EQ(p["motion"]["wall_stops"], 0);
+  // The plan's timing is kept: from the first move to the last as many ticks as planned.
+  EXPECT_EQ(p["task"]["driven_makespan_ticks"], p["task"]["planned_makespan"]);
+  std::cerr << "planned makespan " << p["task"]["planned_makespan"] << ", executed " << p["task"]["makespan_ticks"] << " driven " << p["task"]["driven_makespan_ticks"]
+            << "\n";
+}
+
+TEST(MapfTask, WithMemberLeaderDelayAndJitterStillNoConflict) {
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+      std::string(kTwoGroups) +
+      "links { member_leader { delay_ticks: 3 jitter_ticks: 4 } } mission { phase { mapf {} } }"));
+  const auto m = run_to_end(s);
+  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto& p = mapf_phase(m);
+  EXPECT_EQ(p["task"]["robots_at_goal"], 6);
+  EXPECT_EQ(p["task"]["conflicts"], 0);
+  EXPECT_EQ(p["motion"]["blocked_moves"], 0);
+  std::cerr << "planned makespan " << p["task"]["planned_makespan"] << ", executed " << p["task"]["makespan_ticks"] << " driven " << p["task"]["driven_makespan_ticks"]
+            << "\n";
+}
+
+TEST(MapfTask, AMemberLostMidwayTheOthersArePlannedAgain) {
+  auto setup = swarm::test::setup_from_text(std::string(kTwoGroups) + "mission { phase { mapf {} } }");
+  swarm::test::FakeSwarm s(setup);
+  const auto m = run_to_end(s, [&] { s.disconnect(setup.topology.robot(1, 2)); });
+  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto& p = mapf_phase(m);
+  ASSERT_EQ(p["task"]["plans"].size(), 2u);
+  EXPECT_EQ(p["task"]["plans"][1]["why"], "robot lost");
+  EXPECT_EQ(p["task"]["plans"][1]["robots"], 5);
+  EXPECT_EQ(p["task"]["robots_at_goal"], 5);
+  EXPECT_EQ(p["task"]["conflicts"], 0);
+}
+
+}  // namespace
+}  // namespace swarm::leader

@@ -1,0 +1,51 @@
+// The action-dependency graph (planner/mapf/adg.hpp) on hand-made plans: a crossing, a follower, a
+// rotation, a plan with a conflict. tests/sim/test_adg_drive.cpp drives solvers' plans with late
+// knowledge through the simulator's move resolution.
+#include <gtest/gtest.h>
+
+#include "swarm/planner/mapf/adg.hpp"
+
+namespace {
+
+using swarm::planner::Cell;
+using namespace swarm::planner::mapf;
+
+TEST(Adg, ACrossingWaitsForTheRobotPlannedFirst) {
+  // Robot 0 crosses (1, 1) at time 1; robot 1 waits a step, then crosses it at time 2.
+  const std::vector<Path> plan{{{0, 1}, {1, 1}, {2, 1}}, {{1, 0}, {1, 0}, {1, 1}, {1, 2}}};
+  const Dependencies d = dependencies(plan);
+  EXPECT_EQ(d.routes[1], (std::vector<Cell>{{1, 0}, {1, 1}, {1, 2}}));  // the wait is gone
+  EXPECT_EQ(d.planned_time[1], (std::vector<int>{0, 2, 3}));
+  EXPECT_TRUE(d.needs[0][1].empty());
+  EXPECT_EQ(d.needs[1][1], (std::vector<Need>{{0, 2}}));  // robot 0 has left (1, 1)
+  EXPECT_TRUE(d.needs[1][2].empty());
+  EXPECT_EQ(releasable(d, 1, {0, 0}), 0u);
+  EXPECT_EQ(releasable(d, 1, {1, 0}), 0u);
+  EXPECT_EQ(releasable(d, 1, {2, 0}), 2u);
+  EXPECT_EQ(releasable(d, 0, {0, 0}), 2u);
+}
+
+TEST(Adg, AFollowerWaitsUntilTheCellAheadIsLeft) {
+  // Robot 1 follows robot 0 along a corridor one step behind: each of its steps needs robot 0's next.
+  const std::vector<Path> plan{{{1, 0}, {2, 0}, {3, 0}}, {{0, 0}, {1, 0}, {2, 0}}};
+  const Dependencies d = dependencies(plan);
+  EXPECT_EQ(d.needs[1][1], (std::vector<Need>{{0, 1}}));
+  EXPECT_EQ(d.needs[1][2], (std::vector<Need>{{0, 2}}));
+  EXPECT_EQ(releasable(d, 1, {1, 0}), 1u);
+}
+
+TEST(Adg, APlanWithAVertexConflictIsRefused) {
+  const std::vector<Path> plan{{{0, 0}, {1, 0}}, {{2, 0}, {1, 0}}};
+  EXPECT_THROW((void)dependencies(plan), std::invalid_argument);
+}
+
+TEST(Adg, ARotationIsOneJointStep) {
+  // Four robots go round the 2 x 2 square in one step: each needs the one ahead only to stand there.
+  const std::vector<Path> plan{{{0, 0}, {1, 0}}, {{1, 0}, {1, 1}}, {{1, 1}, {0, 1}}, {{0, 1}, {0, 0}}};
+  const Dependencies d = dependencies(plan);
+  EXPECT_EQ(d.needs[0][1], (std::vector<Need>{{1, 0}}));
+  EXPECT_EQ(d.needs[3][1], (std::vector<Need>{{0, 0}}));
+  for (int r = 0; r < 4; ++r) EXPECT_EQ(releasable(d, r, {0, 0, 0, 0}), 1u) << r;
+}
+
+}  // namespace
