@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "clean_command.hpp"
+#include "experiment_tasks.hpp"
 #include "offline_experiments.hpp"
 #include "tour_command.hpp"
 
@@ -13,11 +14,31 @@ struct OfflineCommands::Impl {
   CLI::App* clean_cmd = nullptr;
   CLI::App* tour_exp = nullptr;
   CLI::App* clean_exp = nullptr;
+  CLI::App* cover_exp = nullptr;
+  CLI::App* mapf_live_exp = nullptr;
   TourCommandOptions tour;
   CleanCommandOptions clean;
   TourExperimentOptions tour_experiment;
   CleanExperimentOptions clean_experiment;
+  TaskExperimentOptions cover_experiment, mapf_live_experiment;
 };
+
+namespace {
+
+CLI::App* add_task_experiment(CLI::App& experiment, const std::string& task, const std::string& what,
+                              TaskExperimentOptions& o) {
+  o.task = task;
+  CLI::App* c = experiment.add_subcommand(task, what);
+  c->add_option("--map", o.map, "Built-in map or map_server YAML")->capture_default_str();
+  c->add_option("--seeds", o.seeds, "Seeds 1..N per point and variant")->capture_default_str();
+  c->add_option("--jobs", o.jobs, "Runs at once")->capture_default_str();
+  c->add_option("--timeout", o.timeout_s, "Wall-clock limit per run in seconds")->capture_default_str();
+  c->add_option("--out", o.out_dir, "Experiment directory; default runs/experiment-" + task + "-<time>");
+  c->add_flag("--quick", o.quick, "Only the first two points of the first sweep (a smoke test)");
+  return c;
+}
+
+}  // namespace
 
 OfflineCommands::OfflineCommands(CLI::App& app, CLI::App& experiment) : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
@@ -60,6 +81,15 @@ OfflineCommands::OfflineCommands(CLI::App& app, CLI::App& experiment) : impl_(st
       ->capture_default_str();
   m.clean_exp->add_option("--jobs", ce.jobs, "Threads; default the core count");
   m.clean_exp->add_option("--out", ce.out_dir, "Experiment directory; default runs/experiment-clean-<time>");
+
+  m.cover_exp = add_task_experiment(experiment, "cover",
+                                    "Live coverage makespan vs robots, member<->leader delay and loss; "
+                                    "hierarchical vs flat DARP (swarm runs)",
+                                    m.cover_experiment);
+  m.mapf_live_exp = add_task_experiment(experiment, "mapf-live",
+                                        "Live MAPF makespan and conflicts vs member<->leader delay and robots; "
+                                        "ECBS vs LaCAM (swarm runs)",
+                                        m.mapf_live_experiment);
 }
 
 OfflineCommands::~OfflineCommands() = default;
@@ -70,6 +100,8 @@ std::optional<int> OfflineCommands::run(std::ostream& out, std::ostream& err) co
   if (m.clean_cmd->parsed()) return clean_command(m.clean, out, err);
   if (m.tour_exp->parsed()) return tour_experiment(m.tour_experiment, out, err);
   if (m.clean_exp->parsed()) return clean_experiment(m.clean_experiment, out, err);
+  if (m.cover_exp->parsed()) return task_experiment(m.cover_experiment, out, err);
+  if (m.mapf_live_exp->parsed()) return task_experiment(m.mapf_live_experiment, out, err);
   return std::nullopt;
 }
 

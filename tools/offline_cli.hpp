@@ -1,6 +1,7 @@
-// The offline planning commands on the `swarm` command line: `swarm tour`, `swarm clean`,
-// `swarm experiment tour` and `swarm experiment clean` (tour_command.hpp, clean_command.hpp,
-// offline_experiments.hpp). swarm_main.cpp makes one OfflineCommands after its own subcommands and
+// The planning commands on the `swarm` command line beyond `run`: `swarm tour`, `swarm clean`,
+// `swarm experiment tour` and `swarm experiment clean` (offline: tour_command.hpp,
+// clean_command.hpp, offline_experiments.hpp), and the live task experiments `swarm experiment
+// cover` and `swarm experiment mapf-live` (experiment_tasks.hpp). swarm_main.cpp makes one OfflineCommands after its own subcommands and
 // asks it after parsing:
 //
 //   OfflineCommands offline(app, *experiment_cmd);

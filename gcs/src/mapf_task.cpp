@@ -100,6 +100,14 @@ void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
   o.group(task::kAllGroups);
   o.kind(task::kOrderWork);
   o.seq(seq_);
+  if (config_.execution() == swarm::scenario::MAPF_EXECUTE_TIMED) {
+    // One start tick for every robot: late enough for the order to reach every leader and its
+    // routes every member, with the configured delays and jitter (loss is not allowed for).
+    const auto& links = ctx.setup.world.scenario.links();
+    const std::uint32_t margin = 2 + links.leader_gcs().delay_ticks() + links.leader_gcs().jitter_ticks() +
+                                 links.member_leader().delay_ticks() + links.member_leader().jitter_ticks();
+    o.values().push_back(static_cast<std::int32_t>(ctx.tick() + margin));
+  }
   for (std::size_t k = 0; k < planned_.size(); ++k) {
     o.route_robots().push_back(static_cast<std::uint16_t>(planned_[k]));
     o.routes_xy().push_back(comm::to_xy(res.paths[k]));
@@ -173,6 +181,7 @@ ProgressLine MapfGcsTask::progress(const GcsContext&) const {
 
 nlohmann::json MapfGcsTask::numbers() const {
   return {{"solver", swarm::scenario::MapfSolver_Name(config_.solver())},
+          {"execution", swarm::scenario::MapfExecution_Name(config_.execution())},
           {"map_given", map_given_},
           {"robots_planned", planned_.size()},
           {"robots_at_goal", arrived_},

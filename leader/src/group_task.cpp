@@ -16,7 +16,7 @@ std::unique_ptr<GroupTask> make_group_task(const swarm::scenario::Phase& phase, 
     case config::TaskKind::Cover:
       return std::make_unique<CoverGroupTask>(phase.cover(), setup, group);
     case config::TaskKind::Mapf:
-      return std::make_unique<MapfGroupTask>(setup, group);
+      return std::make_unique<MapfGroupTask>(phase.mapf(), group);
     default:
       break;
   }

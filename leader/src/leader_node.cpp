@@ -183,7 +183,7 @@ void LeaderNode::step(const msgs::Clock& clock) {
   dispatch(ctx);
   tasks_[phase_]->step(ctx);
 
-  const member::RobotAgent::Step s = robot_.step();
+  const member::RobotAgent::Step s = robot_.step(ctx.clock.tick());
   member::publish_motion(motion_, agent_.self(), s);
   if (s.report) {
     msgs::MemberStatus own;

@@ -11,7 +11,8 @@ namespace swarm::leader {
 
 namespace task = comm::task;
 
-MapfGroupTask::MapfGroupTask(const comm::RoleSetup&, int group) : group_(group) {}
+MapfGroupTask::MapfGroupTask(const swarm::scenario::Mapf& config, int group)
+    : timed_(config.execution() == swarm::scenario::MAPF_EXECUTE_TIMED), group_(group) {}
 
 void MapfGroupTask::start(GroupContext&) {
   have_plan_ = false;
@@ -39,6 +40,7 @@ void MapfGroupTask::take_plan(const msgs::TaskOrder& o, GroupContext& ctx) {
   reported_done_ = reported_held_ = false;
   ++plans_taken_;
   const std::size_t n = paths.size();
+  routes_ = timed_ ? paths : adg_.routes;
   robot_of_.assign(o.route_robots().begin(), o.route_robots().end());
   index_of_.assign(n, -1);
   progress_.assign(n, 0);
@@ -53,13 +55,16 @@ void MapfGroupTask::take_plan(const msgs::TaskOrder& o, GroupContext& ctx) {
     index_of_[k] = t.index_of(robot);
     own_.push_back(static_cast<int>(k));
   }
-  // Each robot of the group gets its whole route, released as far as the graph allows now.
+  // Each robot of the group gets its whole route, released as far as the graph allows now (or,
+  // timed, all of it from the start tick).
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
-    released_[ku] = planner::mapf::releasable(adg_, k, progress_);
+    released_[ku] = timed_ ? static_cast<std::uint32_t>(routes_[ku].size() - 1)
+                           : planner::mapf::releasable(adg_, k, progress_);
     msgs::Route m;
-    m.path_xy(comm::to_xy(adg_.routes[ku]));
+    m.path_xy(comm::to_xy(routes_[ku]));
     m.release(released_[ku]);
+    if (timed_ && !o.values().empty()) m.start_tick(static_cast<std::uint32_t>(o.values()[0]));
     route_id_[ku] = ctx.out.route(index_of_[ku], m);
     note(k);
   }
@@ -100,7 +105,7 @@ void MapfGroupTask::on_progress(int index, const planner::RouteProgress& p, Grou
 }
 
 void MapfGroupTask::release(GroupContext& ctx) {
-  if (!have_plan_ || holding_) return;
+  if (!have_plan_ || holding_ || timed_) return;
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
     if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
@@ -123,7 +128,7 @@ void MapfGroupTask::step(GroupContext& ctx) {
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
     if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
-    arrived = arrived && progress_[ku] + 1 >= adg_.routes[ku].size();
+    arrived = arrived && progress_[ku] + 1 >= routes_[ku].size();
     still = still && progress_[ku] >= released_[ku];
   }
   std::uint8_t state = task::kWorking;

@@ -22,7 +22,7 @@ void publish_motion(comm::Mailbox::Outlet<msgs::MotionCommand>& motion, comm::Ag
 }
 
 void follow_route(RobotAgent& robot, const msgs::Route& r) {
-  robot.follow(r.route_id(), comm::from_xy(r.path_xy()), r.release(), r.pick_steps(), r.drop_steps());
+  robot.follow(r.route_id(), comm::from_xy(r.path_xy()), r.release(), r.pick_steps(), r.drop_steps(), r.start_tick());
 }
 
 MemberNode::MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index)
@@ -62,7 +62,7 @@ MemberNode::MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
                                       }, comm::Delivery::Reliable, 1);
 }
 
-void MemberNode::step(const msgs::Clock& /*clock*/) {
+void MemberNode::step(const msgs::Clock& clock) {
   if (!pending_up_.empty()) {
     msgs::MapPatch patch;
     patch.group(static_cast<std::uint16_t>(group_));
@@ -70,7 +70,7 @@ void MemberNode::step(const msgs::Clock& /*clock*/) {
     patch_up_.send(patch);
     pending_up_.clear();
   }
-  const RobotAgent::Step s = robot_.step();
+  const RobotAgent::Step s = robot_.step(clock.tick());
   publish_motion(motion_, agent_.self(), s);
   const planner::RouteProgress p = robot_.following();
   if (p.id != 0 && !(p == reported_)) {

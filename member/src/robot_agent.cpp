@@ -62,11 +62,11 @@ bool RobotAgent::replan(std::optional<Cell> avoid) {
   return true;
 }
 
-RobotAgent::Step RobotAgent::step() {
+RobotAgent::Step RobotAgent::step(std::uint32_t tick) {
   Step out;
   out.round = round_;
   if (follow_) {
-    step_following(out);
+    step_following(out, tick);
     if (out.path_changed) {
       out.route_id = ++sent_id_;
       follow_->sim_id = out.route_id;

@@ -10,7 +10,7 @@ using planner::Cell;
 using planner::RouteState;
 
 void RobotAgent::follow(std::uint32_t id, std::vector<Cell> cells, std::uint32_t release,
-                        std::vector<std::uint32_t> picks, std::vector<std::uint32_t> drops) {
+                        std::vector<std::uint32_t> picks, std::vector<std::uint32_t> drops, std::uint32_t start_tick) {
   waypoint_.reset();
   path_.clear();
   Follow f;
@@ -18,6 +18,7 @@ void RobotAgent::follow(std::uint32_t id, std::vector<Cell> cells, std::uint32_t
   f.release = std::min<std::uint32_t>(release, f.cells.empty() ? 0 : static_cast<std::uint32_t>(f.cells.size() - 1));
   f.picks = std::move(picks);
   f.drops = std::move(drops);
+  f.start_tick = start_tick;
   follow_ = std::move(f);
   follow_progress_ = {id, 0, follow_->cells.empty() ? RouteState::Finished : RouteState::Active};
 }
@@ -28,7 +29,7 @@ void RobotAgent::release(std::uint32_t id, std::uint32_t up_to) {
   follow_->release = std::max(follow_->release, std::min(up_to, last));
 }
 
-void RobotAgent::step_following(Step& out) {
+void RobotAgent::step_following(Step& out, std::uint32_t tick) {
   Follow& f = *follow_;
   if (follow_progress_.state != RouteState::Active) return;
   // Where the simulator says the robot is along the part it drives.
@@ -49,6 +50,7 @@ void RobotAgent::step_following(Step& out) {
   // (or none was sent). A part in flight is waited for.
   const bool part_done = f.sim_id == 0 || (report_.id == f.sim_id && f.base + report_.step == f.sent_to);
   if (!part_done || f.release <= at) return;
+  if (f.sim_id == 0 && tick < f.start_tick) return;  // not yet: the route sets off at its start tick
   if (pose_ != f.cells[at]) {
     follow_progress_.state = RouteState::Abandoned;  // not where the route says: cannot go on
     return;

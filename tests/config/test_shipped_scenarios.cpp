@@ -28,7 +28,8 @@ fs::path path_of(const std::string& name) {
 
 TEST(ShippedScenarios, AreThereAll) {
   EXPECT_EQ(shipped(),
-            (std::vector<std::string>{"default", "deploy_faults", "maze1", "maze2", "open", "small"}));
+            (std::vector<std::string>{"cover-given", "cover-small", "default", "deploy_faults", "mapf-small", "maze1",
+                                      "maze2", "open", "small"}));
 }
 
 class Shipped : public ::testing::TestWithParam<std::string> {};
@@ -46,7 +47,11 @@ TEST_P(Shipped, LoadsAndResolves) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenarios, Shipped, ::testing::ValuesIn(shipped()),
-                         [](const auto& info) { return info.param; });
+                         [](const auto& info) {
+                           std::string name = info.param;  // test names: letters, digits, '_'
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
 
 TEST(ShippedScenarios, DefaultIsThePapersTable1OnMaze1) {
   const swarm::scenario::Scenario s = cfg::load_scenario(path_of("default").string());

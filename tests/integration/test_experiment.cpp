@@ -132,5 +132,31 @@ TEST(ExperimentBadInput, ExitsTwoSayingWhatIsAccepted) {
   EXPECT_FALSE(fs::exists(dir + "/a/experiment.json"));
 }
 
+// The live task experiments in their smallest setting: every run completes, the CSV has a row per
+// run, the table and the plot are written; mapf-live's runs have no conflict.
+TEST(ExperimentTasks, CoverAndMapfLiveQuickRunsComplete) {
+  for (const std::string task : {"cover", "mapf-live"}) {
+    const std::string dir = fresh_dir("experiment_" + task);
+    const CommandResult r = run_swarm("experiment " + task + " --quick --seeds 1 --out " + dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto results = read_json(dir + "/results.json");
+    const std::size_t variants = task == "cover" ? 2 : 3;
+    ASSERT_EQ(results["runs"].size(), 2 * variants) << task;
+    for (const auto& run : results["runs"]) {
+      EXPECT_EQ(run["status"], "ok") << task << " " << run["dir"];
+      EXPECT_TRUE(run["complete"].get<bool>()) << task << " " << run["dir"];
+      if (task == "mapf-live") EXPECT_EQ(run["conflicts"], 0) << run["dir"];
+      if (task == "cover") EXPECT_DOUBLE_EQ(run["covered_percent"].get<double>(), 100.0) << run["dir"];
+    }
+    EXPECT_TRUE(fs::exists(dir + "/" + task + ".png"));
+    EXPECT_TRUE(fs::exists(dir + "/table.txt"));
+    std::ifstream csv(dir + "/results.csv");
+    std::string line;
+    std::size_t lines = 0;
+    while (std::getline(csv, line)) ++lines;
+    EXPECT_EQ(lines, 1 + 2 * variants) << task;
+  }
+}
+
 }  // namespace
 }  // namespace swarm::test

@@ -62,6 +62,25 @@ TEST(MapfTask, WithMemberLeaderDelayAndJitterStillNoConflict) {
             << "\n";
 }
 
+// Nine robots: the dependency graph makes robots wait for each other, and each wait costs the
+// progress -> release round trip, so driven by the graph the plan takes longer; driven by its
+// timing from one start tick it takes exactly as long as planned, still without a conflict.
+TEST(MapfTask, TimedExecutionKeepsThePlansMakespanExactly) {
+  const std::string team = "map: 'small' groups: 3 robots_per_group: 3 max_ticks: 600 ";
+  swarm::test::FakeSwarm adg(swarm::test::setup_from_text(team + "mission { phase { mapf {} } }"));
+  const auto by_graph = mapf_phase(run_to_end(adg));
+  swarm::test::FakeSwarm timed(
+      swarm::test::setup_from_text(team + "mission { phase { mapf { execution: MAPF_EXECUTE_TIMED } } }"));
+  const auto m = run_to_end(timed);
+  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto& p = mapf_phase(m);
+  EXPECT_EQ(p["task"]["robots_at_goal"], 9);
+  EXPECT_EQ(p["task"]["conflicts"], 0);
+  EXPECT_EQ(p["task"]["driven_makespan_ticks"], p["task"]["planned_makespan"]);
+  EXPECT_GT(by_graph["task"]["driven_makespan_ticks"].get<int>(), p["task"]["planned_makespan"].get<int>());
+  EXPECT_EQ(by_graph["task"]["conflicts"], 0);
+}
+
 TEST(MapfTask, AMemberLostMidwayTheOthersArePlannedAgain) {
   auto setup = swarm::test::setup_from_text(std::string(kTwoGroups) + "mission { phase { mapf {} } }");
   swarm::test::FakeSwarm s(setup);

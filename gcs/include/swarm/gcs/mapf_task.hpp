@@ -13,7 +13,8 @@
 //
 // Messages (the task's contract over TaskOrder / TaskReport, comm/task_codes.hpp):
 //   TaskOrder kOrderWork, group kAllGroups, seq s: route_robots = the planned robot ids,
-//     routes_xy = their timed paths (one cell per tick, waits included).
+//     routes_xy = their timed paths (one cell per tick, waits included); timed execution
+//     (Mapf.execution): values = [the start tick every robot sets off at].
 //   TaskReport (leader -> GCS): values = [s, robot, step, release, robot, step, release, ...] for
 //     its robots whose progress or release changed; state kDone when all its robots of plan s have
 //     arrived; kHeld after a hold when they all stand still.

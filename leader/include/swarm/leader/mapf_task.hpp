@@ -9,7 +9,9 @@
 // RouteRelease. It reports its own robots' progress and releases to the GCS (for the other
 // leaders), kDone when they have all arrived, and after a hold, kHeld once they all stand at their
 // release. Late knowledge only makes robots wait longer: never collide, never deadlock (the graph
-// of a valid plan has no cycle).
+// of a valid plan has no cycle; rotations go as one step, planner/mapf/adg.hpp).
+// With `execution: MAPF_EXECUTE_TIMED` each robot instead gets its whole timed path (waits
+// included), released at once, to set off at the plan's start tick (the order's values[0]).
 #pragma once
 
 #include <cstdint>
@@ -22,7 +24,7 @@ namespace swarm::leader {
 
 class MapfGroupTask : public GroupTask {
  public:
-  MapfGroupTask(const comm::RoleSetup& setup, int group);
+  MapfGroupTask(const swarm::scenario::Mapf& config, int group);
   void start(GroupContext& ctx) override;
   void step(GroupContext& ctx) override;
   void on_order(const msgs::TaskOrder& order, GroupContext& ctx) override;
@@ -35,11 +37,13 @@ class MapfGroupTask : public GroupTask {
   void release(GroupContext& ctx);
   void note(int k);  // robot k's progress/release goes into the next report
 
+  bool timed_;
   int group_;
   std::uint32_t seq_ = 0;
   bool have_plan_ = false;
   bool holding_ = false;
   planner::mapf::Dependencies adg_;
+  std::vector<std::vector<planner::Cell>> routes_;  // per plan index: what the robot drives
   std::vector<int> robot_of_;                 // plan index -> robot id
   std::vector<int> index_of_;                 // plan index -> group index (-1: another group's)
   std::vector<std::uint32_t> progress_;       // per plan index: the route step it is known at

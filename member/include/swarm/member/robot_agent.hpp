@@ -45,9 +45,11 @@ class RobotAgent {
   // Follow the leader's route `id` exactly (planner/route.hpp: cells[0] is where the robot stands
   // when it starts), as far as index `release`; the objects under the robot are picked up at the
   // indices in `picks` and dropped at those in `drops`. Replaces a waypoint or an earlier route.
-  // The robot drives the released part, then waits for release() to go on.
+  // The robot drives the released part, then waits for release() to go on. It sets off at the
+  // step() of tick `start_tick` (or at once if that has passed).
   void follow(std::uint32_t id, std::vector<planner::Cell> cells, std::uint32_t release,
-              std::vector<std::uint32_t> picks = {}, std::vector<std::uint32_t> drops = {});
+              std::vector<std::uint32_t> picks = {}, std::vector<std::uint32_t> drops = {},
+              std::uint32_t start_tick = 0);
   void release(std::uint32_t id, std::uint32_t up_to);
 
   struct Step {
@@ -59,7 +61,8 @@ class RobotAgent {
     std::optional<WaypointState> report;       // the waypoint is done with
     std::uint32_t round = 0;                   // the round the report belongs to
   };
-  Step step();
+  // `tick`: the lockstep tick (for a route's start tick).
+  Step step(std::uint32_t tick = 0);
 
   // Where the robot is along the leader's route it follows (id 0: none): the index it stands on
   // and the state (Active while it drives or waits for a release, Finished at the end, Abandoned
@@ -80,7 +83,7 @@ class RobotAgent {
 
  private:
   bool in_flight() const { return report_.id != sent_id_; }
-  void step_following(Step& out);
+  void step_following(Step& out, std::uint32_t tick);
   bool path_still_valid(std::size_t& at) const;
   bool replan(std::optional<planner::Cell> avoid);
 
@@ -105,6 +108,7 @@ class RobotAgent {
     std::uint32_t sim_id = 0;  // 0: no part sent yet
     std::uint32_t base = 0;
     std::uint32_t sent_to = 0;
+    std::uint32_t start_tick = 0;
   };
   std::optional<Follow> follow_;
   planner::RouteProgress follow_progress_;
