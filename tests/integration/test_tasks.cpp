@@ -5,16 +5,10 @@
 #include <fstream>
 
 #include "run_swarm.hpp"
+#include "swarm_test/metrics_fixture.hpp"
 
 namespace swarm::test {
 namespace {
-
-const nlohmann::json& phase_named(const nlohmann::json& m, const std::string& name) {
-  for (const auto& p : m["phases"]) {
-    if (p["name"] == name) return p;
-  }
-  throw std::runtime_error("no phase " + name + " in " + m["phases"].dump());
-}
 
 // A scenario file: `base` (a file of scenarios/) with `extra` text appended.
 std::string scenario_with(const std::string& dir, const std::string& base, const std::string& extra) {

@@ -3,36 +3,17 @@
 // with the map given, after exploration, in the flat variant, and when a member is lost midway.
 #include <gtest/gtest.h>
 
-#include <fstream>
-
-#include <nlohmann/json.hpp>
-
 #include "swarm_test/fake_swarm.hpp"
 
 namespace swarm::leader {
 namespace {
 
-nlohmann::json run_to_end(swarm::test::FakeSwarm& s, const std::function<void()>& at_tick_60 = {}) {
-  s.start();
-  while (s.step()) {
-    if (s.tick() == 60 && at_tick_60) at_tick_60();
-  }
-  s.finish();
-  std::ifstream in(s.run_dir() + "/metrics.json");
-  return nlohmann::json::parse(in);
-}
-
-const nlohmann::json& phase_named(const nlohmann::json& m, const std::string& name) {
-  for (const auto& p : m["phases"]) {
-    if (p["name"] == name) return p;
-  }
-  throw std::runtime_error("no phase " + name);
-}
+using swarm::test::phase_named;
 
 TEST(CoverTask, GivenTheMapTwoGroupsCoverEveryReachableCell) {
   swarm::test::FakeSwarm s(swarm::test::setup_from_text(
       "map: 'small' groups: 2 robots_per_group: 2 max_ticks: 2000 mission { phase { cover {} } }"));
-  const auto m = run_to_end(s);
+  const auto m = s.run_to_end();
   ASSERT_TRUE(m["complete"].get<bool>());
   const auto& cover = phase_named(m, "cover");
   EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
@@ -48,7 +29,7 @@ TEST(CoverTask, AfterExplorationTheExploredMapIsCovered) {
   swarm::test::FakeSwarm s(swarm::test::setup_from_text(
       "map: 'small' groups: 1 robots_per_group: 3 max_ticks: 3000 "
       "mission { phase { explore {} } phase { cover {} } }"));
-  const auto m = run_to_end(s);
+  const auto m = s.run_to_end();
   ASSERT_TRUE(m["complete"].get<bool>());
   ASSERT_EQ(m["phases"].size(), 2u);
   const auto& cover = phase_named(m, "cover");
@@ -61,7 +42,7 @@ TEST(CoverTask, TheFlatVariantCoversToo) {
   swarm::test::FakeSwarm s(swarm::test::setup_from_text(
       "map: 'small' groups: 2 robots_per_group: 2 max_ticks: 2000 "
       "mission { phase { cover { hierarchical: false } } }"));
-  const auto m = run_to_end(s);
+  const auto m = s.run_to_end();
   ASSERT_TRUE(m["complete"].get<bool>()) << m["phases"].dump(1) << m["agents"].dump(1);
   EXPECT_DOUBLE_EQ(phase_named(m, "cover")["task"]["covered_fraction"].get<double>(), 1.0);
 }
@@ -70,7 +51,9 @@ TEST(CoverTask, AMemberLostMidwayIsCoveredForByTheOthers) {
   auto setup = swarm::test::setup_from_text(
       "map: 'small' groups: 1 robots_per_group: 3 max_ticks: 3000 mission { phase { cover {} } }");
   swarm::test::FakeSwarm s(setup);
-  const auto m = run_to_end(s, [&] { s.disconnect(setup.topology.robot(0, 2)); });
+  const auto m = s.run_to_end([&](std::uint32_t tick) {
+    if (tick == 60) s.disconnect(setup.topology.robot(0, 2));
+  });
   ASSERT_TRUE(m["complete"].get<bool>());
   EXPECT_DOUBLE_EQ(phase_named(m, "cover")["task"]["covered_fraction"].get<double>(), 1.0);
   const auto& divisions = m["agents"]["leader-0"]["phases"][0]["numbers"]["divisions"];

@@ -3,37 +3,18 @@
 // member<->leader delay and jitter, and when a member is lost midway.
 #include <gtest/gtest.h>
 
-#include <fstream>
-
-#include <nlohmann/json.hpp>
-
 #include "swarm_test/fake_swarm.hpp"
 
 namespace swarm::leader {
 namespace {
 
-nlohmann::json run_to_end(swarm::test::FakeSwarm& s, const std::function<void()>& at_tick_20 = {}) {
-  s.start();
-  while (s.step()) {
-    if (s.tick() == 20 && at_tick_20) at_tick_20();
-  }
-  s.finish();
-  std::ifstream in(s.run_dir() + "/metrics.json");
-  return nlohmann::json::parse(in);
-}
-
-const nlohmann::json& mapf_phase(const nlohmann::json& m) {
-  for (const auto& p : m["phases"]) {
-    if (p["name"] == "mapf") return p;
-  }
-  throw std::runtime_error("no mapf phase");
-}
+const nlohmann::json& mapf_phase(const nlohmann::json& m) { return swarm::test::phase_named(m, "mapf"); }
 
 constexpr const char* kTwoGroups = "map: 'small' groups: 2 robots_per_group: 3 max_ticks: 600 ";
 
 TEST(MapfTask, WithoutDelayEveryRobotArrivesWithNoConflict) {
   swarm::test::FakeSwarm s(swarm::test::setup_from_text(std::string(kTwoGroups) + "mission { phase { mapf {} } }"));
-  const auto m = run_to_end(s);
+  const auto m = s.run_to_end();
   ASSERT_TRUE(m["complete"].get<bool>());
   const auto& p = mapf_phase(m);
   EXPECT_EQ(p["task"]["solver_status"], "solved");
@@ -52,7 +33,7 @@ TEST(MapfTask, WithMemberLeaderDelayAndJitterStillNoConflict) {
   swarm::test::FakeSwarm s(swarm::test::setup_from_text(
       std::string(kTwoGroups) +
       "links { member_leader { delay_ticks: 3 jitter_ticks: 4 } } mission { phase { mapf {} } }"));
-  const auto m = run_to_end(s);
+  const auto m = s.run_to_end();
   ASSERT_TRUE(m["complete"].get<bool>());
   const auto& p = mapf_phase(m);
   EXPECT_EQ(p["task"]["robots_at_goal"], 6);
@@ -68,10 +49,10 @@ TEST(MapfTask, WithMemberLeaderDelayAndJitterStillNoConflict) {
 TEST(MapfTask, TimedExecutionKeepsThePlansMakespanExactly) {
   const std::string team = "map: 'small' groups: 3 robots_per_group: 3 max_ticks: 600 ";
   swarm::test::FakeSwarm adg(swarm::test::setup_from_text(team + "mission { phase { mapf {} } }"));
-  const auto by_graph = mapf_phase(run_to_end(adg));
+  const auto by_graph = mapf_phase(adg.run_to_end());
   swarm::test::FakeSwarm timed(
       swarm::test::setup_from_text(team + "mission { phase { mapf { execution: MAPF_EXECUTE_TIMED } } }"));
-  const auto m = run_to_end(timed);
+  const auto m = timed.run_to_end();
   ASSERT_TRUE(m["complete"].get<bool>());
   const auto& p = mapf_phase(m);
   EXPECT_EQ(p["task"]["robots_at_goal"], 9);
@@ -84,7 +65,9 @@ TEST(MapfTask, TimedExecutionKeepsThePlansMakespanExactly) {
 TEST(MapfTask, AMemberLostMidwayTheOthersArePlannedAgain) {
   auto setup = swarm::test::setup_from_text(std::string(kTwoGroups) + "mission { phase { mapf {} } }");
   swarm::test::FakeSwarm s(setup);
-  const auto m = run_to_end(s, [&] { s.disconnect(setup.topology.robot(1, 2)); });
+  const auto m = s.run_to_end([&](std::uint32_t tick) {
+    if (tick == 20) s.disconnect(setup.topology.robot(1, 2));
+  });
   ASSERT_TRUE(m["complete"].get<bool>());
   const auto& p = mapf_phase(m);
   ASSERT_EQ(p["task"]["plans"].size(), 2u);

@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <memory>
@@ -25,6 +26,8 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "swarm/comm/fake_bus.hpp"
 #include "swarm/comm/lockstep.hpp"
@@ -36,6 +39,7 @@
 #include "swarm/planner/start_cells.hpp"
 #include "swarm/sim/sim_node.hpp"
 #include "swarm_test/files.hpp"
+#include "swarm_test/metrics_fixture.hpp"
 
 namespace swarm::test {
 
@@ -244,6 +248,18 @@ class FakeSwarm {
   void disconnect(comm::AgentId a) {
     alive_.at(a) = false;
     net_.disconnect(*buses_.at(a));
+  }
+
+  // The whole run: start, step to the end (calling at(tick) after each tick, if given), finish;
+  // returns metrics.json.
+  nlohmann::json run_to_end(const std::function<void(std::uint32_t)>& at = {}) {
+    start();
+    while (step()) {
+      if (at) at(tick());
+    }
+    finish();
+    std::ifstream in(run_dir() + "/metrics.json");
+    return nlohmann::json::parse(in);
   }
 
   // The end of a run: every living agent reports (the simulator unless told not to), the GCS

@@ -2,11 +2,22 @@
 // cares about, written through the one writer (record/metrics.hpp), so fixtures follow the schema.
 #pragma once
 
+#include <stdexcept>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "swarm/record/metrics.hpp"
 
 namespace swarm::test {
+
+// The phase called `name` in a metrics.json (the first such); throws if there is none.
+inline const nlohmann::json& phase_named(const nlohmann::json& metrics, const std::string& name) {
+  for (const auto& p : metrics.at("phases")) {
+    if (p.at("name") == name) return p;
+  }
+  throw std::runtime_error("no phase " + name + " in " + metrics.at("phases").dump());
+}
 
 inline record::RunMetrics run_metrics(const std::string& map, const std::string& mode, std::uint64_t seed,
                                       std::uint32_t steps, std::uint32_t rounds, bool complete = true,
