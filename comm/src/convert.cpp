@@ -15,6 +15,7 @@ std::vector<std::int16_t> to_xy(const std::vector<planner::Cell>& cells) {
 }
 
 std::vector<planner::Cell> from_xy(const std::vector<std::int16_t>& xy) {
+  if (xy.size() % 2 != 0) throw std::runtime_error("a cell list has an odd number of coordinates");
   std::vector<planner::Cell> cells;
   cells.reserve(xy.size() / 2);
   for (std::size_t i = 0; i + 1 < xy.size(); i += 2) cells.push_back({xy[i], xy[i + 1]});
@@ -79,9 +80,15 @@ void decode_map(const std::vector<std::uint8_t>& data, planner::PatchEncoding en
   if (!ok) throw std::runtime_error("received a malformed global map");
 }
 
-std::vector<planner::CellChange> decode_patch(const std::vector<std::uint8_t>& data) {
+std::vector<planner::CellChange> decode_patch(const std::vector<std::uint8_t>& data, std::size_t map_cells) {
   auto changes = planner::decode_changes(data.data(), data.size());
   if (!changes) throw std::runtime_error("received a malformed map patch");
+  for (const planner::CellChange& c : *changes) {
+    if (c.index < 0 || static_cast<std::size_t>(c.index) >= map_cells) {
+      throw std::runtime_error("a map patch changes cell " + std::to_string(c.index) + " of a map of " +
+                               std::to_string(map_cells) + " cells");
+    }
+  }
   return *changes;
 }
 

@@ -1,6 +1,7 @@
 #include "swarm/comm/lockstep.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
@@ -86,6 +87,13 @@ std::uint64_t Mailbox::Arrivals::count_before(std::uint32_t k) {
   std::uint64_t n = below;
   for (auto it = by_tick.begin(); it != by_tick.end() && it->first < k; ++it) n += it->second;
   return n;
+}
+
+void Mailbox::drop_malformed(const std::string& topic_family, AgentId sender, const std::string& why) {
+  ++malformed_;
+  std::fprintf(stderr, "%s: tick %u: dropped a malformed %s message from %s: %s\n", topology_.name_of(self_).c_str(),
+               tick_.load(), topic_family.c_str(),
+               sender < topology_.agents() ? topology_.name_of(sender).c_str() : "an unknown sender", why.c_str());
 }
 
 std::size_t Mailbox::arrival_ticks_held() const {

@@ -61,7 +61,7 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, const
     if (h.group() < last_heard_.size()) last_heard_[h.group()] = agent_.tick();
   }, comm::Delivery::Reliable, setup.topology.groups());
   agent.subscribe<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, [this](const msgs::MapPatch& p) {
-    mission_.fuse(p.group(), comm::decode_patch(p.data()));
+    mission_.fuse(p.group(), comm::decode_patch(p.data(), setup_.world.truth.size()));
   }, comm::Delivery::Reliable, setup.topology.groups());
   agent.subscribe<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs,
                                      [this](const msgs::GroupStatus& s) { statuses_.push_back(s); },

@@ -92,7 +92,7 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
   }, comm::Delivery::BestEffort, 1);  // a lost scan is not repeated; the next one is newer
   if (!members.empty()) {
     agent.subscribe<msgs::MapPatch>(topic::patch_up(group), LinkClass::MemberLeader, [this](const msgs::MapPatch& p) {
-      learn(map_.observe(comm::decode_patch(p.data())), true);
+      learn(map_.observe(comm::decode_patch(p.data(), robot_.map().size())), true);
     }, comm::Delivery::Reliable, n_members);
     agent.subscribe<msgs::MemberStatus>(topic::status(group), LinkClass::MemberLeader,
                                         [this](const msgs::MemberStatus& s) { statuses_.push_back(s); },
@@ -149,7 +149,12 @@ void LeaderNode::track_members(GroupContext& ctx) {
 void LeaderNode::dispatch(GroupContext& ctx) {
   GroupTask& task = *tasks_[phase_];
   for (const auto& o : orders_) {
-    if (o.phase() == phase_) task.on_order(o, ctx);
+    if (o.phase() != phase_) continue;
+    try {
+      task.on_order(o, ctx);  // decodes the order's cells, maps and routes
+    } catch (const std::exception& e) {
+      agent_.drop_malformed(comm::topic::kTaskOrder, o.header().sender(), e.what());
+    }
   }
   orders_.clear();
   for (const auto& s : statuses_) task.on_member_status(s, ctx);

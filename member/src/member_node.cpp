@@ -43,7 +43,7 @@ MemberNode::MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
     pending_up_.insert(pending_up_.end(), changes.begin(), changes.end());
   }, comm::Delivery::BestEffort, 1);  // a lost scan is not repeated; the next one is newer
   agent.subscribe<msgs::MapPatch>(topic::patch_down(group), LinkClass::MemberLeader,
-                                  [this](const msgs::MapPatch& p) { robot_.learn(comm::decode_patch(p.data())); },
+                                  [this](const msgs::MapPatch& p) { robot_.learn(comm::decode_patch(p.data(), robot_.map().size())); },
                                   comm::Delivery::Reliable, 1);
   agent.subscribe<msgs::Assignment>(topic::assign(group), LinkClass::MemberLeader, [this](const msgs::Assignment& a) {
     const auto waypoints = comm::optional_cells_from_xy(a.waypoints_xy());

@@ -145,5 +145,57 @@ TEST(LeaderNode, ALostMemberIsNoticedPlannedWithoutAndTheMissionStillCompletes) 
   EXPECT_GE(m["explored_fraction"].get<double>(), 0.99);
 }
 
+// Bytes that do not decode: a global map of the wrong size in a RoundStart (decoded in the
+// handler) and a cover order whose cell set is garbage (decoded by the task): each is logged and
+// dropped, and the leader goes on with its work; a good order after them is followed.
+TEST(LeaderNode, DropsMalformedMessagesAndGoesOn) {
+  const planner::OccupancyGrid truth = hall();
+  swarm::scenario::Scenario sc;
+  sc.set_groups(1);
+  sc.set_robots_per_group(2);
+  sc.set_max_ticks(40);
+  sc.mutable_mission()->add_phase()->mutable_cover();
+  auto setup = swarm::test::setup_for(truth, {3, 3}, sc);
+  const comm::Topology& t = setup.topology;
+  swarm::test::FakeSwarm s(setup, {t.gcs()});
+  auto& gcs = s.agent(t.gcs());
+  auto& round = gcs.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, {t.leader(0)});
+  auto& order = gcs.advertise<msgs::TaskOrder>(topic::kTaskOrder, LinkClass::LeaderGcs, {t.leader(0)});
+  const auto cover_order = [&](std::uint32_t seq, std::vector<std::uint8_t> cells) {
+    msgs::TaskOrder o;
+    o.seq(seq);
+    o.width(static_cast<std::uint16_t>(truth.width()));
+    o.height(static_cast<std::uint16_t>(truth.height()));
+    o.map_encoding(static_cast<std::uint8_t>(planner::PatchEncoding::RunLength));
+    o.known_map(comm::encode_map(truth, planner::PatchEncoding::RunLength));
+    o.cells(std::move(cells));
+    order.send(o);
+  };
+  s.script(t.gcs(), [&](const msgs::Clock& c) {
+    if (c.tick() == 1) {
+      msgs::RoundStart r;
+      r.round(1);
+      r.width(static_cast<std::uint16_t>(truth.width()));
+      r.height(static_cast<std::uint16_t>(truth.height()));
+      r.encoding(static_cast<std::uint8_t>(planner::PatchEncoding::RunLength));
+      r.map_rle({7, 1, 200, 3});  // 7 cells, then a state that does not exist
+      round.send(r);
+      cover_order(1, {0xff, 0xff, 0xff});
+    }
+    if (c.tick() == 3) {
+      std::vector<std::uint8_t> all(truth.size(), 0);
+      for (std::size_t i = 0; i < all.size(); ++i) all[i] = truth.is_free(truth.cell_of(static_cast<int>(i)));
+      cover_order(2, comm::encode_mask(all, truth.width(), truth.height()));
+    }
+  });
+  comm::FakeBus spy(s.network());
+  std::vector<msgs::Route> routes;
+  comm::Reader<msgs::Route> reader(spy, topic::route(0), [&](msgs::Route&& r) { routes.push_back(r); });
+
+  s.start();
+  ASSERT_TRUE(s.run_until([&] { return !routes.empty(); }, 20));
+  EXPECT_EQ(s.agent(t.leader(0)).malformed_messages(), 2u);
+}
+
 }  // namespace
 }  // namespace swarm::leader

@@ -40,7 +40,7 @@ TEST(MemberNode, DrivesToItsWaypointAndReportsArrivalForThatRound) {
   leader.subscribe<msgs::Sense>(topic::sense(t.leader(0)), LinkClass::SimRobot, [](const msgs::Sense&) {},
                                 comm::Delivery::BestEffort, 1);
   leader.subscribe<msgs::MapPatch>(topic::patch_up(0), LinkClass::MemberLeader,
-                                   [&](const msgs::MapPatch& p) { patches += !comm::decode_patch(p.data()).empty(); },
+                                   [&](const msgs::MapPatch& p) { patches += !comm::decode_patch(p.data(), 1u << 20).empty(); },
                                    comm::Delivery::Reliable, 1);
   leader.subscribe<msgs::MemberStatus>(topic::status(0), LinkClass::MemberLeader,
                                        [&](const msgs::MemberStatus& m) { statuses.push_back(m); },

@@ -12,7 +12,11 @@
 
 namespace swarm::comm {
 
-// Cells as flat x0, y0, x1, y1, ... sequences of shorts.
+// Decoders of bytes from other processes throw std::runtime_error on malformed input (never read
+// or write out of bounds, never allocate more than the run's map allows); the mailbox drops such
+// a message with a log line (lockstep.hpp).
+
+// Cells as flat x0, y0, x1, y1, ... sequences of shorts. from_xy throws on an odd length.
 std::vector<std::int16_t> to_xy(const std::vector<planner::Cell>& cells);
 std::vector<planner::Cell> from_xy(const std::vector<std::int16_t>& xy);
 // Optional cells: (-1, -1) stands for "none".
@@ -25,9 +29,9 @@ planner::RouteProgress route_progress(const msgs::Sense& sense);
 // Map patches in the run's encoding (scenario map_encoding; see planner/map_patch.hpp).
 planner::PatchEncoding patch_encoding(int scenario_map_encoding);
 std::vector<std::uint8_t> encode_patch(const std::vector<planner::CellChange>& changes, planner::PatchEncoding encoding);
-// Throws std::runtime_error on a malformed patch (a peer bug, not an expected condition). The
-// encoding is read from the patch itself.
-std::vector<planner::CellChange> decode_patch(const std::vector<std::uint8_t>& data);
+// Throws std::runtime_error on a malformed patch, or one with a cell index outside a map of
+// `map_cells` cells. The encoding is read from the patch itself.
+std::vector<planner::CellChange> decode_patch(const std::vector<std::uint8_t>& data, std::size_t map_cells);
 
 // Cell sets (masks of a width x height map, 1 = in the set), run-length encoded.
 std::vector<std::uint8_t> encode_mask(const std::vector<std::uint8_t>& mask, int width, int height);

@@ -95,6 +95,10 @@ class Mailbox {
   AgentId self() const { return self_; }
   // Bookkeeping held for ticks not yet passed (flat over a run: for tests).
   std::size_t arrival_ticks_held() const;
+  // A received message that could not be decoded: logged and counted, never acted on. Also for
+  // the nodes, which decode some messages after the handler queued them.
+  void drop_malformed(const std::string& topic_family, AgentId sender, const std::string& why);
+  std::uint64_t malformed_messages() const { return malformed_; }
   const Topology& topology() const { return topology_; }
   TrafficAccount& traffic() { return traffic_; }
   Bus& bus() { return bus_; }
@@ -158,6 +162,7 @@ class Mailbox {
               std::function<void()> run);
 
   std::vector<Held> held_;
+  std::uint64_t malformed_ = 0;
   // Arrivals counted for the barrier: per stamp tick for the ticks still ahead, and one running
   // total for those behind (folded in as the ticks pass, so memory stays flat over long runs).
   struct Arrivals {
@@ -241,7 +246,15 @@ void Mailbox::subscribe(const std::string& topic_name, LinkClass link, std::func
         const std::uint32_t deliver =
             after_cuts(links_, link, h.sender(), self_, h.tick(), h.deliver_tick() + retry_ticks);
         auto shared = std::make_shared<T>(std::move(msg));
-        arrive(shared->header(), deliver, delay_ms, !dropped, order, [handler, shared] { handler(*shared); });
+        arrive(shared->header(), deliver, delay_ms, !dropped, order, [this, handler, shared, family] {
+          // A message that does not decode (a peer's bug, or bytes from outside the swarm) is
+          // dropped with a log line; the process goes on.
+          try {
+            handler(*shared);
+          } catch (const std::exception& e) {
+            drop_malformed(family, shared->header().sender(), e.what());
+          }
+        });
       });
   readers_.push_back({reader, [reader] { return reader->matched(); }, writers, topic_name});
 }

@@ -1,0 +1,51 @@
+// The converters of wire bytes (comm/convert.hpp) on bad input: each throws std::runtime_error
+// naming what is wrong (the mailbox then drops the message), and good input round-trips.
+#include "swarm/comm/convert.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+namespace swarm::comm {
+namespace {
+
+using planner::Cell;
+using planner::CellChange;
+using planner::CellState;
+
+TEST(Convert, APatchOutsideTheMapIsRefused) {
+  const auto bytes = encode_patch({{5, CellState::Free}, {99, CellState::Occupied}}, planner::PatchEncoding::RunLength);
+  EXPECT_EQ(decode_patch(bytes, 100).size(), 2u);
+  try {
+    (void)decode_patch(bytes, 50);  // regression: applied blindly, index 99 wrote past a 50-cell map
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "a map patch changes cell 99 of a map of 50 cells");
+  }
+  EXPECT_THROW((void)decode_patch({}, 50), std::runtime_error);
+  EXPECT_THROW((void)decode_patch({1, 0x80, 0x80, 0x80, 0x80, 0x80, 0x01}, 50), std::runtime_error);
+}
+
+TEST(Convert, CellListsOfOddLengthAreRefused) {
+  EXPECT_EQ(from_xy(to_xy(std::vector<Cell>{{1, 2}, {3, 4}})), (std::vector<Cell>{{1, 2}, {3, 4}}));
+  EXPECT_THROW((void)from_xy({1, 2, 3}), std::runtime_error);
+}
+
+TEST(Convert, MasksAndMapsMustHaveTheReceiversSize) {
+  std::vector<std::uint8_t> mask{1, 0, 0, 1, 1, 0};
+  const auto bytes = encode_mask(mask, 3, 2);
+  EXPECT_EQ(decode_mask(bytes, 3, 2), mask);
+  EXPECT_THROW((void)decode_mask(bytes, 4, 2), std::runtime_error);
+  planner::OccupancyGrid g(3, 2);
+  g.set(Cell{1, 1}, CellState::Occupied);
+  for (auto e : {planner::PatchEncoding::RunLength, planner::PatchEncoding::ZstdRunLength}) {
+    planner::OccupancyGrid back(3, 2);
+    decode_map(encode_map(g, e), e, back);
+    EXPECT_EQ(back.at(Cell{1, 1}), CellState::Occupied);
+    planner::OccupancyGrid wrong(4, 4);
+    EXPECT_THROW(decode_map(encode_map(g, e), e, wrong), std::runtime_error);
+  }
+}
+
+}  // namespace
+}  // namespace swarm::comm
