@@ -10,6 +10,7 @@ packages=(
   libprotobuf-dev protobuf-compiler
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libzstd-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  clang libclang-rt-14-dev  # scripts/sanitize.sh address and scripts/fuzz.sh: ASan + libFuzzer
   debootstrap  # deploy/base-image.sh: the Debian base image where no registry is reachable
 )
 

@@ -4,22 +4,12 @@
 
 namespace swarm::comm {
 
-std::vector<std::int16_t> to_xy(const std::vector<planner::Cell>& cells) {
-  std::vector<std::int16_t> xy;
-  xy.reserve(cells.size() * 2);
-  for (const auto& c : cells) {
-    xy.push_back(static_cast<std::int16_t>(c.x));
-    xy.push_back(static_cast<std::int16_t>(c.y));
-  }
-  return xy;
-}
+std::vector<std::int16_t> to_xy(const std::vector<planner::Cell>& cells) { return planner::cells_to_xy(cells); }
 
 std::vector<planner::Cell> from_xy(const std::vector<std::int16_t>& xy) {
-  if (xy.size() % 2 != 0) throw std::runtime_error("a cell list has an odd number of coordinates");
-  std::vector<planner::Cell> cells;
-  cells.reserve(xy.size() / 2);
-  for (std::size_t i = 0; i + 1 < xy.size(); i += 2) cells.push_back({xy[i], xy[i + 1]});
-  return cells;
+  auto cells = planner::cells_from_xy(xy.data(), xy.size());
+  if (!cells) throw std::runtime_error("a cell list has an odd number of coordinates");
+  return *cells;
 }
 
 std::vector<std::int16_t> to_xy(const std::vector<std::optional<planner::Cell>>& cells) {
@@ -62,53 +52,35 @@ std::vector<std::uint8_t> encode_patch(const std::vector<planner::CellChange>& c
 }
 
 std::vector<std::uint8_t> encode_map(const planner::OccupancyGrid& map, planner::PatchEncoding encoding) {
-  std::vector<std::uint8_t> rle = planner::encode_grid_rle(map);
-  if (encoding != planner::PatchEncoding::ZstdRunLength) return rle;
-  return planner::zstd_pack(rle.data(), rle.size());
+  return planner::encode_grid(map, encoding);
 }
 
 void decode_map(const std::vector<std::uint8_t>& data, planner::PatchEncoding encoding, planner::OccupancyGrid& into) {
-  bool ok = false;
-  if (encoding == planner::PatchEncoding::ZstdRunLength) {
-    // An RLE pair is at most 6 bytes per cell.
-    if (auto rle = planner::zstd_unpack(data.data(), data.size(), 6 * into.size() + 16)) {
-      ok = planner::decode_grid_rle(rle->data(), rle->size(), into);
-    }
-  } else {
-    ok = planner::decode_grid_rle(data.data(), data.size(), into);
+  if (!planner::decode_grid(data.data(), data.size(), encoding, into)) {
+    throw std::runtime_error("received a malformed global map");
   }
-  if (!ok) throw std::runtime_error("received a malformed global map");
 }
 
 std::vector<planner::CellChange> decode_patch(const std::vector<std::uint8_t>& data, std::size_t map_cells) {
-  auto changes = planner::decode_changes(data.data(), data.size());
-  if (!changes) throw std::runtime_error("received a malformed map patch");
-  for (const planner::CellChange& c : *changes) {
-    if (c.index < 0 || static_cast<std::size_t>(c.index) >= map_cells) {
-      throw std::runtime_error("a map patch changes cell " + std::to_string(c.index) + " of a map of " +
-                               std::to_string(map_cells) + " cells");
-    }
+  auto changes = planner::decode_changes(data.data(), data.size(), map_cells);
+  if (!changes) {
+    throw std::runtime_error("received a malformed map patch, or one with cells outside the map of " +
+                             std::to_string(map_cells) + " cells");
   }
   return *changes;
 }
 
 std::vector<std::uint8_t> encode_mask(const std::vector<std::uint8_t>& mask, int width, int height) {
-  planner::OccupancyGrid g(width, height);
-  for (std::size_t i = 0; i < mask.size() && i < g.size(); ++i) {
-    if (mask[i]) g.set(static_cast<int>(i), planner::CellState::Free);
-  }
-  return planner::encode_grid_rle(g);
+  return planner::encode_mask(mask, width, height);
 }
 
 std::vector<std::uint8_t> decode_mask(const std::vector<std::uint8_t>& data, int width, int height) {
-  planner::OccupancyGrid g(width, height);
-  if (!planner::decode_grid_rle(data.data(), data.size(), g)) {
+  auto mask = planner::decode_mask(data.data(), data.size(), width, height);
+  if (!mask) {
     throw std::runtime_error("a cell set does not decode to " + std::to_string(width) + " x " +
                              std::to_string(height) + " cells");
   }
-  std::vector<std::uint8_t> mask(g.size(), 0);
-  for (std::size_t i = 0; i < g.size(); ++i) mask[i] = g.at(static_cast<int>(i)) == planner::CellState::Free;
-  return mask;
+  return *mask;
 }
 
 }  // namespace swarm::comm

@@ -234,4 +234,61 @@ bool decode_grid_rle(const std::uint8_t* data, std::size_t size, OccupancyGrid& 
   return true;
 }
 
+std::optional<std::vector<CellChange>> decode_changes(const std::uint8_t* data, std::size_t size,
+                                                      std::size_t map_cells) {
+  auto changes = decode_changes(data, size);
+  if (!changes) return std::nullopt;
+  for (const CellChange& c : *changes) {
+    if (c.index < 0 || static_cast<std::size_t>(c.index) >= map_cells) return std::nullopt;
+  }
+  return changes;
+}
+
+std::vector<std::uint8_t> encode_grid(const OccupancyGrid& grid, PatchEncoding encoding) {
+  std::vector<std::uint8_t> rle = encode_grid_rle(grid);
+  return encoding == PatchEncoding::ZstdRunLength ? zstd_pack(rle.data(), rle.size()) : rle;
+}
+
+bool decode_grid(const std::uint8_t* data, std::size_t size, PatchEncoding encoding, OccupancyGrid& into) {
+  if (encoding != PatchEncoding::ZstdRunLength) return decode_grid_rle(data, size, into);
+  // A (count, state) pair is at most 6 bytes per cell.
+  const auto rle = zstd_unpack(data, size, 6 * into.size() + 16);
+  return rle && decode_grid_rle(rle->data(), rle->size(), into);
+}
+
+std::vector<std::uint8_t> encode_mask(const std::vector<std::uint8_t>& mask, int width, int height) {
+  OccupancyGrid g(width, height);
+  for (std::size_t i = 0; i < mask.size() && i < g.size(); ++i) {
+    if (mask[i]) g.set(static_cast<int>(i), CellState::Free);
+  }
+  return encode_grid_rle(g);
+}
+
+std::optional<std::vector<std::uint8_t>> decode_mask(const std::uint8_t* data, std::size_t size, int width,
+                                                     int height) {
+  OccupancyGrid g(width, height);
+  if (!decode_grid_rle(data, size, g)) return std::nullopt;
+  std::vector<std::uint8_t> mask(g.size(), 0);
+  for (std::size_t i = 0; i < g.size(); ++i) mask[i] = g.at(static_cast<int>(i)) == CellState::Free;
+  return mask;
+}
+
+std::vector<std::int16_t> cells_to_xy(const std::vector<Cell>& cells) {
+  std::vector<std::int16_t> xy;
+  xy.reserve(cells.size() * 2);
+  for (const Cell& c : cells) {
+    xy.push_back(static_cast<std::int16_t>(c.x));
+    xy.push_back(static_cast<std::int16_t>(c.y));
+  }
+  return xy;
+}
+
+std::optional<std::vector<Cell>> cells_from_xy(const std::int16_t* xy, std::size_t n) {
+  if (n % 2 != 0) return std::nullopt;
+  std::vector<Cell> cells;
+  cells.reserve(n / 2);
+  for (std::size_t i = 0; i + 1 < n; i += 2) cells.push_back({xy[i], xy[i + 1]});
+  return cells;
+}
+
 }  // namespace swarm::planner

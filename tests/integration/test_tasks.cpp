@@ -46,6 +46,16 @@ TEST(Tasks, CoverWithAMemberKilledMidwayStillCoversEverything) {
   EXPECT_EQ(divisions[1]["why"], "member lost");
 }
 
+TEST(Tasks, CoverInGroupKOrderReachesEveryReachableCell) {
+  const std::string dir = fresh_dir("cover_group_k");
+  const std::string scenario = scenario_with(dir, "small.pbtxt", "mission { phase { cover { order: ORDER_GROUP_K } } }");
+  const CommandResult r = run_swarm("run --scenario " + scenario + " --max-ticks 3000 --out " + dir + "/run");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto m = read_json(dir + "/run/metrics.json");
+  ASSERT_TRUE(m["complete"].get<bool>());
+  EXPECT_DOUBLE_EQ(phase_named(m, "cover")["task"]["covered_fraction"].get<double>(), 1.0);
+}
+
 TEST(Tasks, MapfWithoutDelayKeepsThePlansTimingWithNoConflict) {
   const std::string dir = fresh_dir("mapf") + "/run";
   const CommandResult r = run_swarm("run --scenario " + source_path("scenarios/mapf-small.pbtxt") + " --out " + dir);

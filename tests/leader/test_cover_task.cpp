@@ -62,5 +62,20 @@ TEST(CoverTask, AMemberLostMidwayIsCoveredForByTheOthers) {
   EXPECT_EQ(divisions[1]["robots"], 2);
 }
 
+// The cleaning order inside each robot's region (cover.order): plowing and Group-k reach every
+// reachable cell as spanning-tree coverage does; their curves differ (the run's coverage_curve).
+TEST(CoverTask, PlowAndGroupKOrdersCoverEveryReachableCell) {
+  for (const std::string order : {"ORDER_PLOW", "ORDER_GROUP_K"}) {
+    swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+        "map: 'small' groups: 2 robots_per_group: 2 max_ticks: 3000 mission { phase { cover { order: " + order +
+        " } } }"));
+    const auto m = s.run_to_end();
+    ASSERT_TRUE(m["complete"].get<bool>()) << order;
+    const auto& cover = phase_named(m, "cover");
+    EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0) << order;
+    EXPECT_EQ(cover["task"]["order"], order);
+  }
+}
+
 }  // namespace
 }  // namespace swarm::leader

@@ -48,6 +48,9 @@ inline constexpr std::size_t kMaxPatchChanges = std::size_t{1} << 24;
 [[nodiscard]] std::optional<std::vector<CellChange>> decode_changes(const std::uint8_t* data,
                                                                     std::size_t size);
 
+// As above, and nullopt too if a change's index is not a cell of a map of `map_cells` cells.
+[[nodiscard]] std::optional<std::vector<CellChange>> decode_changes(const std::uint8_t* data, std::size_t size,
+                                                                    std::size_t map_cells);
 [[nodiscard]] std::vector<std::uint8_t> encode_grid_rle(const OccupancyGrid& grid);
 
 // Fills `into` (already sized by the receiver) from encode_grid_rle bytes. Returns false, leaving
@@ -59,5 +62,22 @@ inline constexpr std::size_t kMaxPatchChanges = std::size_t{1} << 24;
 [[nodiscard]] std::vector<std::uint8_t> zstd_pack(const std::uint8_t* data, std::size_t size);
 [[nodiscard]] std::optional<std::vector<std::uint8_t>> zstd_unpack(const std::uint8_t* data, std::size_t size,
                                                                    std::size_t max_size);
+
+// Whole maps in a run's encoding: RunLength = encode_grid_rle; ZstdRunLength = that, zstd_pack'ed
+// (Raw is not used for whole maps: RunLength). decode_grid returns false, leaving `into`
+// unchanged, on malformed bytes or bytes for another size.
+[[nodiscard]] std::vector<std::uint8_t> encode_grid(const OccupancyGrid& grid, PatchEncoding encoding);
+[[nodiscard]] bool decode_grid(const std::uint8_t* data, std::size_t size, PatchEncoding encoding,
+                               OccupancyGrid& into);
+
+// Cell sets: a mask of a width x height map (1 = in the set), run-length encoded as a grid whose
+// Free cells are the set. decode_mask: nullopt unless the bytes give exactly width x height cells.
+[[nodiscard]] std::vector<std::uint8_t> encode_mask(const std::vector<std::uint8_t>& mask, int width, int height);
+[[nodiscard]] std::optional<std::vector<std::uint8_t>> decode_mask(const std::uint8_t* data, std::size_t size,
+                                                                   int width, int height);
+
+// Cells as flat x0, y0, x1, y1, ... sequences (paths in messages). nullopt for an odd length.
+[[nodiscard]] std::vector<std::int16_t> cells_to_xy(const std::vector<Cell>& cells);
+[[nodiscard]] std::optional<std::vector<Cell>> cells_from_xy(const std::int16_t* xy, std::size_t n);
 
 }  // namespace swarm::planner
