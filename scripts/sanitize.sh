@@ -43,7 +43,12 @@ mkdir -p "$reports"
 common="log_path=$reports/report:print_stacktrace=1"
 export UBSAN_OPTIONS="$common:halt_on_error=1:suppressions=$supp/ubsan.supp"
 if [[ $kind == address ]]; then
-  export ASAN_OPTIONS="$common:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1"
+  # new_delete_type_mismatch=0: Fast DDS 2.9.1 (Debian 12) deletes its statistics readers and
+  # writers (allocated as StatisticsReaderImpl / StatisticsWriterImpl, 64 bytes) through
+  # ~RTPSReader / ~RTPSWriter with the base's size (56 bytes): every frame of the report is inside
+  # libfastrtps, from DataReader/DataWriter deletion. ASan cannot suppress this check by location,
+  # so it is off; every other check stays on.
+  export ASAN_OPTIONS="$common:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1:new_delete_type_mismatch=0"
   export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
 else
   export TSAN_OPTIONS="$common:halt_on_error=0:second_deadlock_stack=1:suppressions=$supp/tsan.supp"
