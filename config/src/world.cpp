@@ -236,11 +236,15 @@ World resolve_world(const swarm::scenario::Scenario& scenario, const std::string
                       std::to_string(w.robot_cells.size()) + " of " + std::to_string(robots) +
                       " robots around " + start_text + " in " + w.map_path);
   }
-  // Each mapf phase's goals, checked now so that a bad one stops the run before it starts.
+  // Each mapf phase's goals and collect phase's objects, checked now so that a bad one stops the
+  // run before it starts.
   const auto phases = mission_phases(scenario);
   for (std::size_t i = 0; i < phases.size(); ++i) {
-    if (task_of(phases[i]) != TaskKind::Mapf) continue;
-    (void)mapf_goals(phases[i].mapf(), g, robots, src + ": mission.phase[" + std::to_string(i) + "].mapf");
+    const std::string field = src + ": mission.phase[" + std::to_string(i) + "]";
+    if (task_of(phases[i]) == TaskKind::Mapf) (void)mapf_goals(phases[i].mapf(), g, robots, field + ".mapf");
+    if (task_of(phases[i]) == TaskKind::Collect) {
+      (void)collect_world(phases[i].collect(), g, w.robot_cells, scenario.seed(), field + ".collect");
+    }
   }
   return w;
 }

@@ -2,6 +2,7 @@
 
 #include "swarm/config/scenario.hpp"
 #include "swarm/leader/cover_task.hpp"
+#include "swarm/leader/collect_task.hpp"
 #include "swarm/leader/explore_task.hpp"
 #include "swarm/leader/mapf_task.hpp"
 
@@ -17,6 +18,15 @@ std::unique_ptr<GroupTask> make_group_task(const swarm::scenario::Phase& phase, 
       return std::make_unique<CoverGroupTask>(phase.cover(), setup, group);
     case config::TaskKind::Mapf:
       return std::make_unique<MapfGroupTask>(phase.mapf(), group);
+    case config::TaskKind::Collect: {
+      // The robots are given the map (the map file) when no exploration comes before.
+      bool explored = false;
+      for (const auto& p : config::mission_phases(s)) {
+        if (config::task_of(p) == config::TaskKind::Collect) break;  // the first collect phase
+        explored = explored || config::task_of(p) == config::TaskKind::Explore;
+      }
+      return std::make_unique<CollectGroupTask>(phase.collect(), setup, group, !explored);
+    }
     default:
       break;
   }

@@ -4,6 +4,7 @@
 
 #include "swarm/comm/convert.hpp"
 #include "swarm/config/scenario.hpp"
+#include "swarm/config/task_config.hpp"
 #include "swarm/record/metrics.hpp"
 
 namespace swarm::sim {
@@ -31,13 +32,15 @@ SimNode::SimNode(comm::LockstepClock& clock, const comm::RoleSetup& setup)
       world_(setup.world.truth, setup.world.robot_cells, lidar_of(setup),
              static_cast<int>(setup.world.scenario.footprint_radius())),
       max_ticks_(setup.world.scenario.max_ticks()),
-      alive_(setup.world.robot_cells.size(), true) {
+      alive_(setup.world.robot_cells.size(), true),
+      robot_cells_(setup.world.robot_cells),
+      seed_(setup.world.scenario.seed()) {
   const comm::Topology& t = setup.topology;
   for (comm::AgentId r : t.robot_ids()) {
     sense_.push_back(&clock.advertise<msgs::Sense>(topic::sense(r), LinkClass::SimRobot, {r}));
   }
   clock.subscribe<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, [this, &t](const msgs::MotionCommand& m) {
-    if (t.is_robot(m.robot()) && alive_[m.robot()]) world_.command(m.robot(), m.route_id(), comm::from_xy(m.path_xy()));
+    if (t.is_robot(m.robot()) && alive_[m.robot()]) world_.command(m.robot(), m.route_id(), comm::from_xy(m.path_xy()), m.pick_steps(), m.drop_steps());
   }, comm::Delivery::Reliable, t.robots());
   clock.subscribe<msgs::PhaseStart>(topic::kPhase, LinkClass::LeaderGcs,
                                     [this](const msgs::PhaseStart& p) { next_phase_ = p.phase(); },
@@ -60,6 +63,12 @@ void SimNode::start_phase(std::uint32_t index, std::uint32_t tick) {
     world_.reset_coverage();
     log.curve.emplace_back(tick, world_.covered_fraction());
   }
+  if (task == config::TaskKind::Collect) {
+    const config::CollectWorld cw = config::collect_world(mission_[index].collect(), world_.truth(), robot_cells_,
+                                                          seed_, "collect");
+    world_.set_objects(cw.objects, cw.destinations);
+    log.curve.emplace_back(tick, 0.0);
+  }
   phases_.push_back(std::move(log));
 }
 
@@ -80,6 +89,17 @@ void SimNode::fill_judge(PhaseLog& p) const {
                {"target_cells", world_.coverage_target_cells()},
                {"makespan_ticks", p.full_tick ? nlohmann::json(*p.full_tick - p.start_tick) : nlohmann::json(nullptr)},
                {"coverage_curve", curve}};
+  } else if (p.task == "collect") {
+    // Delivered objects over time (tick, count): a point at every delivery.
+    nlohmann::json curve = nlohmann::json::array();
+    for (const auto& [tick, n] : p.curve) curve.push_back({tick, n});
+    const auto& c = world_.collect();
+    p.judge = {{"objects", c.objects},
+               {"delivered", c.delivered},
+               {"picked", c.picked},
+               {"wrong_drops", c.wrong_drops},
+               {"makespan_ticks", p.full_tick ? nlohmann::json(*p.full_tick - p.start_tick) : nlohmann::json(nullptr)},
+               {"delivered_curve", curve}};
   } else if (p.task == "mapf") {
     // Executed makespan: ticks from the phase's start to the last move any robot made (orders and
     // routes take a few ticks to arrive), and from the first move to the last (the plan's own
@@ -112,7 +132,10 @@ void SimNode::begin_tick(std::uint32_t k) {
   for (std::size_t r = 0; r < alive_.size(); ++r) {
     const bool lost = clock_.is_lost(static_cast<comm::AgentId>(r));
     // A lost robot stands where it was; one whose link healed senses and moves again.
-    if (alive_[r] && lost) world_.command(static_cast<int>(r), world_.route(static_cast<int>(r)).id, {});
+    if (alive_[r] && lost) {
+      world_.command(static_cast<int>(r), world_.route(static_cast<int>(r)).id, {});
+      world_.put_down(static_cast<int>(r));  // what it carried lies where it stopped
+    }
     alive_[r] = !lost;
   }
   if (k > 0) {
@@ -144,6 +167,10 @@ void SimNode::begin_tick(std::uint32_t k) {
   if (PhaseLog& p = phases_.back(); p.task == "cover") {
     if (!p.full_tick && world_.covered_cells() >= world_.coverage_target_cells()) p.full_tick = k;
     if (k % 5 == 0) p.curve.emplace_back(k, world_.covered_fraction());
+  } else if (p.task == "collect") {
+    const int delivered = world_.collect().delivered;
+    if (delivered != static_cast<int>(p.curve.back().second)) p.curve.emplace_back(k, delivered);
+    if (!p.full_tick && delivered >= world_.collect().objects) p.full_tick = k;
   }
   clock_.publish_clock(k, states(), false);
 }

@@ -80,17 +80,22 @@ World::World(planner::OccupancyGrid truth, std::vector<Cell> robot_cells, LidarC
       progress_(robots_.size()),
       seen_(truth_.width(), truth_.height(), truth_.resolution()),
       counts_(robots_.size()),
-      heading_(robots_.size(), -1) {
+      heading_(robots_.size(), -1),
+      picks_(robots_.size()),
+      drops_(robots_.size()) {
   reachable_ = planner::reachable_mask(truth_, {robots_.front()});
   reachable_free_ = static_cast<int>(std::count(reachable_.begin(), reachable_.end(), 1));
   reset_coverage();
 }
 
-void World::command(int robot, std::uint32_t route_id, const std::vector<Cell>& route) {
+void World::command(int robot, std::uint32_t route_id, const std::vector<Cell>& route,
+                    const std::vector<std::uint32_t>& picks, const std::vector<std::uint32_t>& drops) {
   planner::RouteProgress& p = progress_[robot];
   p.id = route_id;
   p.step = 0;
   routes_[robot].clear();
+  picks_[robot] = picks;
+  drops_[robot] = drops;
   if (route.empty()) {
     p.state = RouteState::Stopped;
   } else if (route.front() != robots_[robot]) {
@@ -99,6 +104,48 @@ void World::command(int robot, std::uint32_t route_id, const std::vector<Cell>& 
   } else {
     routes_[robot] = route;
     p.state = route.size() == 1 ? RouteState::Finished : RouteState::Active;
+    act(robot);
+  }
+}
+
+void World::set_objects(std::vector<planner::TourObject> objects, std::vector<Cell> destinations) {
+  objects_.clear();
+  for (const auto& o : objects) objects_.push_back({o.cell, o.type, -1, false});
+  destinations_ = std::move(destinations);
+  collect_ = {};
+  collect_.objects = static_cast<int>(objects_.size());
+}
+
+void World::put_down(int robot) {
+  for (Object& o : objects_) {
+    if (o.carrier != robot) continue;
+    o.carrier = -1;
+    o.cell = robots_[static_cast<std::size_t>(robot)];
+  }
+}
+
+void World::act(int robot) {
+  const auto r = static_cast<std::size_t>(robot);
+  const std::uint32_t s = progress_[r].step;
+  const Cell here = robots_[r];
+  const auto has = [s](const std::vector<std::uint32_t>& v) { return std::find(v.begin(), v.end(), s) != v.end(); };
+  if (has(picks_[r])) {
+    for (Object& o : objects_) {
+      if (o.delivered || o.carrier >= 0 || o.cell != here) continue;
+      o.carrier = robot;
+      ++collect_.picked;
+    }
+  }
+  if (has(drops_[r])) {
+    for (Object& o : objects_) {
+      if (o.carrier != robot) continue;
+      o.carrier = -1;
+      o.cell = here;
+      const bool right = static_cast<std::size_t>(o.type) < destinations_.size() &&
+                         destinations_[static_cast<std::size_t>(o.type)] == here;
+      o.delivered = right;
+      ++(right ? collect_.delivered : collect_.wrong_drops);
+    }
   }
 }
 
@@ -141,6 +188,7 @@ void World::move() {
     }
     robots_[r] = res.next[r];
     if (++p.step + 1 >= routes_[r].size()) p.state = RouteState::Finished;
+    act(static_cast<int>(r));
   }
   for (std::size_t r = 0; r < n; ++r) coverage_.visit(robots_[r]);
 }

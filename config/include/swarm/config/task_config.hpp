@@ -9,6 +9,7 @@
 
 #include "swarm/planner/cover_routes.hpp"
 #include "swarm/planner/mapf/solver.hpp"
+#include "swarm/planner/tour.hpp"
 #include "swarm/proto/scenario.pb.h"
 
 namespace swarm::config {
@@ -28,5 +29,20 @@ namespace swarm::config {
 // cell, two robots with one goal, or a scen whose map size differs or with too few rows.
 [[nodiscard]] std::vector<planner::Cell> mapf_goals(const swarm::scenario::Mapf& mapf, const planner::OccupancyGrid& map,
                                                     int robots, const std::string& field);
+
+// The objects and destinations of a collect phase: the scenario's (metres in the map frame) or,
+// none listed, `scatter` objects of each of `types` types at distinct free cells reachable from
+// the start (8-connected, not a robot's start cell), drawn from the run's seed; destinations the
+// scenario's or, none listed, `types` free cells beside a wall spread over the map. The simulator,
+// the GCS and the leaders all compute it from the scenario, so object i is the same everywhere.
+// Throws ConfigError naming `field` for an object or destination outside the map, on a blocked or
+// unreachable cell, or a type with no destination.
+struct CollectWorld {
+  std::vector<planner::TourObject> objects;
+  std::vector<planner::Cell> destinations;  // per type
+};
+[[nodiscard]] CollectWorld collect_world(const swarm::scenario::Collect& collect, const planner::OccupancyGrid& map,
+                                         const std::vector<planner::Cell>& robot_cells, std::uint64_t seed,
+                                         const std::string& field);
 
 }  // namespace swarm::config

@@ -53,6 +53,8 @@ class SimNode {
   std::optional<std::uint32_t> steps_to_99_;
   std::vector<std::pair<std::uint32_t, double>> curve_;  // (tick, explored fraction)
   std::vector<bool> alive_;
+  std::vector<planner::Cell> robot_cells_;  // at the start (the collect world is drawn from them)
+  std::uint64_t seed_;
   std::vector<float> ranges_;
 
   // The mission's phases as the GCS announces them, and what the simulator judged in each.
@@ -64,7 +66,7 @@ class SimNode {
     std::uint32_t start_tick = 0;
     std::vector<MotionCounts> counts_at_start;
     ConflictEvents events_at_start;
-    std::vector<std::pair<std::uint32_t, double>> curve;  // cover: (tick, covered fraction)
+    std::vector<std::pair<std::uint32_t, double>> curve;  // cover: (tick, covered fraction); collect: (tick, delivered)
     std::optional<std::uint32_t> full_tick;              // cover: every target cell covered
     std::optional<std::uint32_t> first_move_tick;        // the first and last tick a robot moved
     std::optional<std::uint32_t> last_move_tick;         // in the phase

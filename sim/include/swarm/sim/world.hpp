@@ -37,6 +37,7 @@
 #include "swarm/planner/grid.hpp"
 #include "swarm/planner/motion.hpp"
 #include "swarm/planner/route.hpp"
+#include "swarm/planner/tour.hpp"
 #include "swarm/record/metrics.hpp"
 
 namespace swarm::sim {
@@ -77,8 +78,23 @@ class World {
   void set_motion(const planner::MotionModel& motion) { motion_ = motion; }
   const planner::MotionModel& motion() const { return motion_; }
 
-  // A new route for `robot` (see the file comment); an empty route stops it.
-  void command(int robot, std::uint32_t route_id, const std::vector<planner::Cell>& route);
+  // A new route for `robot` (see the file comment); an empty route stops it. At the route indices
+  // in `picks` the robot picks up every object lying on its cell; at those in `drops` it drops
+  // all it carries: an object at its type's destination is delivered, elsewhere it lies there.
+  void command(int robot, std::uint32_t route_id, const std::vector<planner::Cell>& route,
+               const std::vector<std::uint32_t>& picks = {}, const std::vector<std::uint32_t>& drops = {});
+
+  // Collect (PAPERS.md section 4): the objects, each lying on its cell, and each type's destination.
+  void set_objects(std::vector<planner::TourObject> objects, std::vector<planner::Cell> destinations);
+  // A lost robot: what it carries lies on its cell again.
+  void put_down(int robot);
+  struct CollectCounts {
+    int objects = 0;
+    int picked = 0;       // pick-ups (an object put down and picked up again counts twice)
+    int delivered = 0;    // objects at their type's destination (each once: then they are gone)
+    int wrong_drops = 0;  // objects dropped anywhere else
+  };
+  const CollectCounts& collect() const { return collect_; }
   // Every robot performs its next action.
   void move();
   // Scans from the robot's cell and records what it saw in the explored map.
@@ -121,6 +137,18 @@ class World {
   int reachable_seen_ = 0;
   std::vector<MotionCounts> counts_;
   std::vector<int> heading_;  // of each robot's last move, -1 before its first
+  std::vector<std::vector<std::uint32_t>> picks_, drops_;  // per robot, of its route
+  // Collect: each object's state: lying on `cell`, carried (carrier >= 0) or delivered.
+  struct Object {
+    planner::Cell cell;
+    int type = 0;
+    int carrier = -1;
+    bool delivered = false;
+  };
+  std::vector<Object> objects_;
+  std::vector<planner::Cell> destinations_;
+  CollectCounts collect_;
+  void act(int robot);  // the pick-up / drop at the robot's route index, if any
   ConflictEvents events_;
 };
 

@@ -1,0 +1,279 @@
+#include "swarm/leader/collect_task.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "swarm/comm/convert.hpp"
+#include "swarm/comm/task_codes.hpp"
+#include "swarm/planner/astar.hpp"
+#include "swarm/planner/cover_routes.hpp"
+#include "swarm/planner/tour.hpp"
+
+namespace swarm::leader {
+
+namespace task = comm::task;
+using planner::Cell;
+
+namespace {
+// A robot whose route has not advanced for this many ticks backs off (see the header).
+constexpr std::uint32_t kStallTicks = 6;
+}  // namespace
+
+CollectGroupTask::CollectGroupTask(const swarm::scenario::Collect& config, const comm::RoleSetup& setup, int group,
+                                   bool map_given)
+    : group_(group),
+      map_given_(map_given),
+      world_(config::collect_world(config, setup.world.truth, setup.world.robot_cells, setup.world.scenario.seed(),
+                                   "collect")),
+      robots_(static_cast<std::size_t>(setup.topology.robots_per_group())) {}
+
+void CollectGroupTask::start(GroupContext&) {
+  have_order_ = reported_ = false;
+  state_.assign(world_.objects.size(), State::Waiting);
+  where_.clear();
+  for (const auto& o : world_.objects) where_.push_back(o.cell);
+  for (Robot& r : robots_) r = Robot{};
+}
+
+void CollectGroupTask::on_order(const msgs::TaskOrder& o, GroupContext& ctx) {
+  if (o.kind() != task::kOrderWork || (have_order_ && o.seq() <= seq_)) return;
+  for (std::int32_t id : o.values()) {
+    if (id < 0 || static_cast<std::size_t>(id) >= world_.objects.size()) {
+      throw std::runtime_error("a collect order names object " + std::to_string(id) + " of " +
+                               std::to_string(world_.objects.size()));
+    }
+  }
+  seq_ = o.seq();
+  have_order_ = true;
+  mine_.assign(o.values().begin(), o.values().end());
+  // Each object to the nearest living robot with room left.
+  const std::vector<int> living = ctx.living();
+  const std::size_t room = (mine_.size() + living.size() - 1) / std::max<std::size_t>(1, living.size());
+  for (int id : mine_) {
+    int best = -1;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (int i : living) {
+      if (robots_[static_cast<std::size_t>(i)].pending.size() >= room) continue;
+      const Cell at = ctx.cell_of(i), c = where_[static_cast<std::size_t>(id)];
+      const double d = std::hypot(at.x - c.x, at.y - c.y);
+      if (d < best_d) best_d = d, best = i;
+    }
+    if (best >= 0) robots_[static_cast<std::size_t>(best)].pending.push_back(id);
+  }
+  for (int i : living) plan(i, ctx);
+}
+
+void CollectGroupTask::plan(int index, GroupContext& ctx) {
+  Robot& r = robots_[static_cast<std::size_t>(index)];
+  if (r.busy || r.pending.empty()) return;
+  planner::TourProblem problem;
+  problem.start = ctx.cell_of(index);
+  problem.destinations = world_.destinations;
+  for (int id : r.pending) problem.objects.push_back({where_[static_cast<std::size_t>(id)], world_.objects[static_cast<std::size_t>(id)].type});
+  planner::TourOptions options;
+  options.variant = planner::TourVariant::kDistanceAngle;
+  options.search = planner::TourOptions::Search::kExact;
+  options.seed = static_cast<std::uint64_t>(1000 * group_ + index + 1);
+  const planner::OccupancyGrid& map = map_given_ ? ctx.setup.world.truth : ctx.map.group();
+  const planner::TourPlan plan = planner::plan_tour(map, problem, options);
+  r.picks.clear();
+  r.delivers.clear();
+  std::uint32_t at = 0;
+  std::vector<int> carried;
+  for (const planner::TourLeg& leg : plan.legs) {
+    at += static_cast<std::uint32_t>(leg.cells.size() - 1);
+    if (leg.stop.kind == planner::TourStop::kPickUp) {
+      const int id = r.pending[static_cast<std::size_t>(leg.stop.object)];
+      r.picks.emplace_back(id, at);
+      carried.push_back(id);
+    } else {
+      for (int id : carried) r.delivers.emplace_back(id, at);
+      carried.clear();
+    }
+  }
+  // Objects the planner left out (unreachable on the map the leader has) stay pending.
+  std::vector<int> left;
+  for (int skipped : plan.skipped) left.push_back(r.pending[static_cast<std::size_t>(skipped)]);
+  r.pending = left;
+  // Then back to where the robot started the mission: a robot that stayed on the last
+  // destination would stand in the way of every robot delivering there after it.
+  std::vector<Cell> cells = plan.cells();
+  const Cell home = ctx.setup.world.robot_cells[ctx.topology().robot(group_, index)];
+  if (auto back = planner::astar(map, cells.back(), home, {.unknown_is_free = false}); back && back->size() > 1) {
+    cells.insert(cells.end(), back->begin() + 1, back->end());
+  }
+  send(index, ctx, std::move(cells));
+  r.length_cells += plan.length_cells();
+  r.rotation_eighths += plan.rotation;
+  ++r.tours;
+}
+
+void CollectGroupTask::send(int index, GroupContext& ctx, std::vector<Cell> cells) {
+  Robot& r = robots_[static_cast<std::size_t>(index)];
+  msgs::Route m;
+  m.path_xy(comm::to_xy(cells));
+  m.release(static_cast<std::uint32_t>(cells.size() - 1));
+  for (const auto& [id, step] : r.picks) {
+    if (step != kDone) m.pick_steps().push_back(step);
+  }
+  for (const auto& [id, step] : r.delivers) {
+    if (step != kDone && std::find(m.drop_steps().begin(), m.drop_steps().end(), step) == m.drop_steps().end()) {
+      m.drop_steps().push_back(step);
+    }
+  }
+  r.route_id = ctx.out.route(index, m);
+  r.step = 0;
+  r.busy = cells.size() > 1;
+  r.moved_tick = ctx.clock.tick();
+  r.cells = std::move(cells);
+}
+
+void CollectGroupTask::reroute(int index, int waits, GroupContext& ctx) {
+  Robot& r = robots_[static_cast<std::size_t>(index)];
+  const std::uint32_t at = r.step;
+  const Cell here = r.cells[at];
+  // Around the robots in the way if there is a way (a swap is never undone by waiting), else wait.
+  std::vector<Cell> others;
+  for (const auto& s : ctx.clock.robots()) {
+    if (Cell{s.x(), s.y()} != here) others.push_back({s.x(), s.y()});
+  }
+  const planner::OccupancyGrid& map = map_given_ ? ctx.setup.world.truth : ctx.map.group();
+  // (4-connected, so legal under the tour's 8-connected motion too)
+  std::vector<Cell> around = planner::detour(map, r.cells, at, others);
+  std::vector<Cell> cells;
+  std::uint32_t target = at;  // the tour step the new route rejoins at, and its index there
+  std::uint32_t rejoin = 0;
+  const auto tail = static_cast<std::uint32_t>(r.cells.size() - 1);
+  // around = a path to tour step `target`, then the tour after it: find the first such step.
+  bool found = false;
+  for (std::uint32_t j = at + 1; j <= tail && !around.empty() && around.front() == here && !found; ++j) {
+    if (around.size() < tail - j + 1) continue;
+    const auto k = static_cast<std::uint32_t>(around.size() - 1 - (tail - j));
+    if (k == 0) continue;
+    if (std::equal(around.begin() + k, around.end(), r.cells.begin() + j)) {
+      found = around.size() + at != r.cells.size() || !std::equal(around.begin(), around.end(), r.cells.begin() + at);
+      target = j;
+      rejoin = k;
+    }
+  }
+  if (found) {
+    cells = std::move(around);
+    ++detours_;
+  } else {
+    cells.assign(static_cast<std::size_t>(waits), here);
+    cells.insert(cells.end(), r.cells.begin() + at, r.cells.end());
+    rejoin = static_cast<std::uint32_t>(waits);
+    target = at;
+    ++backoffs_;
+  }
+  // Tour steps before `target` that the new route skips: their picks and drops are undone (the
+  // objects wait for a later tour); steps from `target` on keep their place relative to it.
+  const std::uint32_t shift_from = target;
+  for (auto* list : {&r.picks, &r.delivers}) {
+    for (auto& [id, step] : *list) {
+      if (step == kDone) continue;
+      if (step < at || (step <= at && list == &r.picks)) {
+        step = kDone;  // already done where the robot stands
+      } else if (step < shift_from) {
+        if (list == &r.picks && state_[static_cast<std::size_t>(id)] == State::Waiting) r.pending.push_back(id);
+        step = kDone;
+      } else {
+        step = step - shift_from + rejoin;
+      }
+    }
+  }
+  send(index, ctx, std::move(cells));
+}
+
+void CollectGroupTask::on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) {
+  Robot& r = robots_[static_cast<std::size_t>(index)];
+  if (p.id != r.route_id) return;
+  if (p.step > r.step) r.moved_tick = ctx.clock.tick();
+  r.step = std::max(r.step, p.step);
+  for (const auto& [id, step] : r.picks) {
+    if (r.step >= step && state_[static_cast<std::size_t>(id)] == State::Waiting) state_[static_cast<std::size_t>(id)] = State::Carried;
+  }
+  for (const auto& [id, step] : r.delivers) {
+    if (r.step >= step) state_[static_cast<std::size_t>(id)] = State::Delivered;
+  }
+  if (p.state == planner::RouteState::Finished) {
+    r.busy = false;
+    plan(index, ctx);
+  } else if (p.state != planner::RouteState::Active) {
+    // Refused or abandoned (the robot was not where the route began): from where it stands back
+    // onto its route, the rest unchanged.
+    const planner::OccupancyGrid& map = map_given_ ? ctx.setup.world.truth : ctx.map.group();
+    const auto back = planner::astar(map, ctx.cell_of(index), r.cells[r.step], {.unknown_is_free = false});
+    if (!back) return;
+    std::vector<Cell> cells = *back;
+    cells.insert(cells.end(), r.cells.begin() + r.step + 1, r.cells.end());
+    const auto rejoin = static_cast<std::uint32_t>(back->size() - 1);
+    for (auto* list : {&r.picks, &r.delivers}) {
+      for (auto& [id, step] : *list) {
+        if (step == kDone) continue;
+        step = step < r.step ? kDone : step - r.step + rejoin;
+      }
+    }
+    send(index, ctx, std::move(cells));
+  }
+}
+
+void CollectGroupTask::member_lost(int index, GroupContext& ctx) {
+  Robot& lost = robots_[static_cast<std::size_t>(index)];
+  const Cell at = ctx.cell_of(index);
+  std::vector<int> orphans = lost.pending;
+  for (const auto& [id, step] : lost.picks) {
+    auto& s = state_[static_cast<std::size_t>(id)];
+    if (s == State::Delivered) continue;
+    if (s == State::Carried) where_[static_cast<std::size_t>(id)] = at;  // the simulator put it down there
+    s = State::Waiting;
+    orphans.push_back(id);
+  }
+  lost = Robot{};
+  const std::vector<int> living = ctx.living();
+  if (living.empty()) return;
+  for (int id : orphans) {
+    // To the living robot with the fewest objects still ahead of it.
+    int best = living.front();
+    for (int i : living) {
+      if (robots_[static_cast<std::size_t>(i)].pending.size() < robots_[static_cast<std::size_t>(best)].pending.size()) best = i;
+    }
+    robots_[static_cast<std::size_t>(best)].pending.push_back(id);
+    ++reassigned_;
+  }
+  for (int i : living) plan(i, ctx);
+}
+
+void CollectGroupTask::step(GroupContext& ctx) {
+  if (!have_order_ || reported_) return;
+  for (int i : ctx.living()) {
+    plan(i, ctx);  // an idle robot with objects waiting
+    Robot& r = robots_[static_cast<std::size_t>(i)];
+    if (r.busy && ctx.clock.tick() >= r.moved_tick + kStallTicks && ctx.cell_of(i) == r.cells[r.step]) {
+      reroute(i, 1 + static_cast<int>(ctx.topology().robot(group_, i)), ctx);
+    }
+  }
+  for (int id : mine_) {
+    if (state_[static_cast<std::size_t>(id)] != State::Delivered) return;
+  }
+  msgs::TaskReport report;
+  report.state(task::kDone);
+  report.values({static_cast<std::int32_t>(seq_)});
+  ctx.out.report(report);
+  reported_ = true;
+}
+
+nlohmann::json CollectGroupTask::numbers() const {
+  nlohmann::json per_robot = nlohmann::json::array();
+  for (const Robot& r : robots_) {
+    per_robot.push_back({{"tours", r.tours}, {"planned_length_cells", r.length_cells}, {"planned_rotation_eighths", r.rotation_eighths}});
+  }
+  int delivered = 0;
+  for (int id : mine_) delivered += state_[static_cast<std::size_t>(id)] == State::Delivered ? 1 : 0;
+  return {{"objects", mine_.size()}, {"delivered_known", delivered}, {"reassigned", reassigned_},
+          {"backoffs", backoffs_},   {"detours", detours_},           {"per_robot", per_robot}};
+}
+
+}  // namespace swarm::leader
