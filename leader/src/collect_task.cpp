@@ -158,6 +158,11 @@ void CollectGroupTask::reroute(int index, int waits, GroupContext& ctx) {
       rejoin = k;
     }
   }
+  // A detour that skips a pick-up or a drop would leave objects behind or carried for ever: wait
+  // instead.
+  for (const auto* list : {&r.picks, &r.delivers}) {
+    for (const auto& [id, step] : *list) found = found && !(step != kDone && step > at && step < target);
+  }
   if (found) {
     cells = std::move(around);
     ++detours_;
@@ -222,7 +227,10 @@ void CollectGroupTask::on_progress(int index, const planner::RouteProgress& p, G
 
 void CollectGroupTask::member_lost(int index, GroupContext& ctx) {
   Robot& lost = robots_[static_cast<std::size_t>(index)];
-  const Cell at = ctx.cell_of(index);
+  // Where the simulator put down what it carried (the same rule, from the same robot cells).
+  std::vector<Cell> robots;
+  for (const auto& s : ctx.clock.robots()) robots.push_back({s.x(), s.y()});
+  const Cell at = planner::put_down_cell(ctx.setup.world.truth, ctx.cell_of(index), robots);
   std::vector<int> orphans = lost.pending;
   for (const auto& [id, step] : lost.picks) {
     auto& s = state_[static_cast<std::size_t>(id)];

@@ -367,4 +367,23 @@ std::string check_tour(const OccupancyGrid& given_map, const TourProblem& proble
   return "";
 }
 
+Cell put_down_cell(const OccupancyGrid& map, Cell at, const std::vector<Cell>& robots) {
+  std::vector<std::uint8_t> seen(map.size(), 0);
+  std::vector<Cell> frontier{at};
+  seen[map.index(at)] = 1;
+  for (std::size_t i = 0; i < frontier.size() && i < 4096; ++i) {
+    const Cell c = frontier[i];
+    if (c != at && std::find(robots.begin(), robots.end(), c) == robots.end()) return c;
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const Cell n{c.x + dx, c.y + dy};
+        if (!map.in_bounds(n) || !map.is_free(n) || seen[map.index(n)]) continue;
+        seen[map.index(n)] = 1;
+        frontier.push_back(n);
+      }
+    }
+  }
+  return at;
+}
+
 }  // namespace swarm::planner

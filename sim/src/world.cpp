@@ -117,10 +117,11 @@ void World::set_objects(std::vector<planner::TourObject> objects, std::vector<Ce
 }
 
 void World::put_down(int robot) {
+  const Cell cell = planner::put_down_cell(truth_, robots_[static_cast<std::size_t>(robot)], robots_);
   for (Object& o : objects_) {
     if (o.carrier != robot) continue;
     o.carrier = -1;
-    o.cell = robots_[static_cast<std::size_t>(robot)];
+    o.cell = cell;
   }
 }
 

@@ -56,6 +56,19 @@ TEST(Tasks, CoverInGroupKOrderReachesEveryReachableCell) {
   EXPECT_DOUBLE_EQ(phase_named(m, "cover")["task"]["covered_fraction"].get<double>(), 1.0);
 }
 
+TEST(Tasks, CollectDeliversEveryObject) {
+  const std::string dir = fresh_dir("collect");
+  const std::string scenario = scenario_with(dir, "small.pbtxt", "mission { phase { collect {} } }");
+  const CommandResult r = run_swarm("run --scenario " + scenario + " --max-ticks 3000 --out " + dir + "/run");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto m = read_json(dir + "/run/metrics.json");
+  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto& p = phase_named(m, "collect");
+  EXPECT_EQ(p["task"]["objects"], 15);
+  EXPECT_EQ(p["task"]["delivered"], 15);
+  EXPECT_EQ(p["task"]["wrong_drops"], 0);
+}
+
 TEST(Tasks, MapfWithoutDelayKeepsThePlansTimingWithNoConflict) {
   const std::string dir = fresh_dir("mapf") + "/run";
   const CommandResult r = run_swarm("run --scenario " + source_path("scenarios/mapf-small.pbtxt") + " --out " + dir);

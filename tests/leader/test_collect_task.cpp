@@ -1,7 +1,7 @@
 // The collect task end to end on the FakeBus (the real GCS, leaders, members and simulator, in
 // one thread): every object reaches its type's destination, as the simulator judges from ground
-// truth, and none is dropped elsewhere. (A member lost midway: its objects are re-assigned, but
-// the leader's books lose track of some of them; not tested until that works, issue 10.)
+// truth, none is dropped elsewhere, and when a member is lost midway its objects (what it carried
+// included, put down beside it) are taken on by the others.
 #include <gtest/gtest.h>
 
 #include "swarm_test/fake_swarm.hpp"
@@ -24,6 +24,22 @@ TEST(CollectTask, EveryObjectReachesItsDestination) {
   EXPECT_EQ(p["motion"]["wall_stops"], 0);
   std::cerr << "makespan " << p["task"]["makespan_ticks"] << " moves " << p["motion"]["moves"] << " turns/8 "
             << p["motion"]["turn_eighths"] << " conflicts " << p["motion"]["vertex_conflict_events"] << "\n";
+}
+
+TEST(CollectTask, ALostMembersObjectsAreTakenOnByTheOthers) {
+  auto setup = swarm::test::setup_from_text(
+      "map: 'small' groups: 1 robots_per_group: 3 max_ticks: 4000 mission { phase { collect { scatter: 4 } } }");
+  swarm::test::FakeSwarm s(setup);
+  // Lost at tick 25, carrying objects. (Lost at tick 40 it stops on the drop point of type 1, and
+  // no robot can deliver there any more: the phase does not end. A known limit, see README.)
+  const auto m = s.run_to_end([&](std::uint32_t tick) {
+    if (tick == 25) s.disconnect(setup.topology.robot(0, 2));
+  });
+  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto& p = phase_named(m, "collect");
+  EXPECT_EQ(p["task"]["delivered"], p["task"]["objects"]);
+  EXPECT_EQ(p["task"]["wrong_drops"], 0);
+  EXPECT_GT(m["agents"]["leader-0"]["phases"][0]["numbers"]["reassigned"].get<int>(), 0);
 }
 
 }  // namespace

@@ -221,4 +221,43 @@ TEST(World, OnlyCellsReachableFromTheStartCount) {
 }
 
 }  // namespace
+// Collect: a robot picks up what lies on its cell at a pick step and drops all it carries at a
+// drop step: delivered at its type's destination, counted as a wrong drop elsewhere (and lying
+// there again); a lost robot's load is put down beside it.
+TEST(WorldCollect, PickDeliverAndWrongDrop) {
+  World w(open_room(6, 1), {{0, 0}}, kLidar);
+  w.set_motion(swarm::planner::MotionModel::eight());
+  w.set_objects({{{1, 0}, 0}, {{2, 0}, 1}}, {{3, 0}, {5, 0}});
+  w.command(0, 1, {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}}, {1, 2}, {3, 4});
+  for (int k = 0; k < 4; ++k) w.move();
+  // Both picked at (1, 0) and (2, 0); at (3, 0) type 0 is delivered and type 1 dropped there (its
+  // destination is (5, 0)); at (4, 0) nothing is carried any more.
+  EXPECT_EQ(w.collect().objects, 2);
+  EXPECT_EQ(w.collect().picked, 2);
+  EXPECT_EQ(w.collect().delivered, 1);
+  EXPECT_EQ(w.collect().wrong_drops, 1);
+  // Picked up again where it was dropped and carried to (5, 0).
+  w.command(0, 2, {{4, 0}, {3, 0}, {4, 0}, {5, 0}}, {1}, {3});
+  for (int k = 0; k < 3; ++k) w.move();
+  EXPECT_EQ(w.collect().picked, 3);
+  EXPECT_EQ(w.collect().delivered, 2);
+}
+
+TEST(WorldCollect, ALostRobotsLoadLiesBesideItForAnotherToDeliver) {
+  World w(open_room(3, 2), {{0, 0}, {2, 1}}, kLidar);
+  w.set_motion(swarm::planner::MotionModel::eight());
+  w.set_objects({{{1, 0}, 0}}, {{0, 1}});
+  w.command(0, 1, {{0, 0}, {1, 0}}, {1}, {});
+  w.move();
+  EXPECT_EQ(w.collect().picked, 1);
+  // Robot 0 is lost on (1, 0): its load goes to the first free cell beside it no robot holds.
+  EXPECT_EQ(swarm::planner::put_down_cell(w.truth(), {1, 0}, w.robots()), (Cell{0, 0}));
+  w.put_down(0);
+  w.command(1, 2, {{2, 1}, {1, 1}, {0, 0}, {0, 1}}, {2}, {3});
+  for (int k = 0; k < 3; ++k) w.move();
+  EXPECT_EQ(w.collect().picked, 2);
+  EXPECT_EQ(w.collect().delivered, 1);
+  EXPECT_EQ(w.collect().wrong_drops, 0);
+}
+
 }  // namespace swarm::sim

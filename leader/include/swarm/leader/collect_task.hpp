@@ -3,8 +3,9 @@
 // room left) and each robot gets a tour from the tour planner (planner/tour.hpp: type by type, the
 // distance + angle variant, each type's order searched exactly), driven as a route with its
 // pick-up and drop steps. From the robots' progress the leader knows what is picked up and
-// delivered. A member lost midway: what it had not delivered (what it carried lies on its cell
-// again) goes to the living robots, each taking it on in a new tour once its current one ends.
+// delivered. A member lost midway: what it had not delivered (what it carried lies beside it,
+// planner::put_down_cell) goes to the living robots, each taking it on in a new tour once its
+// current one ends.
 // After its tour a robot drives back to its start cell, out of the others' way. A robot whose
 // route has not advanced for a while (robots contending for one free cell: the
 // simulator refuses both) waits a number of ticks unique to it and goes on, so one goes first.

@@ -169,6 +169,12 @@ struct TourPlan {
   [[nodiscard]] std::vector<Cell> cells() const;
 };
 
+// Where a robot that stops for good (lost) leaves what it carries: the nearest free cell beside it
+// (breadth first over 8-neighbours, in a fixed order) that no robot stands on, so that another
+// robot can stand there to pick it up; `at` itself when there is none. The simulator and the
+// leader both use it, so they agree.
+[[nodiscard]] Cell put_down_cell(const OccupancyGrid& map, Cell at, const std::vector<Cell>& robots);
+
 [[nodiscard]] TourPlan plan_tour(const OccupancyGrid& map, const TourProblem& problem,
                                  const TourOptions& options = {},
                                  const std::function<bool()>& stop = {});

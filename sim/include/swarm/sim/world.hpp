@@ -86,7 +86,7 @@ class World {
 
   // Collect (PAPERS.md section 4): the objects, each lying on its cell, and each type's destination.
   void set_objects(std::vector<planner::TourObject> objects, std::vector<planner::Cell> destinations);
-  // A lost robot: what it carries lies on its cell again.
+  // A lost robot: what it carries lies beside it again (planner::put_down_cell).
   void put_down(int robot);
   struct CollectCounts {
     int objects = 0;
