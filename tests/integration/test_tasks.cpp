@@ -1,5 +1,5 @@
-// The coverage and path-finding tasks over real DDS: every role its own process, through
-// `swarm run`. The simulator judges from ground truth (metrics.json phases[].task / motion).
+// The coverage, path-finding and collection tasks over real DDS: every role its own process,
+// through `swarm run`. The simulator judges from ground truth (metrics.json phases[].task / motion).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -10,21 +10,23 @@
 namespace swarm::test {
 namespace {
 
-// A scenario file: `base` (a file of scenarios/) with `extra` text appended.
-std::string scenario_with(const std::string& dir, const std::string& base, const std::string& extra) {
+// Runs `swarm run` on scenarios/<base> with `extra` scenario text appended and `flags` added;
+// expects exit 0 and a complete mission; returns metrics.json.
+nlohmann::json run_task(const std::string& name, const std::string& base, const std::string& extra,
+                        const std::string& flags = "") {
+  const std::string dir = fresh_dir(name);
   std::ifstream in(source_path("scenarios/" + base));
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string path = dir + "/scenario.pbtxt";
-  std::ofstream(path) << text << "\n" << extra << "\n";
-  return path;
+  std::ofstream(dir + "/scenario.pbtxt") << text << "\n" << extra << "\n";
+  const CommandResult r = run_swarm("run --scenario " + dir + "/scenario.pbtxt " + flags + " --out " + dir + "/run");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  auto m = read_json(dir + "/run/metrics.json");
+  EXPECT_TRUE(m["complete"].get<bool>()) << name;
+  return m;
 }
 
 TEST(Tasks, ExploreThenCoverReachesEveryReachableCell) {
-  const std::string dir = fresh_dir("cover") + "/run";
-  const CommandResult r = run_swarm("run --scenario " + source_path("scenarios/cover-small.pbtxt") + " --out " + dir);
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto m = read_json(dir + "/metrics.json");
-  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto m = run_task("cover", "cover-small.pbtxt", "");
   const auto& cover = phase_named(m, "cover");
   EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
   // The explored map is not the truth (a few cells seen free are walls): routes through them end
@@ -33,13 +35,8 @@ TEST(Tasks, ExploreThenCoverReachesEveryReachableCell) {
 }
 
 TEST(Tasks, CoverWithAMemberKilledMidwayStillCoversEverything) {
-  const std::string dir = fresh_dir("cover_kill") + "/run";
-  const CommandResult r = run_swarm("run --scenario " + source_path("scenarios/small.pbtxt") +
-                                    " --mission cover --groups 1 --robots-per-group 3 --max-ticks 3000"
-                                    " --kill member-0-2@40 --out " + dir);
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto m = read_json(dir + "/metrics.json");
-  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto m = run_task("cover_kill", "small.pbtxt", "",
+                          "--mission cover --groups 1 --robots-per-group 3 --max-ticks 3000 --kill member-0-2@40");
   EXPECT_DOUBLE_EQ(phase_named(m, "cover")["task"]["covered_fraction"].get<double>(), 1.0);
   const auto& divisions = m["agents"]["leader-0"]["phases"][0]["numbers"]["divisions"];
   ASSERT_EQ(divisions.size(), 2u) << divisions;
@@ -47,22 +44,13 @@ TEST(Tasks, CoverWithAMemberKilledMidwayStillCoversEverything) {
 }
 
 TEST(Tasks, CoverInGroupKOrderReachesEveryReachableCell) {
-  const std::string dir = fresh_dir("cover_group_k");
-  const std::string scenario = scenario_with(dir, "small.pbtxt", "mission { phase { cover { order: ORDER_GROUP_K } } }");
-  const CommandResult r = run_swarm("run --scenario " + scenario + " --max-ticks 3000 --out " + dir + "/run");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto m = read_json(dir + "/run/metrics.json");
-  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto m = run_task("cover_group_k", "small.pbtxt", "mission { phase { cover { order: ORDER_GROUP_K } } }",
+                          "--max-ticks 3000");
   EXPECT_DOUBLE_EQ(phase_named(m, "cover")["task"]["covered_fraction"].get<double>(), 1.0);
 }
 
 TEST(Tasks, CollectDeliversEveryObject) {
-  const std::string dir = fresh_dir("collect");
-  const std::string scenario = scenario_with(dir, "small.pbtxt", "mission { phase { collect {} } }");
-  const CommandResult r = run_swarm("run --scenario " + scenario + " --max-ticks 3000 --out " + dir + "/run");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto m = read_json(dir + "/run/metrics.json");
-  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto m = run_task("collect", "small.pbtxt", "mission { phase { collect {} } }", "--max-ticks 3000");
   const auto& p = phase_named(m, "collect");
   EXPECT_EQ(p["task"]["objects"], 15);
   EXPECT_EQ(p["task"]["delivered"], 15);
@@ -70,11 +58,7 @@ TEST(Tasks, CollectDeliversEveryObject) {
 }
 
 TEST(Tasks, MapfWithoutDelayKeepsThePlansTimingWithNoConflict) {
-  const std::string dir = fresh_dir("mapf") + "/run";
-  const CommandResult r = run_swarm("run --scenario " + source_path("scenarios/mapf-small.pbtxt") + " --out " + dir);
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto m = read_json(dir + "/metrics.json");
-  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto m = run_task("mapf", "mapf-small.pbtxt", "");
   const auto& p = phase_named(m, "mapf");
   EXPECT_EQ(p["task"]["robots_at_goal"], 6);
   EXPECT_EQ(p["task"]["conflicts"], 0);
@@ -83,13 +67,7 @@ TEST(Tasks, MapfWithoutDelayKeepsThePlansTimingWithNoConflict) {
 }
 
 TEST(Tasks, MapfWithMemberLeaderDelayAndJitterStillHasNoConflict) {
-  const std::string dir = fresh_dir("mapf_delay");
-  const std::string scenario =
-      scenario_with(dir, "mapf-small.pbtxt", "links { member_leader { delay_ticks: 3 jitter_ticks: 4 } }");
-  const CommandResult r = run_swarm("run --scenario " + scenario + " --out " + dir + "/run");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto m = read_json(dir + "/run/metrics.json");
-  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto m = run_task("mapf_delay", "mapf-small.pbtxt", "links { member_leader { delay_ticks: 3 jitter_ticks: 4 } }");
   const auto& p = phase_named(m, "mapf");
   EXPECT_EQ(p["task"]["robots_at_goal"], 6);
   EXPECT_EQ(p["task"]["conflicts"], 0);
