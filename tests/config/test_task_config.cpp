@@ -1,0 +1,82 @@
+// A task phase's settings turned into planner inputs (config/task_config.hpp), and bad input in
+// them named by field: mapf goals, collect objects and destinations.
+#include "swarm/config/task_config.hpp"
+
+#include <gtest/gtest.h>
+
+#include "swarm/config/scenario.hpp"
+#include "swarm_test/ascii_grid.hpp"
+
+namespace swarm::config {
+namespace {
+
+using planner::Cell;
+
+// 6 x 3 cells of 0.2 m: a wall at x = 3 in the middle row.
+planner::OccupancyGrid room() { return swarm::test::grid_from({"......", "...#..", "......"}); }
+
+swarm::scenario::Phase phase_from(const std::string& text) {
+  const auto s = parse_scenario_text("mission { phase { " + text + " } }", "test");
+  return s.mission().phase(0);
+}
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(MapfGoals, PointsBecomeCellsAndBadOnesAreNamed) {
+  const auto map = room();
+  const auto ok = phase_from("mapf { goals { x: 0.1 y: 0.1 } goals { x: 1.1 y: 0.5 } }");
+  EXPECT_EQ(mapf_goals(ok.mapf(), map, 2, "f"), (std::vector<Cell>{{0, 0}, {5, 2}}));
+  EXPECT_TRUE(mapf_goals(phase_from("mapf {}").mapf(), map, 2, "f").empty());  // random, later
+  EXPECT_EQ(error_of([&] { (void)mapf_goals(phase_from("mapf { goals { x: 0.7 y: 0.3 } }").mapf(), map, 1, "f"); }),
+            "f.goals[0] (robot 0): the goal, cell (3, 1), is not a free cell of the map");
+  EXPECT_EQ(error_of([&] { (void)mapf_goals(phase_from("mapf { goals { x: 5 y: 0.1 } }").mapf(), map, 1, "f"); }),
+            "f.goals[0] (robot 0): the goal is outside the map");
+  EXPECT_EQ(error_of([&] {
+              (void)mapf_goals(phase_from("mapf { goals { x: 0.1 y: 0.1 } goals { x: 0.15 y: 0.15 } }").mapf(), map, 2, "f");
+            }),
+            "f.goals[1] (robot 1): another robot has the same goal cell (0, 0)");
+}
+
+TEST(CollectWorld, ScatteredObjectsAreDistinctReachableAndDeterministic) {
+  const auto map = room();
+  const auto c = phase_from("collect { scatter: 2 types: 2 }").collect();
+  const CollectWorld a = collect_world(c, map, {{0, 0}}, 7, "f");
+  const CollectWorld b = collect_world(c, map, {{0, 0}}, 7, "f");
+  ASSERT_EQ(a.objects.size(), 4u);
+  ASSERT_EQ(a.destinations.size(), 2u);
+  for (std::size_t i = 0; i < a.objects.size(); ++i) {
+    EXPECT_EQ(a.objects[i].cell, b.objects[i].cell);
+    EXPECT_EQ(a.objects[i].type, static_cast<int>(i / 2));
+    EXPECT_TRUE(map.is_free(a.objects[i].cell));
+    EXPECT_NE(a.objects[i].cell, (Cell{0, 0}));  // not a robot's start cell
+    for (std::size_t j = 0; j < i; ++j) EXPECT_NE(a.objects[i].cell, a.objects[j].cell);
+  }
+}
+
+TEST(CollectWorld, BadObjectsAndDestinationsAreNamed) {
+  const auto map = room();
+  EXPECT_EQ(error_of([&] {
+              (void)collect_world(phase_from("collect { objects { at { x: 0.7 y: 0.3 } type: 0 } destinations { x: 0.1 y: 0.1 } }").collect(),
+                                  map, {{0, 0}}, 1, "f");
+            }),
+            "f.objects[0]: on a cell that is not free");
+  EXPECT_EQ(error_of([&] {
+              (void)collect_world(phase_from("collect { objects { at { x: 0.3 y: 0.1 } type: 1 } destinations { x: 0.1 y: 0.1 } }").collect(),
+                                  map, {{0, 0}}, 1, "f");
+            }),
+            "f.objects[0]: its type 1 has no destination (1 given)");
+  EXPECT_EQ(error_of([&] {
+              (void)collect_world(phase_from("collect { destinations { x: 9 y: 9 } }").collect(), map, {{0, 0}}, 1, "f");
+            }),
+            "f.destinations[0]: outside the map");
+}
+
+}  // namespace
+}  // namespace swarm::config
