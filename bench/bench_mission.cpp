@@ -4,47 +4,35 @@
 // the "wall_with_startup_s" counter. Target on a 2-core machine: >= 200 ticks/s.
 #include <benchmark/benchmark.h>
 
-#include <filesystem>
-#include <fstream>
+#include <unistd.h>
 
-#include <nlohmann/json.hpp>
-
-#include "run_command.hpp"
+#include "mission_run.hpp"
 
 namespace {
 
 void BM_DefaultMission(benchmark::State& state) {
   namespace fs = std::filesystem;
   const fs::path root = fs::temp_directory_path() / ("swarm-bench-" + std::to_string(::getpid()));
-  double ticks = 0, loop_seconds = 0, startup_seconds = 0;
+  double ticks = 0, loop_seconds = 0, total_seconds = 0;
   int runs = 0;
   for (auto _ : state) {
-    swarm::tools::RunOptions options;
-    options.out_dir = (root / std::to_string(runs)).string();
-    const auto start = std::chrono::steady_clock::now();
-    const swarm::tools::PreparedRun run = swarm::tools::prepare_run(options);
-    auto processes = swarm::tools::build_run_processes(run.launch, run.world.scenario);
-    for (auto& p : processes) p.echo_stdout = false;
-    const auto result = swarm::tools::run_processes(processes, std::chrono::seconds(300));
-    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!result.ok) {
-      state.SkipWithError(("the mission failed: " + result.message).c_str());
+    std::string error;
+    const auto t = swarm::bench::run_mission(swarm::tools::RunOptions{}, root, runs, error);
+    if (!t) {
+      state.SkipWithError(error.c_str());
       break;
     }
-    std::ifstream in(run.launch.run_dir + "/metrics.json");
-    const auto m = nlohmann::json::parse(in);
-    const double loop = m["wall_seconds"];
-    state.SetIterationTime(loop);
-    ticks += m["ticks_run"].get<double>();
-    loop_seconds += loop;
-    startup_seconds += total - loop;
+    state.SetIterationTime(t->loop_seconds);
+    ticks += t->ticks;
+    loop_seconds += t->loop_seconds;
+    total_seconds += t->total_seconds;
     ++runs;
   }
   fs::remove_all(root);
   if (runs > 0) {
     state.counters["ticks_per_second"] = ticks / loop_seconds;
     state.counters["ticks"] = ticks / runs;
-    state.counters["wall_with_startup_s"] = (loop_seconds + startup_seconds) / runs;
+    state.counters["wall_with_startup_s"] = total_seconds / runs;
     state.counters["processes"] = 11;
   }
 }

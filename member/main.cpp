@@ -1,29 +1,84 @@
-// swarm-member: one group member robot. See member_node.hpp.
+// swarm-member: group member robots, one by default. See member_node.hpp.
+//
+// `--index 1,2,3` runs several robots of one group in this process (swarm run
+// --agents-per-process): each is its own LockstepAgent with its own DDS writers and readers on the
+// process's one participant, stepping on its own thread, so the robots still talk only through
+// DDS and the run is the same, tick for tick; only the process count (and simple discovery's
+// participant count) falls. A kill or freeze fault acts on a whole process, so a robot named by
+// one must run alone.
+#include <cstdio>
+#include <exception>
 #include <iostream>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
 
 #include "swarm/comm/fault_injection.hpp"
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/comm/role.hpp"
 #include "swarm/member/member_node.hpp"
 
+namespace {
+
+using namespace swarm;
+
+// One robot's whole life on the shared participant: lockstep until the run stops, then its report.
+void run_member(comm::Participant& participant, const comm::RoleSetup& setup, int group, int index,
+                comm::FaultInjector& faults) {
+  const comm::AgentId self = setup.topology.robot(group, index);
+  comm::LockstepAgent agent(participant, setup.topology, setup.links, self);
+  member::MemberNode node(agent, setup, group, index);
+  comm::run_lockstep(agent, [&](const msgs::Clock& clock) {
+    faults.at_tick(clock.tick());
+    node.step(clock);
+    return false;
+  });
+  agent.send_report("member", node.report_json());
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  using namespace swarm;
   comm::RoleOptions options;
-  CLI::App app{"swarm-member: one group member robot of a swarm run"};
+  CLI::App app{"swarm-member: group member robots of a swarm run (one per --index)"};
   comm::add_role_flags(app, options, comm::RoleKind::Member);
   return comm::run_role(app, argc, argv, "member", [&]() -> int {
     const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Member, "member");
-    comm::Participant participant(setup.dds);
-    const comm::AgentId self = setup.topology.robot(options.group, options.index);
-    comm::LockstepAgent agent(participant, setup.topology, setup.links, self);
-    member::MemberNode node(agent, setup, options.group, options.index);
-    comm::FaultInjector faults(setup.world.scenario, setup.topology.name_of(self));
-    comm::run_lockstep(agent, [&](const msgs::Clock& clock) {
-      faults.at_tick(clock.tick());
-      node.step(clock);
-      return false;
-    });
-    agent.send_report("member", node.report_json());
-    comm::exit_after_work(setup.topology.name_of(self));
+    std::vector<std::unique_ptr<comm::FaultInjector>> faults;
+    std::string names;
+    for (const int index : options.indices) {
+      const std::string name = setup.topology.name_of(setup.topology.robot(options.group, index));
+      faults.push_back(std::make_unique<comm::FaultInjector>(setup.world.scenario, name));
+      if (faults.back()->any() && options.indices.size() > 1) {
+        throw config::ConfigError("a kill or freeze fault of " + name +
+                                  " stops its whole process: run it alone (--agents-per-process 1)");
+      }
+      names += (names.empty() ? "" : ",") + name;
+    }
+    comm::RoleSetup named = setup;
+    named.dds.name = options.indices.size() == 1 ? names : "members-" + std::to_string(options.group);
+    comm::Participant participant(named.dds);
+    if (options.indices.size() == 1) {
+      run_member(participant, setup, options.group, options.indices[0], *faults[0]);
+      comm::exit_after_work(names);
+    }
+    // A robot that fails ends the process at once with the role's exit code for a runtime
+    // failure (its peers cannot finish the run without it anyway).
+    std::vector<std::thread> robots;
+    for (std::size_t i = 0; i < options.indices.size(); ++i) {
+      robots.emplace_back([&, i] {
+        try {
+          run_member(participant, setup, options.group, options.indices[i], *faults[i]);
+        } catch (const std::exception& e) {
+          std::cerr << "swarm-member: " << setup.topology.name_of(setup.topology.robot(options.group, options.indices[i]))
+                    << ": " << e.what() << std::endl;
+          std::fflush(nullptr);
+          std::_Exit(1);
+        }
+      });
+    }
+    for (std::thread& t : robots) t.join();
+    comm::exit_after_work(names);
   });
 }

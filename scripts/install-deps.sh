@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config
   libfastrtps-dev libfastcdr-dev fastddsgen
+  fastdds-tools  # fast-discovery-server: the discovery server every `swarm run` starts
   libeigen3-dev libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   libprotobuf-dev protobuf-compiler
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libzstd-dev

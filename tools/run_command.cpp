@@ -1,5 +1,8 @@
 #include "run_command.hpp"
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -50,6 +53,37 @@ std::optional<std::pair<double, double>> parse_xy(const std::string& text) {
   return std::make_pair(*x, *y);
 }
 
+
+// A UDP port on 127.0.0.1 that nothing holds now (the kernel's choice), for the run's discovery
+// server. Another program could take it before the server binds it; the server then fails at
+// once and the run fails naming it.
+int free_loopback_udp_port() {
+  const int fd = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  addr.sin_port = 0;
+  socklen_t len = sizeof addr;
+  const bool ok = ::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0 &&
+                  ::getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len) == 0;
+  const int err = errno;
+  ::close(fd);
+  if (!ok) throw std::runtime_error(std::string("cannot find a free loopback UDP port: ") + std::strerror(err));
+  return ntohs(addr.sin_port);
+}
+
+// The executable `name` on $PATH (execv does not search it); "" when there is none.
+std::string find_on_path(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::stringstream dirs(path != nullptr ? path : "/usr/bin:/bin");
+  std::string dir;
+  while (std::getline(dirs, dir, ':')) {
+    const fs::path candidate = fs::path(dir.empty() ? "." : dir) / name;
+    if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
+  }
+  return "";
+}
 
 void write_text_file(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
@@ -188,7 +222,7 @@ PreparedRun prepare_run(const RunOptions& options) {
   const pid_t pid = ::getpid();
   if (options.domain_id && (*options.domain_id < 0 || *options.domain_id > kMaxDomainId)) {
     throw cfg::ConfigError("DDS domain id " + std::to_string(*options.domain_id) +
-                           " is out of range; Fast DDS accepts 0.." +
+                           " is out of range; swarm runs use 0.." +
                            std::to_string(kMaxDomainId));
   }
   l.domain_id = options.domain_id.value_or(domain_id_for(pid));
@@ -197,6 +231,31 @@ PreparedRun prepare_run(const RunOptions& options) {
                       .count();
   l.partition = partition_name(pid, static_cast<std::int64_t>(ns));
   l.progress_bar = ::isatty(STDOUT_FILENO) != 0;
+  l.dds_profile = cfg::dds_profile_path();
+  if (options.agents_per_process < 1) {
+    throw cfg::ConfigError("--agents-per-process must be at least 1 (got " +
+                           std::to_string(options.agents_per_process) + ")");
+  }
+  l.agents_per_process = options.agents_per_process;
+  if (l.agents_per_process > 1) {
+    for (const auto& f : used.faults()) {
+      if (f.agent().rfind("member-", 0) == 0 && (f.has_kill_at_tick() || f.has_freeze_at_tick())) {
+        throw cfg::ConfigError("a kill or freeze of " + f.agent() +
+                               " stops its whole process, and --agents-per-process " +
+                               std::to_string(l.agents_per_process) +
+                               " puts other robots in it: use --agents-per-process 1 with it");
+      }
+    }
+  }
+  if (options.discovery == RunOptions::Discovery::Server) {
+    l.discovery_server_exe = find_on_path("fast-discovery-server");
+    if (l.discovery_server_exe.empty()) {
+      throw cfg::ConfigError(
+          "fast-discovery-server is not on PATH: install Debian's fastdds-tools (scripts/install-deps.sh "
+          "does), or run with --discovery simple (up to ~60 processes)");
+    }
+    l.discovery_server = "127.0.0.1:" + std::to_string(free_loopback_udp_port());
+  }
   return run;
 }
 
@@ -204,7 +263,7 @@ std::vector<ProcessSpec> build_run_processes(const RunLaunch& l,
                                              const swarm::scenario::Scenario& s) {
   const fs::path bin(l.bin_dir);
   const fs::path logs = fs::path(l.run_dir) / "logs";
-  const std::vector<std::string> common = {"--scenario", l.scenario_path,
+  std::vector<std::string> common = {"--scenario", l.scenario_path,
                                            "--run-dir",  l.run_dir,
                                            "--domain",   std::to_string(l.domain_id),
                                            "--partition", l.partition};
@@ -219,6 +278,19 @@ std::vector<ProcessSpec> build_run_processes(const RunLaunch& l,
     return p;
   };
   std::vector<ProcessSpec> procs;
+  if (!l.discovery_server.empty()) {
+    // Loopback only: the profile's server participant binds 127.0.0.1 and nothing else.
+    const std::string port = l.discovery_server.substr(l.discovery_server.rfind(':') + 1);
+    ProcessSpec server;
+    server.name = "discovery";
+    server.argv = {l.discovery_server_exe, "-i", "0", "-l", "127.0.0.1", "-p", port,
+                   "-x", "swarm_discovery_server@" + l.dds_profile};
+    server.log_path = (logs / "discovery.log").string();
+    server.service = true;
+    procs.push_back(std::move(server));
+    common.push_back("--discovery-server");
+    common.push_back(l.discovery_server);
+  }
   procs.push_back(spec("sim", "swarm-sim", {}));
   ProcessSpec gcs = spec("gcs", "swarm-gcs", {});
   gcs.argv.push_back("--progress");
@@ -229,10 +301,18 @@ std::vector<ProcessSpec> build_run_processes(const RunLaunch& l,
     const std::string gs = std::to_string(g);
     procs.push_back(spec("leader-" + gs, "swarm-leader", {"--group", gs}));
   }
+  // Members in chunks of agents_per_process consecutive robots of one group: "member-1-2" alone,
+  // "members-1-1-3" for robots 1..3 of group 1.
+  const std::uint32_t chunk = static_cast<std::uint32_t>(std::max(1, l.agents_per_process));
   for (std::uint32_t g = 0; g < s.groups(); ++g) {
-    for (std::uint32_t i = 1; i < s.robots_per_group(); ++i) {
-      procs.push_back(spec("member-" + std::to_string(g) + "-" + std::to_string(i), "swarm-member",
-                           {"--group", std::to_string(g), "--index", std::to_string(i)}));
+    for (std::uint32_t first = 1; first < s.robots_per_group(); first += chunk) {
+      const std::uint32_t last = std::min(s.robots_per_group() - 1, first + chunk - 1);
+      std::string indices;
+      for (std::uint32_t i = first; i <= last; ++i) indices += (i == first ? "" : ",") + std::to_string(i);
+      const std::string gs = std::to_string(g);
+      const std::string name = first == last ? "member-" + gs + "-" + indices
+                                             : "members-" + gs + "-" + std::to_string(first) + "-" + std::to_string(last);
+      procs.push_back(spec(name, "swarm-member", {"--group", gs, "--index", indices}));
     }
   }
   for (const auto& f : s.faults()) {
@@ -249,7 +329,7 @@ std::string map_label(const std::string& map) {
   return stem.empty() ? "map" : stem;
 }
 
-int domain_id_for(pid_t pid) { return 1 + static_cast<int>(pid % 200); }
+int domain_id_for(pid_t pid) { return 1 + static_cast<int>(pid % kMaxDomainId); }
 
 std::string partition_name(pid_t pid, std::int64_t epoch_ns) {
   return "swarm-" + std::to_string(pid) + "-" + std::to_string(epoch_ns);

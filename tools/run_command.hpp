@@ -59,9 +59,16 @@ struct RunOptions {
   // Changes further scenario fields after the flags are applied and before validation (how
   // `swarm experiment` sets link delays, loss, caps or the map encoding); empty = none.
   std::function<void(swarm::scenario::Scenario&)> customize;
-  // The DDS domain of the run (0..232); unset = domain_id_for(getpid()). Concurrent runs of one
+  // The DDS domain of the run (0..kMaxDomainId); unset = domain_id_for(getpid()). Concurrent runs of one
   // `swarm` process each take their own.
   std::optional<int> domain_id;
+  // How the run's processes find each other: through a Fast DDS discovery server of the run's own
+  // (fast-discovery-server on a free loopback port, started first and stopped last), or by
+  // simple discovery (every participant announces itself to every other; up to ~60 processes).
+  enum class Discovery { Server, Simple };
+  Discovery discovery = Discovery::Server;
+  // Robots of one group per member process (--agents-per-process): 1 = a process per robot.
+  int agents_per_process = 1;
 };
 
 // Where and how the role processes of one run talk and write.
@@ -72,6 +79,10 @@ struct RunLaunch {
   int domain_id = 1;
   std::string partition;
   bool progress_bar = false;  // GCS: --progress bar (a terminal) or plain
+  std::string discovery_server;  // "127.0.0.1:PORT" of the run's discovery server; "" = simple
+  std::string discovery_server_exe;  // fast-discovery-server's path, when discovery_server is set
+  std::string dds_profile;           // the Fast DDS profile every process (and the server) loads
+  int agents_per_process = 1;        // member robots of one group per swarm-member process
 };
 
 struct PreparedRun {
@@ -96,11 +107,12 @@ void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o);
 [[nodiscard]] std::vector<ProcessSpec> build_run_processes(const RunLaunch& launch,
                                                            const swarm::scenario::Scenario& s);
 
-// 1 + pid % 200: a DDS domain per swarm process, so runs started by different users or shells
-// rarely share one (the partition separates them anyway).
+// 1 + pid % kMaxDomainId: a DDS domain per swarm process, so runs started by different users or
+// shells rarely share one (the partition separates them anyway).
 [[nodiscard]] int domain_id_for(pid_t pid);
-// The largest DDS domain id Fast DDS's default port mapping allows.
-inline constexpr int kMaxDomainId = 232;
+// The largest DDS domain id a run uses: with the profile's 500 ports per domain, every port of
+// domains 0..48 (up to 240 participants each) is below 32768, out of the kernel's ephemeral range.
+inline constexpr int kMaxDomainId = 48;
 // "swarm-<pid>-<epoch-ns>": unique per run.
 [[nodiscard]] std::string partition_name(pid_t pid, std::int64_t epoch_ns);
 // "runs/<YYYYmmdd-HHMMSS>-<map>-<mode>-s<seed>" (local time; a YAML map shows as its stem).

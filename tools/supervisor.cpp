@@ -326,6 +326,11 @@ class Supervisor {
                        [](const Child& c) { return c.running; });
   }
 
+  bool only_services_running() const {
+    return std::none_of(children_.begin(), children_.end(),
+                        [](const Child& c) { return c.running && !c.spec->service; });
+  }
+
   // Copies what a child wrote to its stdout to ours and to its log. Returns false at EOF.
   bool pump(Child& c) {
     char buf[65536];
@@ -352,7 +357,8 @@ class Supervisor {
       if (r < 0 && errno == EINTR) continue;
       c.running = false;
       if (r < 0) continue;  // someone else reaped it; nothing to report
-      const bool planned = c.spec->killed_on_purpose && WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
+      const bool planned = (c.spec->killed_on_purpose && WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) ||
+                           (c.spec->service && retiring_);
       const bool failed = !(WIFEXITED(status) && WEXITSTATUS(status) == 0) && !planned;
       if (failed && !stopping_) {
         result_.failed_name = c.spec->name;
@@ -384,6 +390,15 @@ class Supervisor {
         signal_running(SIGKILL);
         killed_ = true;
       }
+      if (!stopping_ && !retiring_ && only_services_running()) {
+        retiring_ = true;
+        retire_kill_at_ = now + grace_;
+        signal_running(SIGTERM);
+      }
+      if (retiring_ && !stopping_ && !killed_ && now >= retire_kill_at_) {
+        signal_running(SIGKILL);
+        killed_ = true;
+      }
       // Sleep until a signal, child output, the next deadline, or 250 ms (a safety net in case
       // a SIGCHLD was taken by someone else's handler).
       auto wait = std::chrono::milliseconds(250);
@@ -394,6 +409,7 @@ class Supervisor {
       };
       if (!stopping_ && deadline) until(*deadline);
       if (stopping_ && !killed_) until(kill_at_);
+      if (retiring_ && !killed_) until(retire_kill_at_);
 
       std::vector<pollfd> fds{{wake.fd(), POLLIN, 0}};
       std::vector<Child*> owners{nullptr};
@@ -434,7 +450,9 @@ class Supervisor {
   bool stopping_ = false;
   bool killed_ = false;
   bool echo_ok_ = true;
+  bool retiring_ = false;  // the work is done; the services are being stopped
   Clock::time_point kill_at_{};
+  Clock::time_point retire_kill_at_{};
 };
 
 }  // namespace

@@ -8,7 +8,8 @@
 // the supervisor copies, byte for byte, to its own stdout (a '\r' progress bar keeps working) and
 // to the log.
 //
-// Ending: all children exit 0 => ok. The first child that exits non-zero or by a signal is the
+// Ending: all children exit 0 => ok (services, see ProcessSpec::service, are stopped when the rest
+// are done). The first child that exits non-zero or by a signal is the
 // failure; every other child's process group gets SIGTERM, then SIGKILL after a grace period
 // (3 s), and every child is reaped before returning. SIGINT/SIGTERM to the supervisor's process do
 // the same (interrupted = true; a second signal skips the grace period), and so does the timeout
@@ -39,6 +40,10 @@ struct ProcessSpec {
   bool echo_stdout = false;       // also copy the child's stdout to ours
   // Fault injection: this child is meant to be killed by SIGKILL; that death does not fail the run.
   bool killed_on_purpose = false;
+  // A service for the others (the DDS discovery server): it never ends by itself. Once every
+  // other child has exited it gets SIGTERM (SIGKILL after the grace period), and how it ends then
+  // does not count; ending before that fails the run like any child.
+  bool service = false;
 };
 
 struct SupervisorResult {

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <iostream>
+#include <map>
 
 #include "commands.hpp"
 #include "darp_cli.hpp"
@@ -59,6 +60,20 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--timeout", timeout_s, "Wall-clock limit in seconds (0 = none)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
+  run_cmd
+      ->add_option("--discovery", run.discovery,
+                   "How the processes find each other: server (a Fast DDS discovery server of the run's own, "
+                   "on loopback) or simple (every process announces itself to every other; up to ~60 processes)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, RunOptions::Discovery>{{"server", RunOptions::Discovery::Server},
+                                                        {"simple", RunOptions::Discovery::Simple}}))
+      ->capture_default_str();
+  run_cmd
+      ->add_option("--agents-per-process", run.agents_per_process,
+                   "Member robots of one group per process (each still has its own DDS endpoints); 1 = a process "
+                   "per robot")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
 
   RenderOptions render;
   std::uint32_t tick = 0;

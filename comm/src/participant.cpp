@@ -1,5 +1,7 @@
 #include "swarm/comm/participant.hpp"
 
+#include "swarm/config/scenario.hpp"
+
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -17,20 +19,34 @@
 #include <fastdds/dds/subscriber/qos/SubscriberQos.hpp>
 #include <fastdds/dds/topic/Topic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
+#include <fastdds/rtps/attributes/ServerAttributes.h>
 
 namespace swarm::comm {
 
 using namespace eprosima::fastdds::dds;
 using eprosima::fastrtps::types::ReturnCode_t;
 
-std::string default_profile_path() {
-  if (const char* p = std::getenv("SWARM_DDS_PROFILE"); p != nullptr && *p != '\0') return p;
-  const char* data = std::getenv("SWARM_DATA_DIR");
-  const std::string root = (data != nullptr && *data != '\0') ? data : SWARM_SOURCE_DIR;
-  return root + "/deploy/fastdds_loopback.xml";
+std::string default_profile_path() { return config::dds_profile_path(); }
+
+std::string default_discovery_server() {
+  const char* s = std::getenv("SWARM_DISCOVERY_SERVER");
+  return s != nullptr ? s : "";
 }
 
 namespace {
+
+// Makes `qos` a client of the discovery server at "HOST:PORT" (server id 0, the GUID prefix that
+// fast-discovery-server -i 0 uses). Everything else (transports, leases) stays as the profile says.
+void use_discovery_server(DomainParticipantQos& qos, const std::string& server) {
+  eprosima::fastdds::rtps::RemoteServerList_t servers;
+  if (!eprosima::fastdds::rtps::load_environment_server_info(server, servers) || servers.empty()) {
+    throw std::runtime_error("bad discovery server address '" + server + "' (expected HOST:PORT, e.g. 127.0.0.1:11811)");
+  }
+  auto& discovery = qos.wire_protocol().builtin.discovery_config;
+  discovery.discoveryProtocol = eprosima::fastrtps::rtps::DiscoveryProtocol_t::CLIENT;
+  discovery.m_DiscoveryServers = servers;
+  qos.wire_protocol().builtin.initialPeersList.clear();
+}
 
 const char* writer_profile(EndpointKind kind) {
   return kind == EndpointKind::Heartbeat ? "swarm_heartbeat_writer" : "swarm_writer";
@@ -135,6 +151,9 @@ Participant::Participant(const DdsOptions& options) : options_(options) {
     throw std::runtime_error("profile " + profile + " has no participant profile named swarm_participant");
   }
   qos.name(options.name);
+  if (options.participant_id >= 0) qos.wire_protocol().participant_id = options.participant_id;
+  const std::string server = options.discovery_server.empty() ? default_discovery_server() : options.discovery_server;
+  if (!server.empty()) use_discovery_server(qos, server);
   participant_ = factory->create_participant(options.domain, qos);
   if (participant_ == nullptr) {
     throw std::runtime_error("cannot create a DDS participant in domain " + std::to_string(options.domain));

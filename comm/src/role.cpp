@@ -9,6 +9,7 @@
 #include <cstring>
 #include <cstdlib>
 #include <filesystem>
+#include <set>
 #include <iostream>
 #include <thread>
 
@@ -20,11 +21,17 @@ void add_role_flags(CLI::App& app, RoleOptions& o, RoleKind kind) {
   app.add_option("--domain", o.domain, "DDS domain id of the run")->check(CLI::Range(0, 232));
   app.add_option("--partition", o.partition, "DDS partition of the run");
   app.add_option("--profile", o.profile, "Fast DDS XML profile (default: deploy/fastdds_loopback.xml)");
+  app.add_option("--discovery-server", o.discovery_server,
+                 "HOST:PORT of a Fast DDS discovery server (default: $SWARM_DISCOVERY_SERVER, else simple discovery)");
   if (kind == RoleKind::Leader || kind == RoleKind::Member) {
     app.add_option("--group", o.group, "group id, from 0")->required();
   }
   if (kind == RoleKind::Member) {
-    app.add_option("--index", o.index, "robot index inside the group, from 1 (0 is the leader)")->required();
+    app.add_option("--index", o.indices,
+                   "robot index inside the group, from 1 (0 is the leader); several (1,2,3) run that many robot "
+                   "agents in this process, each with its own DDS endpoints")
+        ->required()
+        ->delimiter(',');
   }
   if (kind == RoleKind::Gcs) {
     app.add_option("--progress", o.progress, "progress display")->check(CLI::IsMember({"bar", "plain", "none"}));
@@ -67,21 +74,39 @@ RoleSetup load_role(const RoleOptions& o, RoleKind kind, const std::string& name
     throw config::ConfigError("--group " + std::to_string(o.group) + " is outside the scenario's groups 0.." +
                               std::to_string(setup.topology.groups() - 1));
   }
-  if (kind == RoleKind::Member && (o.index < 1 || o.index >= setup.topology.robots_per_group())) {
-    throw config::ConfigError("--index " + std::to_string(o.index) + " is outside 1.." +
-                              std::to_string(setup.topology.robots_per_group() - 1) +
-                              " (index 0 is the leader, run by swarm-leader)");
+  for (const int index : o.indices) {
+    if (kind == RoleKind::Member && (index < 1 || index >= setup.topology.robots_per_group())) {
+      throw config::ConfigError("--index " + std::to_string(index) + " is outside 1.." +
+                                std::to_string(setup.topology.robots_per_group() - 1) +
+                                " (index 0 is the leader, run by swarm-leader)");
+    }
+  }
+  if (kind == RoleKind::Member && std::set<int>(o.indices.begin(), o.indices.end()).size() != o.indices.size()) {
+    throw config::ConfigError("--index names one robot twice");
   }
   setup.links = link_table(s, setup.topology);
   setup.dds.domain = o.domain;
   setup.dds.partition = o.partition;
   setup.dds.name = name;
   setup.dds.profile_path = o.profile;
+  setup.dds.discovery_server = o.discovery_server;
+  // The agent id (a member process: its first robot's) as the participant id: unique in the run.
+  switch (kind) {
+    case RoleKind::Sim: setup.dds.participant_id = setup.topology.sim(); break;
+    case RoleKind::Gcs: setup.dds.participant_id = setup.topology.gcs(); break;
+    case RoleKind::Leader: setup.dds.participant_id = setup.topology.leader(o.group); break;
+    case RoleKind::Member: setup.dds.participant_id = setup.topology.robot(o.group, o.indices.front()); break;
+  }
   return setup;
 }
 
 void exit_after_work(const std::string& agent) {
   if (const char* a = std::getenv("SWARM_ABORT_AFTER_WORK"); a != nullptr && agent == a) std::abort();
+  // A reliable reader acknowledges on its writer's next heartbeat (every 50 ms, the profile's
+  // heartbeatPeriod). Leaving at once would leave the writer of what this process read last (the
+  // simulator's report, read by the GCS) waiting out its whole acknowledgement timeout: 10 s
+  // of every run's end, measured. A few heartbeat periods let the acknowledgements go out.
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
   std::cout.flush();
   std::cerr.flush();
   std::fflush(nullptr);

@@ -115,6 +115,12 @@ std::string data_dir() {
   return SWARM_SOURCE_DIR;
 }
 
+std::string dds_profile_path() {
+  const char* env = std::getenv("SWARM_DDS_PROFILE");
+  if (env != nullptr && *env != '\0') return env;
+  return data_dir() + "/deploy/fastdds_loopback.xml";
+}
+
 std::vector<std::string> builtin_map_names() {
   return {"open", "maze1", "maze2", "small", "clutter", "empty", "warehouse-5x8", "terminal", "rectangle"};
 }

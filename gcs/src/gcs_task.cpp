@@ -2,6 +2,7 @@
 
 #include "swarm/comm/convert.hpp"
 #include "swarm/config/scenario.hpp"
+#include "swarm/config/task_config.hpp"
 #include "swarm/gcs/collect_task.hpp"
 #include "swarm/gcs/cover_task.hpp"
 #include "swarm/gcs/explore_task.hpp"
@@ -57,7 +58,7 @@ std::unique_ptr<GcsTask> make_gcs_task(const swarm::scenario::Phase& phase, cons
     case config::TaskKind::Cover:
       return std::make_unique<CoverGcsTask>(phase.cover(), index, !explored);
     case config::TaskKind::Mapf:
-      return std::make_unique<MapfGcsTask>(phase.mapf(), index, !explored);
+      return std::make_unique<MapfGcsTask>(config::resolved_mapf(phase.mapf(), setup.world.scenario), index, !explored);
     case config::TaskKind::Collect:
       return std::make_unique<CollectGcsTask>(phase.collect(), index);
     default:

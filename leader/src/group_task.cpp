@@ -1,6 +1,7 @@
 #include "swarm/leader/group_task.hpp"
 
 #include "swarm/config/scenario.hpp"
+#include "swarm/config/task_config.hpp"
 #include "swarm/leader/cover_task.hpp"
 #include "swarm/leader/collect_task.hpp"
 #include "swarm/leader/explore_task.hpp"
@@ -17,7 +18,7 @@ std::unique_ptr<GroupTask> make_group_task(const swarm::scenario::Phase& phase, 
     case config::TaskKind::Cover:
       return std::make_unique<CoverGroupTask>(phase.cover(), setup, group);
     case config::TaskKind::Mapf:
-      return std::make_unique<MapfGroupTask>(phase.mapf(), group);
+      return std::make_unique<MapfGroupTask>(config::resolved_mapf(phase.mapf(), s), group);
     case config::TaskKind::Collect: {
       // The robots are given the map (the map file) when no exploration comes before.
       bool explored = false;

@@ -34,7 +34,7 @@
 namespace swarm::comm {
 namespace {
 
-constexpr int kDomain = 147;
+constexpr int kDomain = 47;
 // Agent ids of Topology(1, 2): robot 0 leads group 0, robot 1 is its member.
 constexpr AgentId kLeader = 0;
 constexpr AgentId kMember = 1;

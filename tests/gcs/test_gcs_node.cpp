@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <vector>
 
@@ -110,6 +111,29 @@ TEST(GcsNode, ARunWithoutTheSimulatorsReportIsAnErrorNamingIt) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("no end-of-run report from the simulator (sim)"), std::string::npos)
         << e.what();
+  }
+}
+
+// The simulator's report arrived but cannot be read: an error naming the process (and, for a
+// missing key, the key), never a metrics.json with zeros in it.
+TEST(GcsNode, AnUnreadableSimulatorReportIsAnErrorNamingIt) {
+  auto setup = swarm::test::setup_from_text("map: 'small' groups: 1 robots_per_group: 1 max_ticks: 3");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"{not json", "the simulator's (sim) report is not valid JSON"},
+      {"{}", "last_tick"},  // the first required key, named
+  };
+  for (const auto& [json, expected] : cases) {
+    swarm::test::FakeSwarm s(setup);
+    s.start();
+    while (s.step()) {
+    }
+    try {
+      s.finish(/*sim_reports=*/true, json);
+      ADD_FAILURE() << "finish() accepted the simulator report " << json;
+    } catch (const std::exception& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(std::filesystem::exists(s.run_dir() + "/metrics.json")) << json;
   }
 }
 

@@ -43,6 +43,18 @@ TEST(Tasks, CoverWithAMemberKilledMidwayStillCoversEverything) {
   EXPECT_EQ(divisions[1]["why"], "member lost");
 }
 
+// Item 6 of the coverage issue: link delay and loss slow the task but never break it.
+TEST(Tasks, CoverUnderLinkDelayJitterAndLossStillCoversEverything) {
+  const auto m = run_task("cover_links", "small.pbtxt",
+                          "links { member_leader { delay_ticks: 3 jitter_ticks: 2 loss: 0.1 } "
+                          "leader_gcs { delay_ticks: 2 loss: 0.1 } sim_robot { loss: 0.05 } }",
+                          "--mission cover --groups 2 --robots-per-group 2 --max-ticks 3000");
+  const auto& cover = phase_named(m, "cover");
+  EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
+  // Loss really happened (retransmitted reliable messages are counted as lost transmissions).
+  EXPECT_GT(m["traffic"]["by_link"]["member_leader"]["lost_transmissions"].get<double>(), 0) << m["traffic"];
+}
+
 TEST(Tasks, CoverInGroupKOrderReachesEveryReachableCell) {
   const auto m = run_task("cover_group_k", "small.pbtxt", "mission { phase { cover { order: ORDER_GROUP_K } } }",
                           "--max-ticks 3000");

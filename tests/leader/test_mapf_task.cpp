@@ -45,13 +45,14 @@ TEST(MapfTask, WithMemberLeaderDelayAndJitterStillNoConflict) {
 
 // Nine robots: the dependency graph makes robots wait for each other, and each wait costs the
 // progress -> release round trip, so driven by the graph the plan takes longer; driven by its
-// timing from one start tick it takes exactly as long as planned, still without a conflict.
+// timing from one start tick it takes exactly as long as planned, still without a conflict. With
+// exact links and no fault the default (AUTO) drives by timing.
 TEST(MapfTask, TimedExecutionKeepsThePlansMakespanExactly) {
   const std::string team = "map: 'small' groups: 3 robots_per_group: 3 max_ticks: 600 ";
-  swarm::test::FakeSwarm adg(swarm::test::setup_from_text(team + "mission { phase { mapf {} } }"));
+  swarm::test::FakeSwarm adg(
+      swarm::test::setup_from_text(team + "mission { phase { mapf { execution: MAPF_EXECUTE_ADG } } }"));
   const auto by_graph = mapf_phase(adg.run_to_end());
-  swarm::test::FakeSwarm timed(
-      swarm::test::setup_from_text(team + "mission { phase { mapf { execution: MAPF_EXECUTE_TIMED } } }"));
+  swarm::test::FakeSwarm timed(swarm::test::setup_from_text(team + "mission { phase { mapf {} } }"));
   const auto m = timed.run_to_end();
   ASSERT_TRUE(m["complete"].get<bool>());
   const auto& p = mapf_phase(m);
@@ -62,8 +63,11 @@ TEST(MapfTask, TimedExecutionKeepsThePlansMakespanExactly) {
   EXPECT_EQ(by_graph["task"]["conflicts"], 0);
 }
 
+// An unscheduled loss (the scenario names no fault, so AUTO would drive by timing, which does
+// not stop for a dead robot): driven by the graph, the others are planned again.
 TEST(MapfTask, AMemberLostMidwayTheOthersArePlannedAgain) {
-  auto setup = swarm::test::setup_from_text(std::string(kTwoGroups) + "mission { phase { mapf {} } }");
+  auto setup = swarm::test::setup_from_text(std::string(kTwoGroups) +
+                                            "mission { phase { mapf { execution: MAPF_EXECUTE_ADG } } }");
   swarm::test::FakeSwarm s(setup);
   const auto m = s.run_to_end([&](std::uint32_t tick) {
     if (tick == 20) s.disconnect(setup.topology.robot(1, 2));

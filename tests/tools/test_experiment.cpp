@@ -235,6 +235,23 @@ TEST(ReportCommand, BadInputExits2SayingWhatIsAccepted) {
   EXPECT_TRUE(contains(err.str(), "damaged")) << err.str();
 }
 
+// A run written by another swarm (another metrics.json schema) is refused by name, not read as
+// zeros.
+TEST(ReportCommand, RefusesARunOfAnotherMetricsSchemaVersion) {
+  TempDir dir;
+  const std::string exp = dir.file("exp");
+  (void)fake_explore(exp);
+  const std::string run = exp + "/runs/open-group-frontier-s1";
+  auto m = nlohmann::json::parse(slurp(run + "/metrics.json"));
+  m["schema_version"] = 99;
+  spit(run + "/metrics.json", m.dump());
+  std::ostringstream out, err;
+  ReportOptions r;
+  r.dirs = {run};
+  EXPECT_EQ(report_command(r, out, err), 2);
+  EXPECT_TRUE(contains(err.str(), "schema_version 99, but this swarm reads version")) << err.str();
+}
+
 TEST(ExperimentCommand, BadInputExits2SayingWhatIsAccepted) {
   TempDir dir;
   auto run = [&](ExperimentOptions o) {

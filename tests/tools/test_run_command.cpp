@@ -186,8 +186,8 @@ TEST(RunProcesses, NamesArgumentsAndLogs) {
 
 TEST(RunProcesses, DomainPartitionAndDefaultDir) {
   EXPECT_EQ(domain_id_for(0), 1);
-  EXPECT_EQ(domain_id_for(199), 200);
-  EXPECT_EQ(domain_id_for(200), 1);
+  EXPECT_EQ(domain_id_for(47), 48);
+  EXPECT_EQ(domain_id_for(48), 1);
   EXPECT_EQ(partition_name(77, 123456789), "swarm-77-123456789");
   swarm::scenario::Scenario s;
   s.set_map("/some/where/office.yaml");

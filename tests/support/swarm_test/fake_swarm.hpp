@@ -21,6 +21,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <optional>
 #include <memory>
 #include <set>
 #include <stdexcept>
@@ -262,9 +263,9 @@ class FakeSwarm {
     return nlohmann::json::parse(in);
   }
 
-  // The end of a run: every living agent reports (the simulator unless told not to), the GCS
-  // writes metrics.json and run.pb.
-  void finish(bool sim_reports = true) {
+  // The end of a run: every living agent reports (the simulator unless told not to, and with
+  // `sim_json` instead of its own numbers when given), the GCS writes metrics.json and run.pb.
+  void finish(bool sim_reports = true, const std::optional<std::string>& sim_json = std::nullopt) {
     for (std::size_t a = 0; a < agents_.size(); ++a) {
       const comm::AgentId id = static_cast<comm::AgentId>(a);
       if (!agents_[a] || !alive_[a] || id == topology().gcs()) continue;
@@ -276,7 +277,7 @@ class FakeSwarm {
         agents_[a]->send_report("member", members_.at(id)->report_json());
       }
     }
-    if (sim_reports) clock_->send_report("sim", sim_->report_json());
+    if (sim_reports) clock_->send_report("sim", sim_json ? *sim_json : sim_->report_json());
     if (gcs_) gcs_->finish(std::chrono::milliseconds(sim_reports ? 15000 : 100));
   }
 

@@ -21,6 +21,8 @@ class FaultInjector {
   FaultInjector(const swarm::scenario::Scenario& scenario, const std::string& agent);
   // Crashes or freezes when a fault is due at `tick`; returns after a freeze.
   void at_tick(std::uint32_t tick);
+  // Whether any fault names this agent (both act on the whole process).
+  bool any() const { return kill_at_.has_value() || freeze_at_.has_value(); }
 
  private:
   std::string agent_;

@@ -32,7 +32,20 @@ struct DdsOptions {
   std::string name = "swarm";
   // Fast DDS XML profile file; empty = $SWARM_DDS_PROFILE, else DATA/deploy/fastdds_loopback.xml.
   std::string profile_path;
+  // "HOST:PORT" of a Fast DDS Discovery Server (fast-discovery-server, id 0): the participant is
+  // its CLIENT instead of finding its peers by simple discovery. Empty = $SWARM_DISCOVERY_SERVER,
+  // else simple discovery. Why: simple discovery announces every participant to every other
+  // (traffic grows with the square of the process count) and the loopback profile probes only 64
+  // participant ids, so runs of more than ~60 processes never finish discovery; a server tells
+  // each client only about the participants it shares a topic with.
+  std::string discovery_server;
+  // The RTPS participant id, which fixes the participant's ports (see the profile); -1 = Fast
+  // DDS picks a free one (fine for a few participants; roles use their agent id).
+  int participant_id = -1;
 };
+
+// The discovery server a process uses when none is given (see DdsOptions::discovery_server).
+std::string default_discovery_server();
 
 // The profile file a process uses when none is given (see DdsOptions::profile_path).
 std::string default_profile_path();

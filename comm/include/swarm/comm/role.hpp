@@ -15,6 +15,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -33,8 +34,9 @@ struct RoleOptions {
   int domain = 0;
   std::string partition = "swarm";
   std::string profile;         // Fast DDS XML profile; empty = default_profile_path()
+  std::string discovery_server;  // HOST:PORT; empty = default_discovery_server()
   int group = -1;              // leader, member
-  int index = -1;              // member (1..robots_per_group-1)
+  std::vector<int> indices;    // member: the robots this process runs (1..robots_per_group-1)
   std::string progress = "plain";  // gcs: bar | plain | none
 };
 

@@ -96,6 +96,10 @@ void set_mission(swarm::scenario::Scenario& scenario, const std::vector<std::str
 // tree this library was built from.
 [[nodiscard]] std::string data_dir();
 
+// The Fast DDS XML profile every process of a run loads (and the run's discovery server):
+// $SWARM_DDS_PROFILE if set and non-empty, else data_dir()/deploy/fastdds_loopback.xml.
+[[nodiscard]] std::string dds_profile_path();
+
 // The built-in maps, in maps/ of data_dir(): open, maze1, maze2, small, clutter, empty (Group-k's
 // cleaning rooms), warehouse-5x8 (the MAPF paper's world, one-cell aisles), terminal, rectangle
 // (the DARP comparisons' complex and near-empty maps).

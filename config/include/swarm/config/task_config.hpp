@@ -19,6 +19,14 @@ namespace swarm::config {
 [[nodiscard]] planner::CoverRoutesConfig cover_routes_config(const swarm::scenario::Cover& cover, std::uint64_t seed,
                                                              std::uint64_t salt);
 
+// A mapf phase's settings with `execution: MAPF_EXECUTE_AUTO` made concrete for this scenario:
+// MAPF_EXECUTE_TIMED when every link class has no delay, jitter, loss or bandwidth cap, the scenario schedules no
+// fault (kill, cut or freeze) and the run is in lockstep (the plan's own timing is then exactly executable, so the executed
+// makespan equals the planned one); MAPF_EXECUTE_ADG otherwise (a wait costs a message round
+// trip, but no delay can cause a conflict). The GCS and every leader resolve it alike.
+[[nodiscard]] swarm::scenario::Mapf resolved_mapf(const swarm::scenario::Mapf& mapf,
+                                                  const swarm::scenario::Scenario& scenario);
+
 // The MAPF solver of a mapf phase (ECBS with its w by default).
 [[nodiscard]] planner::mapf::SolverConfig mapf_solver_config(const swarm::scenario::Mapf& mapf, std::uint64_t seed);
 
