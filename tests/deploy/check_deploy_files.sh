@@ -40,15 +40,17 @@ done
 
 # 3. The container profile keeps the loopback one's discovery timing and every writer/reader
 #    profile, verbatim.
-same_part() {  # same_part SED_RANGE WHAT
-  if ! diff <(sed -n "$1p" "$deploy/fastdds_loopback.xml") \
-    <(sed -n "$1p" "$deploy/fastdds_container.xml") >"$work/part.diff"; then
+same_part() {  # same_part SED_SCRIPT WHAT (run with sed -n)
+  if ! diff <(sed -n "$1" "$deploy/fastdds_loopback.xml") \
+    <(sed -n "$1" "$deploy/fastdds_container.xml") >"$work/part.diff"; then
     fail "deploy/fastdds_container.xml's $2 differs from deploy/fastdds_loopback.xml's (change both):"
     cat "$work/part.diff" >&2
   fi
 }
-same_part '/<discovery_config>/,/<\/discovery_config>/' "discovery timing"
-same_part '/<data_writer/,$' "writer/reader QoS profiles"
+# The first discovery_config: the robots' participant (the loopback file's second one is its
+# discovery server's, which containers do not run).
+same_part '/<discovery_config>/,/<\/discovery_config>/{p;/<\/discovery_config>/q;}' "discovery timing"
+same_part '/<data_writer/,$p' "writer/reader QoS profiles"
 grep -q '<type>SHM</type>' "$deploy/fastdds_container.xml" && fail "fastdds_container.xml enables the SHM transport"
 grep -q '<useBuiltinTransports>false</useBuiltinTransports>' "$deploy/fastdds_container.xml" ||
   fail "fastdds_container.xml leaves the builtin transports (SHM) on"
