@@ -121,7 +121,8 @@ planner::Cell cell_of_point(const planner::OccupancyGrid& map, double x, double 
 CollectWorld collect_world(const swarm::scenario::Collect& c, const planner::OccupancyGrid& map,
                            const std::vector<planner::Cell>& robot_cells, std::uint64_t seed, const std::string& field) {
   CollectWorld w;
-  const auto reach = planner::reachable_mask(map, {robot_cells.front()}, planner::MotionModel::eight());
+  // Reachable by any robot from its start (the live task gives each object to some robot).
+  const auto reach = planner::reachable_mask(map, robot_cells, planner::MotionModel::eight());
   std::vector<std::uint8_t> taken(map.size(), 0);
   for (const planner::Cell& r : robot_cells) taken[map.index(r)] = 1;
   const auto check = [&](planner::Cell cell, const std::string& which) {

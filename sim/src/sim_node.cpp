@@ -1,5 +1,7 @@
 #include "swarm/sim/sim_node.hpp"
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "swarm/comm/convert.hpp"
@@ -59,6 +61,7 @@ void SimNode::start_phase(std::uint32_t index, std::uint32_t tick) {
   log.start_tick = tick;
   log.counts_at_start = world_.counts();
   log.events_at_start = world_.events();
+  log.diagonals_at_start = world_.diagonal_moves();
   if (task == config::TaskKind::Cover) {
     world_.reset_coverage();
     log.curve.emplace_back(tick, world_.covered_fraction());
@@ -94,10 +97,18 @@ void SimNode::fill_judge(PhaseLog& p) const {
     nlohmann::json curve = nlohmann::json::array();
     for (const auto& [tick, n] : p.curve) curve.push_back({tick, n});
     const auto& c = world_.collect();
+    // What the robots drove in the phase, in the tour planner's terms: length in cells (straight
+    // 1, diagonal sqrt 2) and rotation in radians (eighths of a turn x pi / 4).
+    const std::uint64_t diagonals = world_.diagonal_moves() - p.diagonals_at_start;
+    const double length = static_cast<double>(p.motion.total.moves - diagonals) +
+                          static_cast<double>(diagonals) * planner::MotionModel::kDiagonalCost;
+    const double rotation = static_cast<double>(p.motion.total.turn_eighths) * std::acos(-1.0) / 4.0;
     p.judge = {{"objects", c.objects},
                {"delivered", c.delivered},
                {"picked", c.picked},
                {"wrong_drops", c.wrong_drops},
+               {"driven_length_cells", length},
+               {"driven_rotation_rad", rotation},
                {"makespan_ticks", p.full_tick ? nlohmann::json(*p.full_tick - p.start_tick) : nlohmann::json(nullptr)},
                {"delivered_curve", curve}};
   } else if (p.task == "mapf") {

@@ -183,6 +183,7 @@ void World::move() {
     if (waited) ++c.waits;
     if (res.moved[r]) {
       ++c.moves;
+      if (robots_[r].x != res.next[r].x && robots_[r].y != res.next[r].y) ++diagonal_moves_;
       const int h = *planner::step_heading(robots_[r], res.next[r]);
       if (heading_[r] >= 0) c.turn_eighths += static_cast<std::uint64_t>(planner::turn_eighths(heading_[r], h));
       heading_[r] = h;

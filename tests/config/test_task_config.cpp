@@ -76,6 +76,13 @@ TEST(CollectWorld, BadObjectsAndDestinationsAreNamed) {
               (void)collect_world(phase_from("collect { destinations { x: 9 y: 9 } }").collect(), map, {{0, 0}}, 1, "f");
             }),
             "f.destinations[0]: outside the map");
+  // A free cell walled in on four sides (no diagonal cuts a corner): no robot can reach it.
+  const auto pocket = swarm::test::grid_from({"..#...", ".#.#..", "..#..."});
+  EXPECT_EQ(error_of([&] {
+              (void)collect_world(phase_from("collect { objects { at { x: 0.5 y: 0.3 } type: 0 } destinations { x: 0.1 y: 0.1 } }").collect(),
+                                  pocket, {{0, 0}}, 1, "f");
+            }),
+            "f.objects[0]: no robot can reach it");
 }
 
 }  // namespace

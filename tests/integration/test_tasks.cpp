@@ -2,9 +2,11 @@
 // through `swarm run`. The simulator judges from ground truth (metrics.json phases[].task / motion).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "run_swarm.hpp"
+#include "swarm/record/record.hpp"
 #include "swarm_test/metrics_fixture.hpp"
 
 namespace swarm::test {
@@ -32,6 +34,31 @@ TEST(Tasks, ExploreThenCoverReachesEveryReachableCell) {
   // The explored map is not the truth (a few cells seen free are walls): routes through them end
   // in wall stops, counted, and the leaders cover round them.
   EXPECT_EQ(cover["task"]["map_given"], false);
+
+  // The run record names the phase of every frame: each phase starts once, in order, at the tick
+  // metrics.json gives, and every pose frame carries the phase its moves were made in (the poses
+  // of a phase's start tick are still the previous phase's: the robots moved before it began).
+  const auto frames = record::read_record(std::string(SWARM_TEST_RUNS_DIR) + "/cover/run/run.pb");
+  std::vector<std::pair<std::uint32_t, std::string>> starts;  // tick, task
+  for (const auto& f : frames) {
+    if (f.has_phase() && !f.phase().ended()) {
+      EXPECT_EQ(f.phase().phase(), starts.size());
+      starts.emplace_back(f.phase().tick(), f.phase().task());
+    }
+  }
+  ASSERT_EQ(starts.size(), 2u);
+  EXPECT_EQ(starts[0], std::make_pair(0u, std::string("explore")));
+  EXPECT_EQ(starts[1].second, "cover");
+  EXPECT_EQ(starts[1].first, cover["start_tick"].get<std::uint32_t>());
+  std::size_t poses[2] = {0, 0};
+  for (const auto& f : frames) {
+    if (!f.has_poses()) continue;
+    const std::uint32_t expected = f.poses().tick() <= starts[1].first ? 0u : 1u;
+    EXPECT_EQ(f.poses().phase(), expected) << "poses at tick " << f.poses().tick();
+    ++poses[expected];
+  }
+  EXPECT_GT(poses[0], 0u);
+  EXPECT_GT(poses[1], 0u);
 }
 
 TEST(Tasks, CoverWithAMemberKilledMidwayStillCoversEverything) {
@@ -67,6 +94,15 @@ TEST(Tasks, CollectDeliversEveryObject) {
   EXPECT_EQ(p["task"]["objects"], 15);
   EXPECT_EQ(p["task"]["delivered"], 15);
   EXPECT_EQ(p["task"]["wrong_drops"], 0);
+  // What was driven, in the tour planner's measures: between 1 and sqrt 2 cells per move, and the
+  // rotation the simulator counted in eighths of a turn, in radians.
+  const double moves = p["motion"]["moves"].get<double>();
+  const double length = p["task"]["driven_length_cells"].get<double>();
+  EXPECT_GT(moves, 0);
+  EXPECT_GE(length, moves);
+  EXPECT_LE(length, moves * std::sqrt(2.0) + 1e-9);
+  EXPECT_NEAR(p["task"]["driven_rotation_rad"].get<double>(),
+              p["motion"]["turn_eighths"].get<double>() * std::acos(-1.0) / 4.0, 1e-9);
 }
 
 TEST(Tasks, MapfWithoutDelayKeepsThePlansTimingWithNoConflict) {

@@ -143,6 +143,13 @@ TEST(MapfCommand, BadInputExitsTwoNamingTheFileOrFlag) {
   x.scen = f.tmp.file("other.scen");
   x.agents = 1;
   bad(x, "other.scen:2: the scenario is for map \"other.map\"");
+  // A goal outside the map, and a scenario written for a map of another size.
+  swarm::test::spit(f.tmp.file("out.scen"), "version 1\n0\ttiny.map\t5\t3\t0\t0\t9\t2\t6\n");
+  x.scen = f.tmp.file("out.scen");
+  bad(x, "out.scen:2: goal (9, 2) is outside the 5 x 3 map");
+  swarm::test::spit(f.tmp.file("size.scen"), "version 1\n0\ttiny.map\t8\t8\t0\t0\t4\t2\t6\n");
+  x.scen = f.tmp.file("size.scen");
+  bad(x, "size.scen:2: the scenario's map is 8 x 8, the map is 5 x 3");
   x = o;
   x.scen.clear();
   x.agents.reset();

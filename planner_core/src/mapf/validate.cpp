@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "swarm/planner/motion.hpp"
+
 namespace swarm::planner::mapf {
 namespace {
 
@@ -108,12 +110,10 @@ ValidationReport validate(const Instance& in, const std::vector<Path>& paths) {
   std::size_t horizon = 0;
   for (int e = 0; e < total; ++e) horizon = std::max(horizon, path_of(e).size());
 
-  // Per time step: the occupants of each cell as linked lists (head per cell, next per entity).
-  const std::size_t cells = in.map.size();
-  std::vector<int> head_prev(cells, -1), head_now(cells, -1), next_prev(total, -1), next_now(total, -1);
-  std::vector<int> touched_prev, touched_now;
-  std::vector<Cell> pos_prev(total), pos_now(total);
-  std::vector<char> here_prev(total, 0), here_now(total, 0);
+  // Per time step, the conflicts among the entities present (a vanished agent is gone) come from
+  // the motion model's one definition (planner::find_step_conflicts, which the simulator uses to
+  // resolve moves), turned into pairs as CBS needs them: a cell held by k robots is k(k-1)/2
+  // vertex conflicts here, one event in the simulator's count.
   const auto add_conflict = [&](ConflictKind kind, int e, int f, Cell cell, Cell other, int t) {
     if (e >= n && f >= n) return;  // two reserved robots: not ours to judge
     if (f < e) {
@@ -122,41 +122,34 @@ ValidationReport validate(const Instance& in, const std::vector<Path>& paths) {
     }
     r.conflicts.push_back({kind, name(e), name(f), cell, other, t});
   };
+  std::vector<int> present;  // entity ids present at t (and so at t - 1: agents only vanish)
+  std::vector<Cell> from, to;
   for (int t = 0; t < static_cast<int>(horizon); ++t) {
-    for (int idx : touched_now) head_now[static_cast<std::size_t>(idx)] = -1;
-    touched_now.clear();
+    present.clear();
+    from.clear();
+    to.clear();
     for (int e = 0; e < total; ++e) {
-      Cell c;
-      here_now[e] = position_at(path_of(e), t, vanish && e < n, c) && in.map.in_bounds(c);
-      if (!here_now[e]) continue;
-      pos_now[e] = c;
-      const int idx = in.map.index(c);
-      if (head_now[static_cast<std::size_t>(idx)] == -1) touched_now.push_back(idx);
-      next_now[e] = head_now[static_cast<std::size_t>(idx)];
-      head_now[static_cast<std::size_t>(idx)] = e;
+      Cell now, before;
+      if (!position_at(path_of(e), t, vanish && e < n, now) || !in.map.in_bounds(now)) continue;
+      // At t = 0 (and for an entity that was not there before) the step is a wait: no swap.
+      if (t == 0 || !position_at(path_of(e), t - 1, vanish && e < n, before) || !in.map.in_bounds(before)) before = now;
+      present.push_back(e);
+      from.push_back(before);
+      to.push_back(now);
     }
-    for (int idx : touched_now) {  // vertex conflicts: every pair on one cell
-      for (int e = head_now[static_cast<std::size_t>(idx)]; e != -1; e = next_now[e]) {
-        for (int f = next_now[e]; f != -1; f = next_now[f]) {
-          add_conflict(ConflictKind::Vertex, e, f, pos_now[e], pos_now[e], t);
+    const planner::StepConflicts c = planner::find_step_conflicts(from, to);
+    for (const planner::VertexConflict& v : c.vertex) {
+      for (std::size_t i = 0; i < v.robots.size(); ++i) {
+        for (std::size_t j = i + 1; j < v.robots.size(); ++j) {
+          add_conflict(ConflictKind::Vertex, present[static_cast<std::size_t>(v.robots[i])],
+                       present[static_cast<std::size_t>(v.robots[j])], v.cell, v.cell, t);
         }
       }
     }
-    if (t > 0) {  // swap conflicts: e went u -> v while some f went v -> u
-      for (int e = 0; e < total; ++e) {
-        if (!here_now[e] || !here_prev[e] || pos_now[e] == pos_prev[e]) continue;
-        for (int f = head_prev[static_cast<std::size_t>(in.map.index(pos_now[e]))]; f != -1; f = next_prev[f]) {
-          if (f > e && here_now[f] && pos_now[f] == pos_prev[e]) {
-            add_conflict(ConflictKind::Swap, e, f, pos_prev[e], pos_now[e], t);
-          }
-        }
-      }
+    for (const planner::EdgeConflict& x : c.edge) {
+      const auto a = static_cast<std::size_t>(x.a);
+      add_conflict(ConflictKind::Swap, present[a], present[static_cast<std::size_t>(x.b)], from[a], to[a], t);
     }
-    std::swap(head_prev, head_now);
-    std::swap(next_prev, next_now);
-    std::swap(touched_prev, touched_now);
-    std::swap(pos_prev, pos_now);
-    std::swap(here_prev, here_now);
   }
   return r;
 }

@@ -1,6 +1,6 @@
 // One table of simultaneous-move cases with their expected conflicts, shared by the simulator's
 // tests (sim::resolve, which executes moves) and the planners' validators (planner::
-// find_step_conflicts, and every MAPF plan checker built on it), so the simulator and the planners
+// find_step_conflicts, and the MAPF validator built on it), so the simulator and the planners
 // cannot disagree on what a conflict is.
 //
 // Each case: robots at `from`, meaning to be at `to` after one tick (to == from: wait/stay), on an

@@ -66,6 +66,7 @@ class SimNode {
     std::uint32_t start_tick = 0;
     std::vector<MotionCounts> counts_at_start;
     ConflictEvents events_at_start;
+    std::uint64_t diagonals_at_start = 0;
     std::vector<std::pair<std::uint32_t, double>> curve;  // cover: (tick, covered fraction); collect: (tick, delivered)
     std::optional<std::uint32_t> full_tick;              // cover: every target cell covered
     std::optional<std::uint32_t> first_move_tick;        // the first and last tick a robot moved

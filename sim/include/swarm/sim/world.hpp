@@ -119,6 +119,9 @@ class World {
   bool is_covered(planner::Cell c) const { return coverage_.is_covered(c); }
 
   const std::vector<MotionCounts>& counts() const { return counts_; }
+  // Diagonal moves made so far, all robots: with counts()' moves, the driven length in cells
+  // (straight 1, diagonal sqrt 2), which the tours' planner minimises.
+  std::uint64_t diagonal_moves() const { return diagonal_moves_; }
   MotionCounts total_counts() const;
   const ConflictEvents& events() const { return events_; }
 
@@ -137,6 +140,7 @@ class World {
   int reachable_seen_ = 0;
   std::vector<MotionCounts> counts_;
   std::vector<int> heading_;  // of each robot's last move, -1 before its first
+  std::uint64_t diagonal_moves_ = 0;
   std::vector<std::vector<std::uint32_t>> picks_, drops_;  // per robot, of its route
   // Collect: each object's state: lying on `cell`, carried (carrier >= 0) or delivered.
   struct Object {
