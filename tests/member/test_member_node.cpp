@@ -18,7 +18,8 @@ using comm::LinkClass;
 using planner::Cell;
 namespace topic = comm::topic;
 
-TEST(MemberNode, DrivesToItsWaypointAndReportsArrivalForThatRound) {
+// A leader and one member (robot 1 starts at (2, 1)) in a 5 x 2 room.
+comm::RoleSetup two_robots_in_a_room() {
   const auto art = swarm::test::ascii_map({
       "#######",
       "#.....#",
@@ -29,7 +30,11 @@ TEST(MemberNode, DrivesToItsWaypointAndReportsArrivalForThatRound) {
   sc.set_groups(1);
   sc.set_robots_per_group(2);
   sc.set_max_ticks(60);
-  auto setup = swarm::test::setup_for(art.grid, art.at.at('S'), sc);
+  return swarm::test::setup_for(art.grid, art.at.at('S'), sc);
+}
+
+TEST(MemberNode, DrivesToItsWaypointAndReportsArrivalForThatRound) {
+  auto setup = two_robots_in_a_room();
   const comm::Topology& t = setup.topology;
   swarm::test::FakeSwarm s(setup, {t.leader(0), t.gcs()});
 
@@ -75,17 +80,7 @@ TEST(MemberNode, DrivesToItsWaypointAndReportsArrivalForThatRound) {
 // A timed route with a wait and a cell passed twice (issue 13, item 2): the member drives it to
 // its end exactly, and its progress messages name the route and climb to its last step.
 TEST(MemberNode, FollowsARouteWithAWaitAndARevisitAndReportsItsProgress) {
-  const auto art = swarm::test::ascii_map({
-      "#######",
-      "#.....#",
-      "#S....#",
-      "#######",
-  });
-  swarm::scenario::Scenario sc;
-  sc.set_groups(1);
-  sc.set_robots_per_group(2);
-  sc.set_max_ticks(60);
-  auto setup = swarm::test::setup_for(art.grid, art.at.at('S'), sc);
+  auto setup = two_robots_in_a_room();
   const comm::Topology& t = setup.topology;
   swarm::test::FakeSwarm s(setup, {t.leader(0), t.gcs()});
   const Cell start = setup.world.robot_cells[1];
