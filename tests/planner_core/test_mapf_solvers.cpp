@@ -290,4 +290,21 @@ TEST(MapfSolvers, TimedOutCbsReturnsAPlanWithItsCollisions) {
   EXPECT_LT(r.seconds, 0.05 + 0.15);
 }
 
+// A timed-out LaCAM returns its best plan too: the way to the configuration nearest the goals,
+// then every agent straight on to its goal; legal moves, every goal reached, conflicts counted.
+TEST(MapfSolvers, TimedOutLacamReturnsItsBestPlanWithItsConflicts) {
+  const Instance in = random_warehouse_instance(10, 10, 100, 3);
+  const Result r = solve(in, config(SolverKind::Lacam), StopCondition::after(0.0));
+  ASSERT_EQ(r.status, Status::Timeout) << r.message;
+  ASSERT_EQ(r.paths.size(), 100u);
+  const ValidationReport v = validate(in, r.paths);
+  EXPECT_TRUE(v.problems.empty()) << v.summary();
+  EXPECT_EQ(r.conflicts, static_cast<int>(v.conflicts.size()));
+  for (int a = 0; a < in.agents(); ++a) {
+    ASSERT_FALSE(r.paths[static_cast<std::size_t>(a)].empty());
+    EXPECT_EQ(r.paths[static_cast<std::size_t>(a)].back(), in.goals[static_cast<std::size_t>(a)]) << "agent " << a;
+  }
+  EXPECT_NE(r.message.find("of 100 agents on their goals"), std::string::npos) << r.message;
+}
+
 }  // namespace

@@ -151,7 +151,16 @@ class Lacam {
       out.status = Status::Infeasible;
       out.message = "LaCAM explored every reachable configuration: no plan exists";
     } else {
+      // The best plan found: the way to the configuration nearest the goals (least summed
+      // distance), then every agent straight on to its goal, ignoring the others; the caller
+      // counts the conflicts that leaves (solver.cpp), as for a timed-out CBS.
       out.status = Status::Timeout;
+      out.paths = paths_to(nearest_);
+      finish_alone(nearest_->config, out.paths);
+      int arrived = 0;
+      for (int a = 0; a < n_; ++a) arrived += at_goal(a, nearest_->config[static_cast<std::size_t>(a)]) ? 1 : 0;
+      out.message = "no plan within the limit; the best found has " + std::to_string(arrived) + " of " +
+                    std::to_string(n_) + " agents on their goals, the others driven straight there";
     }
     return out;
   }
@@ -169,6 +178,7 @@ class Lacam {
     }
     h->h = heuristic(c);
     h->f = h->g + h->h;
+    if (nearest_ == nullptr || h->h < nearest_->h) nearest_ = h;
     h->priority.resize(static_cast<std::size_t>(n_));
     for (int a = 0; a < n_; ++a) {
       const std::size_t i = static_cast<std::size_t>(a);
@@ -448,6 +458,38 @@ class Lacam {
     return paths;
   }
 
+  // Extends each path from `config` along a shortest way (in the agent model's own states, so the
+  // paper's stops are finished as its rules say) to its agent's goal, ignoring the others.
+  void finish_alone(const Config& config, std::vector<Path>& paths) {
+    std::vector<int> next;
+    for (int a = 0; a < n_; ++a) {
+      const int from = config[static_cast<std::size_t>(a)];
+      if (from == kGone || at_goal(a, from)) continue;
+      // Breadth-first over states; the first state on the goal cell ends the search.
+      std::unordered_map<int, int> parent{{from, from}};
+      std::deque<int> queue{from};
+      int reached = -1;
+      while (!queue.empty() && reached < 0) {
+        const int s = queue.front();
+        queue.pop_front();
+        successors(a, s, next);
+        for (int n : next) {
+          if (n == kGone || !parent.emplace(n, s).second) continue;
+          if (at_goal(a, n)) {
+            reached = n;
+            break;
+          }
+          queue.push_back(n);
+        }
+      }
+      std::vector<int> way;
+      for (int s = reached; s >= 0 && s != from; s = parent.at(s)) way.push_back(s);
+      Path& p = paths[static_cast<std::size_t>(a)];
+      for (auto it = way.rbegin(); it != way.rend(); ++it) p.push_back(in_.map.cell_of(model_.cell(*it)));
+    }
+  }
+
+  HighNode* nearest_ = nullptr;  // the generated configuration with the least summed distance
   const Instance& in_;
   LacamConfig cfg_;
   const StopCondition& stop_;
