@@ -12,6 +12,7 @@ packages=(
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libzstd-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev  # scripts/sanitize.sh address and scripts/fuzz.sh: ASan + libFuzzer
+  openssl  # scripts/make-certs.sh: swarm run --secure (DDS-Security certificates)
   debootstrap  # deploy/base-image.sh: the Debian base image where no registry is reachable
 )
 

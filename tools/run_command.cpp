@@ -85,6 +85,10 @@ std::string find_on_path(const std::string& name) {
   return "";
 }
 
+// --secure: one certificate per process of the run (the names build_run_processes gives them)
+// and the signed governance and permissions, by scripts/make-certs.sh, in RUN_DIR/security.
+void make_certificates(RunLaunch& l, const swarm::scenario::Scenario& s);
+
 void write_text_file(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << text;
@@ -229,7 +233,7 @@ PreparedRun prepare_run(const RunOptions& options) {
   const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
                       std::chrono::system_clock::now().time_since_epoch())
                       .count();
-  l.partition = partition_name(pid, static_cast<std::int64_t>(ns));
+  l.partition = options.partition.empty() ? partition_name(pid, static_cast<std::int64_t>(ns)) : options.partition;
   l.progress_bar = ::isatty(STDOUT_FILENO) != 0;
   l.dds_profile = cfg::dds_profile_path();
   if (options.agents_per_process < 1) {
@@ -247,7 +251,7 @@ PreparedRun prepare_run(const RunOptions& options) {
       }
     }
   }
-  if (options.discovery == RunOptions::Discovery::Server) {
+  if (options.discovery == RunOptions::Discovery::Server && !options.secure) {
     l.discovery_server_exe = find_on_path("fast-discovery-server");
     if (l.discovery_server_exe.empty()) {
       throw cfg::ConfigError(
@@ -256,6 +260,7 @@ PreparedRun prepare_run(const RunOptions& options) {
     }
     l.discovery_server = "127.0.0.1:" + std::to_string(free_loopback_udp_port());
   }
+  if (options.secure) make_certificates(l, used);
   return run;
 }
 
@@ -291,6 +296,10 @@ std::vector<ProcessSpec> build_run_processes(const RunLaunch& l,
     common.push_back("--discovery-server");
     common.push_back(l.discovery_server);
   }
+  if (!l.security_dir.empty()) {
+    common.push_back("--security-dir");
+    common.push_back(l.security_dir);
+  }
   procs.push_back(spec("sim", "swarm-sim", {}));
   ProcessSpec gcs = spec("gcs", "swarm-gcs", {});
   gcs.argv.push_back("--progress");
@@ -310,8 +319,7 @@ std::vector<ProcessSpec> build_run_processes(const RunLaunch& l,
       std::string indices;
       for (std::uint32_t i = first; i <= last; ++i) indices += (i == first ? "" : ",") + std::to_string(i);
       const std::string gs = std::to_string(g);
-      const std::string name = first == last ? "member-" + gs + "-" + indices
-                                             : "members-" + gs + "-" + std::to_string(first) + "-" + std::to_string(last);
+      const std::string name = cfg::member_process_name(static_cast<int>(g), static_cast<int>(first), static_cast<int>(last));
       procs.push_back(spec(name, "swarm-member", {"--group", gs, "--index", indices}));
     }
   }
@@ -322,6 +330,21 @@ std::vector<ProcessSpec> build_run_processes(const RunLaunch& l,
   }
   return procs;
 }
+
+namespace {
+void make_certificates(RunLaunch& l, const swarm::scenario::Scenario& s) {
+  const std::string dir = l.run_dir + "/security";
+  std::string command = "bash '" + cfg::data_dir() + "/scripts/make-certs.sh' '" + dir + "'";
+  for (const ProcessSpec& p : build_run_processes(l, s)) {
+    if (!p.service) command += " " + p.name;
+  }
+  const std::string log = l.run_dir + "/logs/make-certs.log";
+  if (std::system((command + " > '" + log + "' 2>&1").c_str()) != 0) {
+    throw std::runtime_error("could not make the run's certificates (scripts/make-certs.sh; see " + log + ")");
+  }
+  l.security_dir = dir;
+}
+}  // namespace
 
 std::string map_label(const std::string& map) {
   if (is_builtin_map(map)) return map;

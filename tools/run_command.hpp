@@ -69,6 +69,12 @@ struct RunOptions {
   Discovery discovery = Discovery::Server;
   // Robots of one group per member process (--agents-per-process): 1 = a process per robot.
   int agents_per_process = 1;
+  // DDS-Security (--secure): a CA, one certificate per process and signed governance and
+  // permissions are made in RUN_DIR/security (scripts/make-certs.sh), and every process
+  // authenticates and encrypts; a participant without a certificate sees nothing. Uses simple
+  // discovery (the discovery server has no certificate).
+  bool secure = false;
+  std::string partition;  // the run's DDS partition; "" = partition_name(pid, now): unique
 };
 
 // Where and how the role processes of one run talk and write.
@@ -83,6 +89,7 @@ struct RunLaunch {
   std::string discovery_server_exe;  // fast-discovery-server's path, when discovery_server is set
   std::string dds_profile;           // the Fast DDS profile every process (and the server) loads
   int agents_per_process = 1;        // member robots of one group per swarm-member process
+  std::string security_dir;          // RUN_DIR/security with --secure, else ""
 };
 
 struct PreparedRun {

@@ -68,6 +68,13 @@ int main(int argc, char** argv) {
           std::map<std::string, RunOptions::Discovery>{{"server", RunOptions::Discovery::Server},
                                                         {"simple", RunOptions::Discovery::Simple}}))
       ->capture_default_str();
+  run_cmd->add_flag("--secure", run.secure,
+                    "DDS-Security: a CA and one certificate per process in RUN_DIR/security; every process "
+                    "authenticates and encrypts, so a participant without a certificate sees nothing (simple discovery)");
+  run_cmd->add_option("--partition", run.partition, "DDS partition of the run (default: unique to the run)");
+  int domain = -1;
+  auto* domain_opt = run_cmd->add_option("--domain", domain, "DDS domain id of the run (default: from the process id)")
+                         ->check(CLI::Range(0, kMaxDomainId));
   run_cmd
       ->add_option("--agents-per-process", run.agents_per_process,
                    "Member robots of one group per process (each still has its own DDS endpoints); 1 = a process "
@@ -178,6 +185,7 @@ int main(int argc, char** argv) {
     if (ticks_opt->count()) o.max_ticks = max_ticks;
     if (realtime_opt->count()) o.realtime = realtime;
     if (tick_ms_opt->count()) o.tick_ms = tick_ms;
+    if (domain_opt->count()) run.domain_id = domain;
     run.timeout = std::chrono::seconds(timeout_s);
     return run_command(run, std::cout, std::cerr);
   }

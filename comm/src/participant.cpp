@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <stdexcept>
+#include <vector>
 
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
@@ -46,6 +47,28 @@ void use_discovery_server(DomainParticipantQos& qos, const std::string& server) 
   discovery.discoveryProtocol = eprosima::fastrtps::rtps::DiscoveryProtocol_t::CLIENT;
   discovery.m_DiscoveryServers = servers;
   qos.wire_protocol().builtin.initialPeersList.clear();
+}
+
+// The DDS-Security plugins' properties for `identity`'s files in `dir` (make-certs.sh's layout).
+void use_security(DomainParticipantQos& qos, const std::string& dir, const std::string& identity) {
+  const std::filesystem::path d = std::filesystem::absolute(dir);
+  for (const std::string& f : std::vector<std::string>{"ca.pem", identity + ".pem", identity + ".key", "governance.p7s", "permissions.p7s"}) {
+    if (!std::filesystem::exists(d / f)) {
+      throw std::runtime_error("security folder " + d.string() + " has no " + f +
+                               " (make it with scripts/make-certs.sh " + d.string() + " " + identity + " ...)");
+    }
+  }
+  const auto file = [&](const std::string& f) { return "file://" + (d / f).string(); };
+  auto& p = qos.properties().properties();
+  p.emplace_back("dds.sec.auth.plugin", "builtin.PKI-DH");
+  p.emplace_back("dds.sec.auth.builtin.PKI-DH.identity_ca", file("ca.pem"));
+  p.emplace_back("dds.sec.auth.builtin.PKI-DH.identity_certificate", file(identity + ".pem"));
+  p.emplace_back("dds.sec.auth.builtin.PKI-DH.private_key", file(identity + ".key"));
+  p.emplace_back("dds.sec.access.plugin", "builtin.Access-Permissions");
+  p.emplace_back("dds.sec.access.builtin.Access-Permissions.permissions_ca", file("ca.pem"));
+  p.emplace_back("dds.sec.access.builtin.Access-Permissions.governance", file("governance.p7s"));
+  p.emplace_back("dds.sec.access.builtin.Access-Permissions.permissions", file("permissions.p7s"));
+  p.emplace_back("dds.sec.crypto.plugin", "builtin.AES-GCM-GMAC");
 }
 
 const char* writer_profile(EndpointKind kind) {
@@ -152,6 +175,9 @@ Participant::Participant(const DdsOptions& options) : options_(options) {
   }
   qos.name(options.name);
   if (options.participant_id >= 0) qos.wire_protocol().participant_id = options.participant_id;
+  if (!options.security_dir.empty()) {
+    use_security(qos, options.security_dir, options.identity.empty() ? options.name : options.identity);
+  }
   const std::string server = options.discovery_server.empty() ? default_discovery_server() : options.discovery_server;
   if (!server.empty()) use_discovery_server(qos, server);
   participant_ = factory->create_participant(options.domain, qos);

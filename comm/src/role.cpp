@@ -21,6 +21,9 @@ void add_role_flags(CLI::App& app, RoleOptions& o, RoleKind kind) {
   app.add_option("--domain", o.domain, "DDS domain id of the run")->check(CLI::Range(0, 232));
   app.add_option("--partition", o.partition, "DDS partition of the run");
   app.add_option("--profile", o.profile, "Fast DDS XML profile (default: deploy/fastdds_loopback.xml)");
+  app.add_option("--security-dir", o.security_dir,
+                 "DDS-Security: the folder scripts/make-certs.sh made (this process's certificate is "
+                 "NAME.pem there, NAME = sim, gcs, leader-G, member-G-I or members-G-F-L)");
   app.add_option("--discovery-server", o.discovery_server,
                  "HOST:PORT of a Fast DDS discovery server (default: $SWARM_DISCOVERY_SERVER, else simple discovery)");
   if (kind == RoleKind::Leader || kind == RoleKind::Member) {
@@ -36,6 +39,17 @@ void add_role_flags(CLI::App& app, RoleOptions& o, RoleKind kind) {
   if (kind == RoleKind::Gcs) {
     app.add_option("--progress", o.progress, "progress display")->check(CLI::IsMember({"bar", "plain", "none"}));
   }
+}
+
+std::string process_name(RoleKind kind, int group, const std::vector<int>& indices) {
+  const std::string g = std::to_string(group);
+  switch (kind) {
+    case RoleKind::Sim: return "sim";
+    case RoleKind::Gcs: return "gcs";
+    case RoleKind::Leader: return "leader-" + g;
+    case RoleKind::Member: break;
+  }
+  return config::member_process_name(group, indices.front(), indices.back());
 }
 
 LinkTable link_table(const swarm::scenario::Scenario& s, const Topology& topology) {
@@ -90,6 +104,8 @@ RoleSetup load_role(const RoleOptions& o, RoleKind kind, const std::string& name
   setup.dds.name = name;
   setup.dds.profile_path = o.profile;
   setup.dds.discovery_server = o.discovery_server;
+  setup.dds.security_dir = o.security_dir;
+  setup.dds.identity = process_name(kind, o.group, o.indices);
   // The agent id (a member process: its first robot's) as the participant id: unique in the run.
   switch (kind) {
     case RoleKind::Sim: setup.dds.participant_id = setup.topology.sim(); break;

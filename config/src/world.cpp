@@ -115,6 +115,12 @@ std::string data_dir() {
   return SWARM_SOURCE_DIR;
 }
 
+std::string member_process_name(int group, int first, int last) {
+  const std::string g = std::to_string(group);
+  if (first == last) return "member-" + g + "-" + std::to_string(first);
+  return "members-" + g + "-" + std::to_string(first) + "-" + std::to_string(last);
+}
+
 std::string dds_profile_path() {
   const char* env = std::getenv("SWARM_DDS_PROFILE");
   if (env != nullptr && *env != '\0') return env;

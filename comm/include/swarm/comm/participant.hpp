@@ -42,6 +42,12 @@ struct DdsOptions {
   // The RTPS participant id, which fixes the participant's ports (see the profile); -1 = Fast
   // DDS picks a free one (fine for a few participants; roles use their agent id).
   int participant_id = -1;
+  // DDS-Security: a folder made by scripts/make-certs.sh. Set, the participant authenticates
+  // with the certificate `identity` (IDENTITY.pem and .key there; default: `name`), checks the
+  // signed governance and permissions, and encrypts as the governance says (PKI-DH,
+  // Access-Permissions, AES-GCM-GMAC). Empty = no security.
+  std::string security_dir;
+  std::string identity;
 };
 
 // The discovery server a process uses when none is given (see DdsOptions::discovery_server).

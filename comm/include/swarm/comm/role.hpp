@@ -35,6 +35,7 @@ struct RoleOptions {
   std::string partition = "swarm";
   std::string profile;         // Fast DDS XML profile; empty = default_profile_path()
   std::string discovery_server;  // HOST:PORT; empty = default_discovery_server()
+  std::string security_dir;      // DDS-Security files (scripts/make-certs.sh); empty = none
   int group = -1;              // leader, member
   std::vector<int> indices;    // member: the robots this process runs (1..robots_per_group-1)
   std::string progress = "plain";  // gcs: bar | plain | none
@@ -52,6 +53,10 @@ struct RoleSetup {
 
 // Loads and resolves the scenario, checks the role's ids against it. Throws config::ConfigError.
 RoleSetup load_role(const RoleOptions& options, RoleKind kind, const std::string& name);
+
+// The process's name in a run, which its log, its certificate and `swarm run` use: "sim", "gcs",
+// "leader-G", "member-G-I", or "members-G-F-L" for a member process of robots F..L.
+std::string process_name(RoleKind kind, int group, const std::vector<int>& indices);
 
 LinkTable link_table(const swarm::scenario::Scenario& scenario, const Topology& topology);
 

@@ -96,6 +96,10 @@ void set_mission(swarm::scenario::Scenario& scenario, const std::vector<std::str
 // tree this library was built from.
 [[nodiscard]] std::string data_dir();
 
+// The name of a swarm-member process running robots first..last of `group` (its log, its
+// certificate): "member-G-I" for one robot, "members-G-F-L" for several.
+[[nodiscard]] std::string member_process_name(int group, int first, int last);
+
 // The Fast DDS XML profile every process of a run loads (and the run's discovery server):
 // $SWARM_DDS_PROFILE if set and non-empty, else data_dir()/deploy/fastdds_loopback.xml.
 [[nodiscard]] std::string dds_profile_path();
