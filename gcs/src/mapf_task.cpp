@@ -76,9 +76,24 @@ void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
   std::fill(group_held_.begin(), group_held_.end(), false);
   for (int r : planned_) group_in_plan_[static_cast<std::size_t>(t.group_of(static_cast<comm::AgentId>(r)))] = true;
 
-  const planner::mapf::Result res =
-      planner::mapf::solve(in, config::mapf_solver_config(config_, ctx.setup.world.scenario.seed()),
-                           planner::mapf::StopCondition::after(config_.time_limit_s()));
+  planner::mapf::SolverConfig solver = config::mapf_solver_config(config_, ctx.setup.world.scenario.seed());
+  planner::mapf::Result res = planner::mapf::solve(in, solver, planner::mapf::StopCondition::after(config_.time_limit_s()));
+  if (res.status == planner::mapf::Status::Timeout && solver.kind != planner::mapf::SolverKind::Lacam) {
+    // A (bounded-)optimal search that runs out of time leaves nothing safe to drive; LaCAM* is
+    // complete and fast: it finds a plan, or proves there is none, within the same limit.
+    note_plan(ctx, why, res);
+    std::fprintf(stderr, "gcs: mapf plan timed out after %.3f s; trying LaCAM*\n", res.seconds);
+    solver.kind = planner::mapf::SolverKind::Lacam;
+    res = planner::mapf::solve(in, solver, planner::mapf::StopCondition::after(config_.time_limit_s()));
+    why = "LaCAM* after a timeout";
+  }
+  note_plan(ctx, why, res);
+  failed_ = res.status != planner::mapf::Status::Solved;
+  if (failed_) return;  // nothing safe to drive: the phase stays incomplete (metrics say why)
+  send_plan(ctx, res);
+}
+
+void MapfGcsTask::note_plan(GcsContext& ctx, const char* why, const planner::mapf::Result& res) {
   if (plans_.empty()) first_ = res;
   plans_.push_back({{"tick", ctx.tick()},
                     {"why", why},
@@ -93,9 +108,9 @@ void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
   std::fprintf(stderr, "gcs: mapf plan (%s) at tick %u for %zu robots: %s in %.3f s, soc %lld, makespan %d%s%s\n", why,
                ctx.tick(), planned_.size(), planner::mapf::to_string(res.status), res.seconds, res.soc, res.makespan,
                res.message.empty() ? "" : ": ", res.message.c_str());
-  failed_ = res.status != planner::mapf::Status::Solved;
-  if (failed_) return;  // nothing safe to drive: the phase stays incomplete (metrics say why)
+}
 
+void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res) {
   msgs::TaskOrder o;
   o.group(task::kAllGroups);
   o.kind(task::kOrderWork);

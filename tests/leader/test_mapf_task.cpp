@@ -29,6 +29,18 @@ TEST(MapfTask, WithoutDelayEveryRobotArrivesWithNoConflict) {
             << "\n";
 }
 
+// CBS out of time leaves nothing safe to drive: the GCS tries LaCAM* (complete) within the same
+// limit, and both attempts are in the phase's numbers.
+TEST(MapfTask, ATimedOutSolverFallsBackToLacam) {
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+      std::string(kTwoGroups) + "mission { phase { mapf { solver: MAPF_CBS time_limit_s: 1e-9 } } }"));
+  const auto m = s.run_to_end();
+  const auto& plans = mapf_phase(m)["task"]["plans"];
+  ASSERT_GE(plans.size(), 2u) << plans;
+  EXPECT_EQ(plans[0]["status"], "timeout");
+  EXPECT_EQ(plans[1]["why"], "LaCAM* after a timeout");
+}
+
 TEST(MapfTask, WithMemberLeaderDelayAndJitterStillNoConflict) {
   swarm::test::FakeSwarm s(swarm::test::setup_from_text(
       std::string(kTwoGroups) +

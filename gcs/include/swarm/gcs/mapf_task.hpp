@@ -44,7 +44,11 @@ class MapfGcsTask : public GcsTask {
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:
+  // Plans for the living robots (falling back to LaCAM* when the configured solver times out) and
+  // sends the plan; a plan that is not solved is recorded and nothing is driven.
   void plan(GcsContext& ctx, const char* why);
+  void note_plan(GcsContext& ctx, const char* why, const planner::mapf::Result& res);  // metrics + log
+  void send_plan(GcsContext& ctx, const planner::mapf::Result& res);
   void send_order(GcsContext& ctx, std::uint8_t kind, std::vector<std::int32_t> values = {});
   std::vector<planner::Cell> random_goals(const GcsContext& ctx) const;
 
