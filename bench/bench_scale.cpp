@@ -51,7 +51,7 @@ void BM_Scale(benchmark::State& state) {
   if (runs > 0) {
     const int member_processes = groups * ((per_group - 1 + per_process - 1) / per_process);
     state.counters["robots"] = robots;
-    state.counters["processes"] = 2 + groups + member_processes;  // sim, gcs, leaders, members
+    state.counters["processes"] = 3 + groups + member_processes;  // discovery server, sim, gcs, leaders, members
     state.counters["startup_s"] = startup / runs;
     state.counters["ticks_per_second"] = ticks / loop_seconds;
   }

@@ -39,7 +39,7 @@ RunOutcome run_one(const RunJob& job, int domain) {
   RunOutcome o;
   const auto start = std::chrono::steady_clock::now();
   RunOptions options = job.options;
-  options.domain_id = domain;
+  options.preferred_domain = domain;
   PreparedRun run;
   try {
     run = prepare_run(options);

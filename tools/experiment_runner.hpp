@@ -1,8 +1,8 @@
 // Runs many `swarm run`s at once, each isolated, and reports each as it finishes: the engine of
 // `swarm experiment`. Every job goes through prepare_run -> build_run_processes -> run_processes
-// (run_command.hpp), exactly as `swarm run` does, on one of `jobs` worker threads. Worker w gives
-// its runs DDS domain first_domain + w (wrapping within 1..kMaxDomainId), so no two concurrent
-// runs share a domain; prepare_run gives every run its own partition too. The GCS's progress is
+// (run_command.hpp), exactly as `swarm run` does, on one of `jobs` worker threads. Worker w starts
+// its runs' search for a free DDS domain at first_domain + w; prepare_run's domain locks make
+// sure no two concurrent runs on the machine share one, and give every run its own partition. The GCS's progress is
 // not echoed (it stays in logs/gcs.log).
 //
 //   std::vector<swarm::tools::RunJob> jobs = ...;  // RunOptions: out_dir, overrides, customize

@@ -1,8 +1,7 @@
 #include "run_command.hpp"
 
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -54,23 +53,22 @@ std::optional<std::pair<double, double>> parse_xy(const std::string& text) {
 }
 
 
-// A UDP port on 127.0.0.1 that nothing holds now (the kernel's choice), for the run's discovery
-// server. Another program could take it before the server binds it; the server then fails at
-// once and the run fails naming it.
-int free_loopback_udp_port() {
-  const int fd = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
-  if (fd < 0) throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  addr.sin_port = 0;
-  socklen_t len = sizeof addr;
-  const bool ok = ::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0 &&
-                  ::getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len) == 0;
-  const int err = errno;
-  ::close(fd);
-  if (!ok) throw std::runtime_error(std::string("cannot find a free loopback UDP port: ") + std::strerror(err));
-  return ntohs(addr.sin_port);
+// The lock file of DDS domain `d` held (flock, exclusive) by this process, or nullptr when another
+// run holds it. O_CLOEXEC: the role processes do not inherit it.
+std::shared_ptr<const void> try_lock_domain(int d) {
+  const fs::path path = fs::temp_directory_path() / ("swarm-dds-domain-" + std::to_string(d) + ".lock");
+  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+  if (fd < 0) throw std::runtime_error("cannot open the domain lock " + path.string() + ": " + std::strerror(errno));
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd);
+    return nullptr;
+  }
+  // The pointer must not be null (a null shared_ptr reads as "no lock"): it holds the fd.
+  return std::shared_ptr<const void>(new int(fd), [](const void* p) {
+    const int* held = static_cast<const int*>(p);
+    ::close(*held);
+    delete held;
+  });
 }
 
 // The executable `name` on $PATH (execv does not search it); "" when there is none.
@@ -229,7 +227,24 @@ PreparedRun prepare_run(const RunOptions& options) {
                            " is out of range; swarm runs use 0.." +
                            std::to_string(kMaxDomainId));
   }
-  l.domain_id = options.domain_id.value_or(domain_id_for(pid));
+  if (options.domain_id) {
+    run.domain_lock = try_lock_domain(*options.domain_id);
+    if (!run.domain_lock) {
+      throw cfg::ConfigError("DDS domain " + std::to_string(*options.domain_id) +
+                             " is in use by another swarm run on this machine; choose another --domain or leave it out");
+    }
+    l.domain_id = *options.domain_id;
+  } else {
+    const int first = options.preferred_domain.value_or(domain_id_for(pid));
+    for (int k = 0; k < kAutoDomains && !run.domain_lock; ++k) {
+      l.domain_id = 1 + (first - 1 + k) % kAutoDomains;
+      run.domain_lock = try_lock_domain(l.domain_id);
+    }
+    if (!run.domain_lock) {
+      throw std::runtime_error("every DDS domain 1.." + std::to_string(kAutoDomains) +
+                               " is in use by other swarm runs on this machine");
+    }
+  }
   const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
                       std::chrono::system_clock::now().time_since_epoch())
                       .count();
@@ -256,9 +271,9 @@ PreparedRun prepare_run(const RunOptions& options) {
     if (l.discovery_server_exe.empty()) {
       throw cfg::ConfigError(
           "fast-discovery-server is not on PATH: install Debian's fastdds-tools (scripts/install-deps.sh "
-          "does), or run with --discovery simple (up to ~60 processes)");
+          "does), or run with --discovery simple");
     }
-    l.discovery_server = "127.0.0.1:" + std::to_string(free_loopback_udp_port());
+    l.discovery_server = "127.0.0.1:" + std::to_string(discovery_server_port(l.domain_id));
   }
   if (options.secure) make_certificates(l, used);
   return run;
@@ -334,13 +349,15 @@ std::vector<ProcessSpec> build_run_processes(const RunLaunch& l,
 namespace {
 void make_certificates(RunLaunch& l, const swarm::scenario::Scenario& s) {
   const std::string dir = l.run_dir + "/security";
-  std::string command = "bash '" + cfg::data_dir() + "/scripts/make-certs.sh' '" + dir + "'";
+  ProcessSpec certs;
+  certs.name = "make-certs";
+  certs.argv = {"/bin/bash", cfg::data_dir() + "/scripts/make-certs.sh", dir};
   for (const ProcessSpec& p : build_run_processes(l, s)) {
-    if (!p.service) command += " " + p.name;
+    if (!p.service) certs.argv.push_back(p.name);
   }
-  const std::string log = l.run_dir + "/logs/make-certs.log";
-  if (std::system((command + " > '" + log + "' 2>&1").c_str()) != 0) {
-    throw std::runtime_error("could not make the run's certificates (scripts/make-certs.sh; see " + log + ")");
+  certs.log_path = l.run_dir + "/logs/make-certs.log";
+  if (!run_processes({certs}, std::chrono::seconds(120)).ok) {
+    throw std::runtime_error("could not make the run's certificates (scripts/make-certs.sh; see " + certs.log_path + ")");
   }
   l.security_dir = dir;
 }
@@ -448,6 +465,9 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err)
   } catch (const cfg::ConfigError& e) {
     err << "swarm run: " << e.what() << "\n";
     return 2;
+  } catch (const std::exception& e) {  // the machine's, not the user's: no free domain, no certificates
+    err << "swarm run: " << e.what() << "\n";
+    return 1;
   }
   const RunLaunch& l = run.launch;
   const std::vector<ProcessSpec> procs = build_run_processes(l, run.world.scenario);

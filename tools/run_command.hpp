@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <ctime>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -62,9 +63,13 @@ struct RunOptions {
   // The DDS domain of the run (0..kMaxDomainId); unset = domain_id_for(getpid()). Concurrent runs of one
   // `swarm` process each take their own.
   std::optional<int> domain_id;
+  // Where the search for a free domain starts when domain_id is unset (swarm experiment spreads
+  // its workers); unset = domain_id_for(getpid()).
+  std::optional<int> preferred_domain;
   // How the run's processes find each other: through a Fast DDS discovery server of the run's own
   // (fast-discovery-server on a free loopback port, started first and stopped last), or by
-  // simple discovery (every participant announces itself to every other; up to ~60 processes).
+  // simple discovery (every participant announces itself to every other; traffic grows with the
+  // square of the process count).
   enum class Discovery { Server, Simple };
   Discovery discovery = Discovery::Server;
   // Robots of one group per member process (--agents-per-process): 1 = a process per robot.
@@ -95,6 +100,10 @@ struct RunLaunch {
 struct PreparedRun {
   swarm::config::World world;
   RunLaunch launch;
+  // The run's hold on its DDS domain (an flock on TMP/swarm-dds-domain-<d>.lock): every role's
+  // participant id is its agent id, so two runs in one domain would bind the same ports. Released
+  // when the last copy of this PreparedRun goes (or by the kernel if swarm dies).
+  std::shared_ptr<const void> domain_lock;
 };
 
 // Applies `o` to `s`. A --map that differs from the scenario's map clears its start unless
@@ -120,6 +129,12 @@ void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o);
 // The largest DDS domain id a run uses: with the profile's 500 ports per domain, every port of
 // domains 0..48 (up to 240 participants each) is below 32768, out of the kernel's ephemeral range.
 inline constexpr int kMaxDomainId = 48;
+// Runs without --domain take a free one of 1..kAutoDomains; 41..48 are left to tests and to
+// explicit --domain.
+inline constexpr int kAutoDomains = 40;
+// The run's discovery server listens on 127.0.0.1 at this port of its domain's block (past the
+// 240 participants' ports): unique per domain, so per run.
+[[nodiscard]] inline int discovery_server_port(int domain) { return 7400 + 500 * domain + 495; }
 // "swarm-<pid>-<epoch-ns>": unique per run.
 [[nodiscard]] std::string partition_name(pid_t pid, std::int64_t epoch_ns);
 // "runs/<YYYYmmdd-HHMMSS>-<map>-<mode>-s<seed>" (local time; a YAML map shows as its stem).

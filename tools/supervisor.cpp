@@ -359,7 +359,9 @@ class Supervisor {
       if (r < 0) continue;  // someone else reaped it; nothing to report
       const bool planned = (c.spec->killed_on_purpose && WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) ||
                            (c.spec->service && retiring_);
-      const bool failed = !(WIFEXITED(status) && WEXITSTATUS(status) == 0) && !planned;
+      // A service ends only when told to: ending by itself (even with status 0) is a failure.
+      const bool failed = (!(WIFEXITED(status) && WEXITSTATUS(status) == 0) || (c.spec->service && !retiring_)) &&
+                          !planned;
       if (failed && !stopping_) {
         result_.failed_name = c.spec->name;
         result_.log_path = c.spec->log_path;

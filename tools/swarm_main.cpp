@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
   run_cmd
       ->add_option("--discovery", run.discovery,
                    "How the processes find each other: server (a Fast DDS discovery server of the run's own, "
-                   "on loopback) or simple (every process announces itself to every other; up to ~60 processes)")
+                   "on loopback) or simple (every process announces itself to every other: traffic grows with the square of the count)")
       ->transform(CLI::CheckedTransformer(
           std::map<std::string, RunOptions::Discovery>{{"server", RunOptions::Discovery::Server},
                                                         {"simple", RunOptions::Discovery::Simple}}))

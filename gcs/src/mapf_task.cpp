@@ -79,22 +79,23 @@ void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
   planner::mapf::SolverConfig solver = config::mapf_solver_config(config_, ctx.setup.world.scenario.seed());
   planner::mapf::Result res = planner::mapf::solve(in, solver, planner::mapf::StopCondition::after(config_.time_limit_s()));
   if (res.status == planner::mapf::Status::Timeout && solver.kind != planner::mapf::SolverKind::Lacam) {
-    // A (bounded-)optimal search that runs out of time leaves nothing safe to drive; LaCAM* is
-    // complete and fast: it finds a plan, or proves there is none, within the same limit.
+    // A (bounded-)optimal search that runs out of time leaves nothing safe to drive; LaCAM is
+    // complete and fast: it finds a plan, or proves there is none, within another such limit.
     note_plan(ctx, why, res);
-    std::fprintf(stderr, "gcs: mapf plan timed out after %.3f s; trying LaCAM*\n", res.seconds);
+    std::fprintf(stderr, "gcs: mapf plan timed out after %.3f s; trying LaCAM\n", res.seconds);
     solver.kind = planner::mapf::SolverKind::Lacam;
     res = planner::mapf::solve(in, solver, planner::mapf::StopCondition::after(config_.time_limit_s()));
-    why = "LaCAM* after a timeout";
+    why = "LaCAM after a timeout";
   }
   note_plan(ctx, why, res);
+  if (!have_first_) first_ = res;  // the plan the phase's planned numbers describe (after any fallback)
+  have_first_ = true;
   failed_ = res.status != planner::mapf::Status::Solved;
   if (failed_) return;  // nothing safe to drive: the phase stays incomplete (metrics say why)
   send_plan(ctx, res);
 }
 
 void MapfGcsTask::note_plan(GcsContext& ctx, const char* why, const planner::mapf::Result& res) {
-  if (plans_.empty()) first_ = res;
   plans_.push_back({{"tick", ctx.tick()},
                     {"why", why},
                     {"robots", planned_.size()},

@@ -63,15 +63,17 @@ StepConflicts find_step_conflicts(const std::vector<Cell>& from, const std::vect
     i = j;
   }
   // Edge: a mover whose target is where another robot comes from, going the other way.
-  std::unordered_map<std::int64_t, int> at;
+  // Every robot that starts on a cell (a plan under check may hold two there; the simulator never).
+  std::unordered_multimap<std::int64_t, int> at;
   at.reserve(static_cast<std::size_t>(n) * 2);
   for (int i = 0; i < n; ++i) at.emplace(key_of(from[i]), i);
   for (int a = 0; a < n; ++a) {
     if (to[a] == from[a]) continue;
-    const auto it = at.find(key_of(to[a]));
-    if (it == at.end()) continue;
-    const int b = it->second;
-    if (b > a && to[b] == from[a]) out.edge.push_back({a, b});
+    const auto [first, last] = at.equal_range(key_of(to[a]));
+    for (auto it = first; it != last; ++it) {
+      const int b = it->second;
+      if (b > a && to[b] == from[a]) out.edge.push_back({a, b});
+    }
   }
   std::sort(out.edge.begin(), out.edge.end(), [](const EdgeConflict& x, const EdgeConflict& y) {
     return x.a != y.a ? x.a < y.a : x.b < y.b;

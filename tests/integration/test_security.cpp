@@ -53,14 +53,14 @@ RogueView run_with_a_rogue(const std::string& name, const std::string& flags, in
 }
 
 TEST(Security, ARogueParticipantSeesNothingOfASecureRun) {
-  const RogueView secure = run_with_a_rogue("secure", "--secure", 46);
+  const RogueView secure = run_with_a_rogue("secure", "--secure", 44);
   EXPECT_EQ(secure.clock_samples, 0);
   EXPECT_EQ(secure.matched_writers, 0);
   EXPECT_EQ(secure.matched_readers, 0);
   EXPECT_TRUE(std::filesystem::exists(std::string(SWARM_TEST_RUNS_DIR) + "/secure/run/security/gcs.pem"));
 
   // The control: without --secure the same rogue reads the clock.
-  const RogueView open = run_with_a_rogue("insecure", "--discovery simple", 47);
+  const RogueView open = run_with_a_rogue("insecure", "--discovery simple", 45);
   EXPECT_GT(open.clock_samples, 0);
   EXPECT_GT(open.matched_writers, 0);
 }

@@ -29,7 +29,7 @@ TEST(MapfTask, WithoutDelayEveryRobotArrivesWithNoConflict) {
             << "\n";
 }
 
-// CBS out of time leaves nothing safe to drive: the GCS tries LaCAM* (complete) within the same
+// CBS out of time leaves nothing safe to drive: the GCS tries LaCAM (complete) within another such
 // limit, and both attempts are in the phase's numbers.
 TEST(MapfTask, ATimedOutSolverFallsBackToLacam) {
   swarm::test::FakeSwarm s(swarm::test::setup_from_text(
@@ -38,7 +38,9 @@ TEST(MapfTask, ATimedOutSolverFallsBackToLacam) {
   const auto& plans = mapf_phase(m)["task"]["plans"];
   ASSERT_GE(plans.size(), 2u) << plans;
   EXPECT_EQ(plans[0]["status"], "timeout");
-  EXPECT_EQ(plans[1]["why"], "LaCAM* after a timeout");
+  EXPECT_EQ(plans[1]["why"], "LaCAM after a timeout");
+  // The phase's planned numbers are those of the plan after the fallback.
+  EXPECT_EQ(mapf_phase(m)["task"]["solver_status"], plans[1]["status"]);
 }
 
 TEST(MapfTask, WithMemberLeaderDelayAndJitterStillNoConflict) {

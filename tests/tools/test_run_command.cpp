@@ -197,6 +197,34 @@ TEST(RunProcesses, DomainPartitionAndDefaultDir) {
   EXPECT_TRUE(std::regex_match(d, std::regex(R"(runs/\d{8}-\d{6}-office-baseline-s7)"))) << d;
 }
 
+// Two runs prepared at once never share a DDS domain (their participant ids, so their ports, would
+// be the same), and an explicit domain another run holds is refused by name.
+TEST(RunProcesses, ConcurrentRunsHoldDifferentDomains) {
+  swarm::test::TempDir dir;
+  RunOptions o;
+  o.overrides.map = "small";
+  o.discovery = RunOptions::Discovery::Simple;
+  o.preferred_domain = 7;
+  o.out_dir = dir.file("a");
+  const PreparedRun a = prepare_run(o);
+  o.out_dir = dir.file("b");
+  const PreparedRun b = prepare_run(o);
+  // Other tests may hold domains meanwhile: the search goes on to the next free one.
+  EXPECT_GE(a.launch.domain_id, 7);
+  EXPECT_GT(b.launch.domain_id, a.launch.domain_id);
+  EXPECT_LE(b.launch.domain_id, kAutoDomains);
+  o.out_dir = dir.file("c");
+  o.domain_id = a.launch.domain_id;
+  const std::string held = "DDS domain " + std::to_string(a.launch.domain_id) + " is in use by another swarm run";
+  try {
+    (void)prepare_run(o);
+    ADD_FAILURE() << "domain " << a.launch.domain_id << " was given twice";
+  } catch (const cfg::ConfigError& e) {
+    EXPECT_TRUE(swarm::test::contains(e.what(), held)) << e.what();
+  }
+  EXPECT_EQ(discovery_server_port(7), 7400 + 3500 + 495);
+}
+
 TEST(RunCommandHelpers, LastLinesKeepWhatATerminalShows) {
   TempDir dir;
   spit(dir.file("log"), "1\n2\n3\n4\r\n10%\r50%\r100%\n");

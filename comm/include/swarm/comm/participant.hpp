@@ -34,10 +34,9 @@ struct DdsOptions {
   std::string profile_path;
   // "HOST:PORT" of a Fast DDS Discovery Server (fast-discovery-server, id 0): the participant is
   // its CLIENT instead of finding its peers by simple discovery. Empty = $SWARM_DISCOVERY_SERVER,
-  // else simple discovery. Why: simple discovery announces every participant to every other
-  // (traffic grows with the square of the process count) and the loopback profile probes only 64
-  // participant ids, so runs of more than ~60 processes never finish discovery; a server tells
-  // each client only about the participants it shares a topic with.
+  // else simple discovery. Why: simple discovery announces every participant to every other, so its
+  // traffic grows with the square of the process count; a server tells each client only about the
+  // participants it shares a topic with.
   std::string discovery_server;
   // The RTPS participant id, which fixes the participant's ports (see the profile); -1 = Fast
   // DDS picks a free one (fine for a few participants; roles use their agent id).

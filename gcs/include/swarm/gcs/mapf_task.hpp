@@ -44,7 +44,7 @@ class MapfGcsTask : public GcsTask {
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:
-  // Plans for the living robots (falling back to LaCAM* when the configured solver times out) and
+  // Plans for the living robots (falling back to LaCAM when the configured solver times out) and
   // sends the plan; a plan that is not solved is recorded and nothing is driven.
   void plan(GcsContext& ctx, const char* why);
   void note_plan(GcsContext& ctx, const char* why, const planner::mapf::Result& res);  // metrics + log
@@ -66,7 +66,8 @@ class MapfGcsTask : public GcsTask {
   std::uint32_t start_tick_ = 0;
   int arrived_ = 0;
   std::vector<std::int32_t> relay_;  // progress triples to relay this tick
-  planner::mapf::Result first_;      // the first plan's numbers
+  planner::mapf::Result first_;      // the first plan's numbers (after any fallback)
+  bool have_first_ = false;
   nlohmann::json plans_ = nlohmann::json::array();
 };
 
