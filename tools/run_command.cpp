@@ -257,8 +257,13 @@ PreparedRun prepare_run(const RunOptions& options) {
   }
   l.agents_per_process = options.agents_per_process;
   if (l.agents_per_process > 1) {
+    // A robot that shares its process cannot be killed or frozen alone: its process has another name.
+    const std::vector<ProcessSpec> procs = build_run_processes(l, used);
+    const auto alone = [&](const std::string& agent) {
+      return std::any_of(procs.begin(), procs.end(), [&](const ProcessSpec& p) { return p.name == agent; });
+    };
     for (const auto& f : used.faults()) {
-      if (f.agent().rfind("member-", 0) == 0 && (f.has_kill_at_tick() || f.has_freeze_at_tick())) {
+      if ((f.has_kill_at_tick() || f.has_freeze_at_tick()) && !alone(f.agent())) {
         throw cfg::ConfigError("a kill or freeze of " + f.agent() +
                                " stops its whole process, and --agents-per-process " +
                                std::to_string(l.agents_per_process) +

@@ -340,6 +340,14 @@ TEST(RunCommand, BadFlagsAndScenariosExit2) {
   EXPECT_EQ(run_with([&](RunOptions& o) { o.scenario_path = dir.file("missing.pbtxt"); }), 2);
   spit(dir.file("file"), "");
   EXPECT_EQ(run_with([&](RunOptions& o) { o.out_dir = dir.file("file") + "/run"; }), 2);
+  // A kill of a robot that shares its process (it would take the others along).
+  EXPECT_EQ(run_with([](RunOptions& o) {
+              o.overrides.groups = 1;
+              o.overrides.robots_per_group = 3;
+              o.agents_per_process = 2;
+              o.overrides.kills = {"member-0-1@10"};
+            }),
+            2);
 }
 
 TEST(RunCommand, MissingRoleBinaryExits1BeforeCreatingAnything) {
