@@ -35,7 +35,9 @@ RogueView run_with_a_rogue(const std::string& name, const std::string& flags, in
   });
   RogueView view;
   {
-    comm::Participant rogue(comm::DdsOptions{.domain = domain, .partition = partition, .name = "rogue"});
+    // Participant id 200: far above the run's (its agent ids 0..3), so no port is shared.
+    comm::Participant rogue(
+        comm::DdsOptions{.domain = domain, .partition = partition, .name = "rogue", .participant_id = 200});
     std::atomic<int> samples{0};
     comm::Reader<msgs::Clock> clock(rogue, "clock", [&](msgs::Clock&&) { ++samples; });
     comm::Writer<msgs::Done> done(rogue, "done");
