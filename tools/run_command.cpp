@@ -222,9 +222,10 @@ PreparedRun prepare_run(const RunOptions& options) {
 
   l.bin_dir = options.bin_dir.empty() ? executable_dir() : options.bin_dir;
   const pid_t pid = ::getpid();
-  if (options.domain_id && (*options.domain_id < 0 || *options.domain_id > kMaxDomainId)) {
+  // Domain 0 is the discovery servers' own (their participants bind its ports): runs use 1..48.
+  if (options.domain_id && (*options.domain_id < 1 || *options.domain_id > kMaxDomainId)) {
     throw cfg::ConfigError("DDS domain id " + std::to_string(*options.domain_id) +
-                           " is out of range; swarm runs use 0.." +
+                           " is out of range; swarm runs use 1.." +
                            std::to_string(kMaxDomainId));
   }
   if (options.domain_id) {

@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--partition", run.partition, "DDS partition of the run (default: unique to the run)");
   int domain = -1;
   auto* domain_opt = run_cmd->add_option("--domain", domain, "DDS domain id of the run (default: from the process id)")
-                         ->check(CLI::Range(0, kMaxDomainId));
+                         ->check(CLI::Range(1, kMaxDomainId));
   run_cmd
       ->add_option("--agents-per-process", run.agents_per_process,
                    "Member robots of one group per process (each still has its own DDS endpoints); 1 = a process "
