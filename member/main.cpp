@@ -56,9 +56,10 @@ int main(int argc, char** argv) {
       }
       names += (names.empty() ? "" : ",") + name;
     }
-    comm::RoleSetup named = setup;
-    named.dds.name = options.indices.size() == 1 ? names : "members-" + std::to_string(options.group);
-    comm::Participant participant(named.dds);
+    // The participant is named as the process is (load_role's identity: member-G-I, members-G-F-L).
+    comm::DdsOptions dds = setup.dds;
+    dds.name = dds.identity;
+    comm::Participant participant(dds);
     if (options.indices.size() == 1) {
       run_member(participant, setup, options.group, options.indices[0], *faults[0]);
       comm::exit_after_work(names);
