@@ -12,6 +12,7 @@
 #include "experiment_command.hpp"
 #include "offline_cli.hpp"
 #include "mapf_cli.hpp"
+#include "probe_command.hpp"
 #include "run_command.hpp"
 
 int main(int argc, char** argv) {
@@ -167,6 +168,8 @@ int main(int argc, char** argv) {
                          "runs/report-<time> for run directories");
 
   const OfflineCommands offline(app, *experiment_cmd);  // tour, clean, experiment tour / clean
+  ProbeOptions probe;
+  CLI::App* probe_cmd = add_probe(app, probe);
 
   try {
     app.parse(argc, argv);
@@ -204,6 +207,7 @@ int main(int argc, char** argv) {
     return experiment_command(e, std::cout, std::cerr);
   }
   if (report_cmd->parsed()) return report_command(report, std::cout, std::cerr);
+  if (probe_cmd->parsed()) return probe_command(probe, std::cout, std::cerr);
   if (mapf->parsed()) return mapf_command(mapf->resolved(), std::cout, std::cerr);
   if (experiment_mapf->parsed()) return experiment_mapf_command(experiment_mapf->resolved(), std::cout, std::cerr);
   return bench_command(executable_dir(), bench_cmd->remaining(), std::cerr);
