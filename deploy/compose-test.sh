@@ -7,18 +7,26 @@
 #   deploy/compose-test.sh                          # deploy/docker-compose.yml (3 x 3), image built from source
 #   deploy/compose-test.sh --prebuilt build/bin     # image from this host's binaries (fast)
 #   deploy/compose-test.sh --scenario scenarios/small.pbtxt --compose all
+#   deploy/compose-test.sh --prebuilt build/bin --groups 5 --robots 10   # 50 robots (~N min, see README)
+#   deploy/compose-test.sh --prebuilt build/bin --secure                  # DDS-Security, certificates made here
 #
 # Flags:
 #   --compose CMD|all     "docker compose", "docker-compose", or all installed (default: the first found)
 #   --file FILE           compose file (default deploy/docker-compose.yml)
 #   --scenario FILE       generate a compose file for FILE instead (deploy/compose-gen.sh)
+#   --groups G --robots R generate a compose file for G x R robots: the scenario (--scenario, else
+#                         scenarios/default.pbtxt) with its groups and robots_per_group set so
+#   --secure              DDS-Security: certificates for every role (scripts/make-certs.sh, in the
+#                         test's temporary folder) and a compose file that mounts them
+#                         (compose-gen.sh --secure); with a generated compose file only
 #   --image IMAGE         image to build and run (default swarm:latest)
 #   --prebuilt DIR        build the image from binaries in DIR (deploy/build-images.sh --prebuilt)
 #   --no-build            use the image as it is
 #   --timeout S           seconds the mission may take once up (default 600)
 #   --out DIR             keep metrics.json, run.pb and every service's log here (default: a temp dir)
 #   --after-up CMD        run CMD (bash) once the mission is up, before waiting: the place for fault
-#                         injection; it sees COMPOSE_PROJECT_NAME, SWARM_COMPOSE, SWARM_COMPOSE_FILE
+#                         injection; it sees COMPOSE_PROJECT_NAME, SWARM_COMPOSE, SWARM_COMPOSE_FILE,
+#                         SWARM_IMAGE and SWARM_NETWORK (the project's compose network)
 #   --expect-exit S=CODE  service S is expected to end with CODE (default 0 for every service)
 # Exit codes: 0 passed, 1 failed (the failing service, its exit code and last log lines are
 # named), 2 bad input, 77 skipped: no Docker engine or no compose command here.
@@ -31,6 +39,10 @@ source "$here/lib.sh"
 compose_choice=""
 file=$here/docker-compose.yml
 scenario=""
+file_given=0
+size_groups=""
+size_robots=""
+secure=0
 image=swarm:latest
 prebuilt=""
 build=1
@@ -41,8 +53,11 @@ declare -A expected_exit=()
 while (($#)); do
   case $1 in
     --compose) compose_choice=${2:?--compose needs a command or all}; shift ;;
-    --file) file=${2:?--file needs a compose file}; shift ;;
+    --file) file=${2:?--file needs a compose file}; file_given=1; shift ;;
     --scenario) scenario=${2:?--scenario needs a scenario file}; shift ;;
+    --groups) size_groups=${2:?--groups needs a number}; shift ;;
+    --robots | --robots-per-group) size_robots=${2:?--robots needs a number}; shift ;;
+    --secure) secure=1 ;;
     --image) image=${2:?--image needs an image name}; shift ;;
     --prebuilt) prebuilt=${2:?--prebuilt needs a folder}; shift ;;
     --no-build) build=0 ;;
@@ -54,12 +69,16 @@ while (($#)); do
       expected_exit[${BASH_REMATCH[1]}]=${BASH_REMATCH[2]}
       shift
       ;;
-    -h | --help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,32p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) die 2 "unknown flag $1 (see --help)" ;;
   esac
   shift
 done
 [[ $timeout =~ ^[1-9][0-9]*$ ]] || die 2 "--timeout '$timeout' is not a positive number of seconds"
+[[ -z $size_groups$size_robots || ($size_groups =~ ^[1-9][0-9]*$ && $size_robots =~ ^[1-9][0-9]*$) ]] ||
+  die 2 "--groups and --robots go together, as positive numbers (got '$size_groups' and '$size_robots')"
+[[ $file_given == 0 || ($secure == 0 && -z $scenario$size_groups) ]] ||
+  die 2 "--file names a finished compose file; --scenario, --groups/--robots and --secure generate one instead"
 
 # Skip, loudly, where this cannot run.
 if ! docker_engine_running; then
@@ -119,8 +138,13 @@ sweep_stale_projects() {
 # labels for anything it missed. Fails loudly if something is still there.
 cleanup_project() {
   [[ -n $project ]] || return 0
-  local p=$project
+  local p=$project id
   project=""
+  # Every container's log, also when the run failed early (kept in --out).
+  mkdir -p "$out/logs"
+  for id in $(docker ps -aq --filter "label=com.docker.compose.project=$p"); do
+    docker logs "$id" >"$out/logs/$(docker inspect -f '{{index .Config.Labels "com.docker.compose.service"}}' "$id").log" 2>&1 || true
+  done
   "${compose[@]}" -p "$p" -f "$file" down --volumes --remove-orphans --timeout 5 >"$work/down.log" 2>&1 || true
   remove_labelled "$p"
   local label=com.docker.compose.project=$p
@@ -134,7 +158,7 @@ cleanup_project() {
 on_exit() {
   local rc=$?
   cleanup_project || rc=1
-  rm -rf "$work/down.log" "$work/compose.yml"
+  rm -rf "$work/down.log" "$work/compose.yml" "$work/certs" "$work/scenario" "$work/make-certs.log"
   [[ $out == "$work/out" ]] || rm -rf "$work"
   exit "$rc"
 }
@@ -155,14 +179,35 @@ else
   docker image inspect "$image" >/dev/null 2>&1 || die 2 "--no-build: image $image does not exist; build it (deploy/build-images.sh)"
 fi
 
-# 2. The compose file.
-if [[ -n $scenario ]]; then
+# 2. The compose file: the one given, or one generated for the scenario, the size, security.
+if [[ -n $scenario$size_groups ]] || ((secure)); then
+  scenario=${scenario:-$root/scenarios/default.pbtxt}
   [[ -f $scenario ]] || die 2 "--scenario $scenario: no such file"
-  "$here/compose-gen.sh" --from-scenario "$scenario" >"$work/compose.yml"
+  if [[ -n $size_groups ]]; then
+    # The same scenario with its top-level size fields set (added when absent).
+    mkdir -p "$work/scenario"
+    sed -e '/^groups:/d' -e '/^robots_per_group:/d' "$scenario" >"$work/scenario/$(basename "$scenario")"
+    printf 'groups: %s\nrobots_per_group: %s\n' "$size_groups" "$size_robots" >>"$work/scenario/$(basename "$scenario")"
+    scenario=$work/scenario/$(basename "$scenario")
+  fi
+  gen=(--from-scenario "$scenario")
+  ((secure == 0)) || gen+=(--secure "$work/certs")
+  "$here/compose-gen.sh" "${gen[@]}" >"$work/compose.yml"
   file=$work/compose.yml
 fi
 [[ -f $file ]] || die 2 "compose file $file does not exist"
 file=$(cd "$(dirname "$file")" && pwd)/$(basename "$file")
+if ((secure)); then
+  # One identity per service (the services are named as the roles' certificates), readable by
+  # the containers' user (uid 10001): this folder is the test's own and removed with it.
+  read -r -a c <<<"${composes[0]}"
+  mapfile -t names < <("${c[@]}" -f "$file" config --services)
+  ((${#names[@]})) || die 2 "$file defines no services"
+  "$root/scripts/make-certs.sh" "$work/certs" "${names[@]}" >"$work/make-certs.log" 2>&1 ||
+    { cat "$work/make-certs.log" >&2; die 1 "scripts/make-certs.sh failed (above)"; }
+  chmod -R a+rX "$work/certs"
+  say "certificates for ${#names[@]} roles in $work/certs"
+fi
 
 container_of() { docker ps -aq --filter "label=com.docker.compose.project=$project" --filter "label=com.docker.compose.service=$1" | head -n 1; }
 
@@ -191,7 +236,8 @@ report_service() {
 run_mission() {
   local run_start=$SECONDS services s cid st code want
   project=swarmtest-$$-$RANDOM
-  export COMPOSE_PROJECT_NAME=$project SWARM_COMPOSE="${compose[*]}" SWARM_COMPOSE_FILE=$file SWARM_IMAGE=$image
+  export COMPOSE_PROJECT_NAME=$project SWARM_COMPOSE="${compose[*]}" SWARM_COMPOSE_FILE=$file SWARM_IMAGE=$image \
+    SWARM_NETWORK=${project}_swarm
   mapfile -t services < <("${compose[@]}" -f "$file" config --services)
   ((${#services[@]})) || die 2 "$file defines no services"
   say "[${compose[*]}] up: project $project, ${#services[@]} services, image $image"
@@ -241,10 +287,7 @@ run_mission() {
     sleep 1
   done
   local t_all=$SECONDS failed=0
-  mkdir -p "$out/logs"
   for s in "${services[@]}"; do
-    cid=$(container_of "$s")
-    [[ -z $cid ]] || docker logs "$cid" >"$out/logs/$s.log" 2>&1 || true
     read -r st code <<<"${state[$s]:-missing -1}"
     want=${expected_exit[$s]:-0}
     if [[ $st != exited ]]; then
@@ -264,14 +307,21 @@ run_mission() {
   docker run --rm --network none -v "$volume:/results:ro" --entrypoint tar "$image" -C /results -cf - . |
     tar -C "$out" -xf -
   check_results "$out" || return 1
-  say "[${compose[*]}] passed: $(summary "$out/metrics.json"); up $((t_up - run_start)) s, GCS done" \
-    "$((t_gcs - t_up)) s later, all exited $((t_all - t_gcs)) s after it, checked and copied in" \
-    "$((SECONDS - t_all)) s; results and logs in $out"
+  # Start-up: from `up` returning to the first tick, i.e. the GCS's whole time less the ticks'.
+  local wall startup
+  wall=$(top_value wall_seconds "$out/metrics.json")
+  startup=$(awk -v t="$((t_gcs - t_up))" -v w="$wall" 'BEGIN { printf "%.0f", t - w }')
+  say "[${compose[*]}] passed: $(summary "$out/metrics.json"); ${#services[@]} containers: up $((t_up - run_start)) s," \
+    "first tick ~${startup} s after up, GCS done $((t_gcs - t_up)) s after up, all exited $((t_all - t_gcs)) s" \
+    "after it, checked and copied in $((SECONDS - t_all)) s; results and logs in $out"
 }
 
 # metrics.json is written by nlohmann::json dump(2): top-level keys sit at two spaces.
 top_value() { sed -n "s/^  \"$1\": \(.*\)$/\1/p" "$2" | sed 's/,$//'; }
-summary() { echo "$(top_value steps "$1") steps, $(top_value wall_seconds "$1") s of mission"; }
+summary() {
+  echo "$(top_value steps "$1") steps, $(top_value wall_seconds "$1") s of mission," \
+    "$(top_value ticks_per_second "$1" | awk '{ printf "%.1f", $1 }') ticks/s"
+}
 
 check_results() {
   local dir=$1 ok=0

@@ -2,7 +2,7 @@
 # The swarm image's entrypoint: starts one role of a run from environment variables, so that a
 # compose service (or `docker run -e ...`) needs no command line.
 #
-#   SWARM_ROLE       sim | gcs | leader | member                      (required)
+#   SWARM_ROLE       sim | gcs | leader | member | discovery              (required)
 #   SWARM_GROUP      group id, from 0                                 (leader, member)
 #   SWARM_INDEX      robot index in the group, 1..R-1 (0 is the leader) (member)
 #   SWARM_SCENARIO   scenario file   (default: the image's scenarios/default.pbtxt)
@@ -10,8 +10,20 @@
 #   SWARM_DOMAIN     DDS domain id, 0..232                            (default 0)
 #   SWARM_PARTITION  DDS partition                                    (default swarm)
 #   SWARM_PROGRESS   bar | plain | none                               (gcs; default plain)
-#   SWARM_DDS_PROFILE  Fast DDS profile (default: the image's deploy/fastdds_container.xml:
-#                    UDP only, multicast discovery; one role per container)
+#   SWARM_DISCOVERY_SERVER  HOST:PORT of the run's Fast DDS discovery server (the compose files:
+#                    discovery:11811): the role is its client (--discovery-server). Unset: simple
+#                    discovery (SPDP multicast, TTL 1, on the container's network).
+#   SWARM_SECURITY_DIR  DDS-Security: the folder holding this role's certificate, key, the CA and
+#                    the signed governance and permissions (scripts/make-certs.sh; compose-gen.sh
+#                    --secure mounts them at /security) (--security-dir). Needs simple discovery:
+#                    Fast DDS 2.9's discovery server cannot authenticate.
+#   SWARM_DDS_PROFILE  Fast DDS profile (default: the image's deploy/fastdds_container.xml with a
+#                    discovery server, deploy/fastdds_container_simple.xml without; UDP only)
+#
+# SWARM_ROLE=discovery runs the discovery server (fast-discovery-server, server id 0) on all of the
+# container's interfaces, on SWARM_DISCOVERY_SERVER's port (default 11811). It ends by itself,
+# SWARM_DISCOVERY_LINGER seconds (default 5) after the GCS wrote SWARM_RUN_DIR/metrics.json (mount
+# the results volume, read-only is enough), so that `docker-compose up` ends with the mission.
 #
 # It runs swarm-ROLE with the matching flags, plus any arguments given to the container. With no
 # SWARM_ROLE but a command (`docker run IMAGE swarm run ...`), it runs that command instead.
@@ -34,8 +46,46 @@ need_id() {
 
 ROLE=${SWARM_ROLE:-}
 if [ -z "$ROLE" ]; then
-  [ $# -gt 0 ] || fail "SWARM_ROLE is not set; set it to sim, gcs, leader or member (or give a command to run)"
+  [ $# -gt 0 ] || fail "SWARM_ROLE is not set; set it to sim, gcs, leader, member or discovery (or give a command to run)"
   exec "$@"
+fi
+data=${SWARM_DATA_DIR:-/opt/swarm/share}
+run_dir=${SWARM_RUN_DIR:-/results}
+server=${SWARM_DISCOVERY_SERVER:-}
+if [ -n "$server" ]; then
+  case $server in
+    ?*:*[!0-9]* | ?*:) fail "SWARM_DISCOVERY_SERVER='$server' is not HOST:PORT (e.g. discovery:11811)" ;;
+    ?*:[0-9]*) ;;
+    *) fail "SWARM_DISCOVERY_SERVER='$server' is not HOST:PORT (e.g. discovery:11811)" ;;
+  esac
+fi
+
+if [ "$ROLE" = discovery ]; then
+  port=${server##*:}
+  port=${port:-11811}
+  profile=${SWARM_DDS_PROFILE:-$data/deploy/fastdds_container.xml}
+  linger=${SWARM_DISCOVERY_LINGER:-5}
+  case $linger in
+    '' | *[!0-9]*) fail "SWARM_DISCOVERY_LINGER='$linger' is not a number of seconds" ;;
+  esac
+  echo "swarm-entrypoint: fast-discovery-server -i 0 -l 0.0.0.0 -p $port (profile $profile; ends ${linger} s after $run_dir/metrics.json is written)"
+  started=$(mktemp)
+  fast-discovery-server -i 0 -l 0.0.0.0 -p "$port" -x "swarm_discovery_server@$profile" "$@" &
+  pid=$!
+  trap 'kill -TERM "$pid" 2>/dev/null' INT TERM
+  while kill -0 "$pid" 2>/dev/null; do
+    # Written by this run's GCS: newer than this container's start (the volume may hold an old one).
+    if [ -n "$(find "$run_dir" -maxdepth 1 -name metrics.json -newer "$started" 2>/dev/null)" ]; then
+      echo "swarm-entrypoint: the mission wrote $run_dir/metrics.json; stopping the discovery server in $linger s"
+      sleep "$linger"
+      kill -TERM "$pid" 2>/dev/null
+      wait "$pid" || true
+      exit 0
+    fi
+    sleep 1
+  done
+  wait "$pid"
+  exit $?
 fi
 
 role_flags=""
@@ -58,13 +108,12 @@ case $ROLE in
     need_id SWARM_INDEX "${SWARM_INDEX:-}" "robot index in the group (1..robots_per_group-1; 0 is the leader)"
     role_flags="--group $SWARM_GROUP --index $SWARM_INDEX"
     ;;
-  *) fail "SWARM_ROLE='$ROLE' is not a role; set it to sim, gcs, leader or member" ;;
+  *) fail "SWARM_ROLE='$ROLE' is not a role; set it to sim, gcs, leader, member or discovery" ;;
 esac
 
-scenario=${SWARM_SCENARIO:-${SWARM_DATA_DIR:-/opt/swarm/share}/scenarios/default.pbtxt}
+scenario=${SWARM_SCENARIO:-$data/scenarios/default.pbtxt}
 [ -f "$scenario" ] ||
   fail "SWARM_SCENARIO=$scenario does not exist in the container; mount the scenario's folder (read-only) and name the file in it"
-run_dir=${SWARM_RUN_DIR:-/results}
 domain=${SWARM_DOMAIN:-0}
 case $domain in
   '' | *[!0-9]*) fail "SWARM_DOMAIN='$domain' is not a DDS domain id (0..232)" ;;
@@ -73,7 +122,21 @@ esac
 partition=${SWARM_PARTITION:-swarm}
 [ -n "$partition" ] || fail "SWARM_PARTITION is empty; leave it unset for the default 'swarm'"
 
-SWARM_DDS_PROFILE=${SWARM_DDS_PROFILE:-${SWARM_DATA_DIR:-/opt/swarm/share}/deploy/fastdds_container.xml}
+security=${SWARM_SECURITY_DIR:-}
+if [ -n "$security" ]; then
+  [ -d "$security" ] ||
+    fail "SWARM_SECURITY_DIR=$security does not exist in the container; mount the certificates there (deploy/compose-gen.sh --secure DIR does)"
+  [ -z "$server" ] ||
+    fail "SWARM_SECURITY_DIR and SWARM_DISCOVERY_SERVER are both set; Fast DDS 2.9's discovery server cannot authenticate, so a secure role needs simple discovery: unset SWARM_DISCOVERY_SERVER"
+  role_flags="$role_flags --security-dir $security"
+fi
+if [ -n "$server" ]; then
+  role_flags="$role_flags --discovery-server $server"
+  default_profile=$data/deploy/fastdds_container.xml
+else
+  default_profile=$data/deploy/fastdds_container_simple.xml
+fi
+SWARM_DDS_PROFILE=${SWARM_DDS_PROFILE:-$default_profile}
 export SWARM_DDS_PROFILE
 
 echo "swarm-entrypoint: swarm-$ROLE $role_flags (scenario $scenario, domain $domain, partition $partition, profile $SWARM_DDS_PROFILE)"

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Checks of deploy/ that need no Docker engine: the committed compose file is what the generator
-# writes, every compose command installed accepts it, the container Fast DDS profile keeps the
-# loopback profile's QoS, the build packages are ones scripts/install-deps.sh installs, the
-# entrypoint maps its environment to the right flags (and names what is wrong), and the apt
-# source parser reads both formats.
+# writes (a discovery service, every role its client; --secure: certificates, no discovery
+# service), every compose command installed accepts them, the container Fast DDS profiles keep the
+# loopback profile's QoS and send no multicast (the discovery-server one), the image has the
+# discovery server, the build packages are ones scripts/install-deps.sh installs, the entrypoint
+# maps its environment to the right flags (and names what is wrong), and the apt source parser
+# reads both formats.
 #   check_deploy_files.sh SOURCE_DIR
 set -uo pipefail
 src=${1:?usage: check_deploy_files.sh SOURCE_DIR}
@@ -24,36 +26,64 @@ trap 'rm -rf "$work"' EXIT
 "$deploy/compose-gen.sh" --groups 2 --robots 4 >"$work/2x4.yml"
 grep -q '^  member-1-3:$' "$work/2x4.yml" || fail "compose-gen.sh --groups 2 --robots 4 has no member-1-3"
 grep -q '^  member-1-4:$' "$work/2x4.yml" && fail "compose-gen.sh --groups 2 --robots 4 has a member-1-4"
+grep -q '^  discovery:$' "$work/2x4.yml" || fail "compose-gen.sh writes no discovery service"
+[[ $(grep -c '^  SWARM_DISCOVERY_SERVER: discovery:11811$' "$work/2x4.yml") == 1 ]] ||
+  fail "compose-gen.sh does not make every role a client of the discovery service (x-env SWARM_DISCOVERY_SERVER)"
+# --secure: every role mounts its own certificate and key (and nobody the CA's key); no discovery
+# service, since Fast DDS 2.9's discovery server cannot authenticate.
+"$deploy/compose-gen.sh" --groups 2 --robots 2 --secure /certs >"$work/secure.yml"
+grep -q '^  discovery:$\|SWARM_DISCOVERY_SERVER' "$work/secure.yml" && fail "compose-gen.sh --secure keeps the discovery server"
+grep -q 'ca\.key' "$work/secure.yml" && fail "compose-gen.sh --secure mounts the CA's private key"
+for s in sim gcs leader-0 leader-1 member-0-1 member-1-1; do
+  n=$(sed -n "/^  $s:\$/,/^\$/p" "$work/secure.yml" | grep -c "/security/\($s\.pem\|$s\.key\|ca\.pem\|governance\.p7s\|permissions\.p7s\):ro\$")
+  [[ $n == 5 ]] || fail "compose-gen.sh --secure: service $s mounts $n of its 5 security files"
+done
+grep -q '^  SWARM_SECURITY_DIR: /security$' "$work/secure.yml" || fail "compose-gen.sh --secure sets no SWARM_SECURITY_DIR"
+"$deploy/compose-gen.sh" --secure certs >/dev/null 2>&1 && fail "compose-gen.sh --secure accepted a relative folder"
 checked=0
 for c in "docker compose" "docker-compose"; do
   read -r -a cmd <<<"$c"
   "${cmd[@]}" version >/dev/null 2>&1 || continue
   checked=1
-  for f in "$deploy/docker-compose.yml" "$work/2x4.yml"; do
+  for f in "$deploy/docker-compose.yml" "$work/2x4.yml" "$work/secure.yml"; do
     services=$(cd "$(dirname "$f")" && "${cmd[@]}" -f "$f" config --services 2>"$work/err") ||
       fail "'$c config' rejects $f: $(cat "$work/err")"
-    [[ $f != "$deploy/docker-compose.yml" || $(wc -l <<<"$services") == 11 ]] ||
-      fail "'$c config' sees $(wc -l <<<"$services") services in the 3 x 3 file, not 11"
+    [[ $f != "$deploy/docker-compose.yml" || $(wc -l <<<"$services") == 12 ]] ||
+      fail "'$c config' sees $(wc -l <<<"$services") services in the 3 x 3 file, not 12 (discovery, sim, gcs, 3 leaders, 6 members)"
   done
 done
 ((checked)) || echo "note: no compose command installed; compose files not validated by compose itself"
 
-# 3. The container profile keeps the loopback one's discovery timing and every writer/reader
-#    profile, verbatim.
-same_part() {  # same_part SED_SCRIPT WHAT (run with sed -n)
-  if ! diff <(sed -n "$1" "$deploy/fastdds_loopback.xml") \
-    <(sed -n "$1" "$deploy/fastdds_container.xml") >"$work/part.diff"; then
-    fail "deploy/fastdds_container.xml's $2 differs from deploy/fastdds_loopback.xml's (change both):"
+# 3. The container profiles (discovery-server client, and simple discovery for secure
+#    deployments) keep the loopback one's discovery timing and every writer/reader profile,
+#    verbatim; neither has shared memory; the discovery-server one sends no multicast.
+same_part() {  # same_part FILE SED_SCRIPT WHAT (run with sed -n)
+  if ! diff <(sed -n "$2" "$deploy/fastdds_loopback.xml") <(sed -n "$2" "$deploy/$1") >"$work/part.diff"; then
+    fail "deploy/$1's $3 differs from deploy/fastdds_loopback.xml's (change them together):"
     cat "$work/part.diff" >&2
   fi
 }
-# The first discovery_config: the robots' participant (the loopback file's second one is its
-# discovery server's, which containers do not run).
-same_part '/<discovery_config>/,/<\/discovery_config>/{p;/<\/discovery_config>/q;}' "discovery timing"
-same_part '/<data_writer/,$p' "writer/reader QoS profiles"
-grep -q '<type>SHM</type>' "$deploy/fastdds_container.xml" && fail "fastdds_container.xml enables the SHM transport"
-grep -q '<useBuiltinTransports>false</useBuiltinTransports>' "$deploy/fastdds_container.xml" ||
-  fail "fastdds_container.xml leaves the builtin transports (SHM) on"
+for xml in fastdds_container.xml fastdds_container_simple.xml; do
+  # The first discovery_config: the robots' participant (the loopback file's second one is its
+  # discovery server's).
+  same_part "$xml" '/<discovery_config>/,/<\/discovery_config>/{p;/<\/discovery_config>/q;}' "discovery timing"
+  same_part "$xml" '/<data_writer/,$p' "writer/reader QoS profiles"
+  grep -q '<type>SHM</type>' "$deploy/$xml" && fail "$xml enables the SHM transport"
+  grep -q '<useBuiltinTransports>false</useBuiltinTransports>' "$deploy/$xml" ||
+    fail "$xml leaves the builtin transports (SHM) on"
+done
+# The participant's metatraffic locator is given, so Fast DDS makes no default multicast locator;
+# the server profile is a SERVER; nothing names a multicast address.
+participant=$(sed -n '/<participant profile_name="swarm_participant"/,/<\/participant>/p' "$deploy/fastdds_container.xml")
+grep -q '<metatrafficUnicastLocatorList>' <<<"$participant" ||
+  fail "fastdds_container.xml's swarm_participant has no metatrafficUnicastLocatorList (Fast DDS would add multicast)"
+grep -q 'MulticastLocatorList\|<TTL>\|239\.255' <<<"$participant" && fail "fastdds_container.xml's swarm_participant uses multicast"
+sed -n '/<participant profile_name="swarm_discovery_server"/,/<\/participant>/p' "$deploy/fastdds_container.xml" |
+  grep -q '<discoveryProtocol>SERVER</discoveryProtocol>' ||
+  fail "fastdds_container.xml has no swarm_discovery_server profile with discoveryProtocol SERVER"
+# The discovery service runs fast-discovery-server from the same image.
+grep -qx 'fastdds-tools' "$deploy/packages-runtime.txt" ||
+  fail "deploy/packages-runtime.txt lacks fastdds-tools (fast-discovery-server, the compose service 'discovery')"
 
 # 4. The image's build packages are a subset of what the host build installs.
 while read -r p; do
@@ -62,12 +92,13 @@ while read -r p; do
 done < <(sed -e 's/#.*//' -e '/^[[:space:]]*$/d' "$deploy/packages-build.txt")
 
 # 5. The entrypoint: environment -> flags, and one line naming what is wrong.
-mkdir -p "$work/bin"
-for r in sim gcs leader member; do
-  printf '#!/bin/sh\necho "swarm-%s $*"\n' "$r" >"$work/bin/swarm-$r"
-  chmod +x "$work/bin/swarm-$r"
+mkdir -p "$work/bin" "$work/results"
+for r in swarm-sim swarm-gcs swarm-leader swarm-member fast-discovery-server; do
+  printf '#!/bin/sh\necho "%s $*"\n' "$r" >"$work/bin/$r"
+  chmod +x "$work/bin/$r"
 done
 touch "$work/s.pbtxt"
+mkdir -p "$work/security"
 entry() { env -i PATH="$work/bin:/usr/bin:/bin" SWARM_SCENARIO="$work/s.pbtxt" "$@" sh "$deploy/entrypoint.sh"; }
 expect_run() {  # expect_run "EXPECTED COMMAND LINE" VAR=VALUE...
   local want=$1 got
@@ -83,18 +114,40 @@ expect_error() {  # expect_error "TEXT IN THE MESSAGE" VAR=VALUE...
   [[ $rc == 2 ]] || fail "entrypoint with $*: exit code $rc, expected 2"
   [[ $(wc -l <<<"$got") == 1 && $got == *"$want"* ]] || fail "entrypoint with $*: said '$got', expected one line with '$want'"
 }
+expect_profile() {  # expect_profile PROFILE VAR=VALUE...: the profile the entrypoint announces
+  local want=$1 first
+  shift
+  first=$(entry "$@" 2>&1 | head -n 1)
+  [[ $first == *"profile $want)" ]] || fail "entrypoint with $*: profile is not $want: '$first'"
+}
 common="--scenario $work/s.pbtxt --run-dir /results --domain 0 --partition swarm"
+ds="--discovery-server discovery:11811"
 expect_run "swarm-sim $common" SWARM_ROLE=sim
-expect_run "swarm-gcs --progress plain $common" SWARM_ROLE=gcs
+expect_run "swarm-sim $ds $common" SWARM_ROLE=sim SWARM_DISCOVERY_SERVER=discovery:11811
+expect_run "swarm-gcs --progress plain $ds $common" SWARM_ROLE=gcs SWARM_DISCOVERY_SERVER=discovery:11811
 expect_run "swarm-leader --group 2 $common" SWARM_ROLE=leader SWARM_GROUP=2
 expect_run "swarm-member --group 1 --index 2 --scenario $work/s.pbtxt --run-dir /r --domain 7 --partition p" \
   SWARM_ROLE=member SWARM_GROUP=1 SWARM_INDEX=2 SWARM_RUN_DIR=/r SWARM_DOMAIN=7 SWARM_PARTITION=p
-first=$(entry SWARM_ROLE=sim 2>&1 | head -n 1)
-[[ $first == *"profile /opt/swarm/share/deploy/fastdds_container.xml)" ]] ||
-  fail "a role's default Fast DDS profile is not the container one: '$first'"
-profile=$(env -i PATH="$work/bin:/usr/bin:/bin" SWARM_ROLE=sim SWARM_SCENARIO="$work/s.pbtxt" SWARM_DDS_PROFILE=/p.xml \
-  sh "$deploy/entrypoint.sh" 2>&1 | head -n 1)
-[[ $profile == *"profile /p.xml)" ]] || fail "SWARM_DDS_PROFILE=/p.xml was not kept: '$profile'"
+expect_run "swarm-leader --group 0 --security-dir $work/security $common" \
+  SWARM_ROLE=leader SWARM_GROUP=0 SWARM_SECURITY_DIR="$work/security"
+expect_profile /opt/swarm/share/deploy/fastdds_container.xml SWARM_ROLE=sim SWARM_DISCOVERY_SERVER=discovery:11811
+expect_profile /opt/swarm/share/deploy/fastdds_container_simple.xml SWARM_ROLE=sim
+expect_profile /p.xml SWARM_ROLE=sim SWARM_DDS_PROFILE=/p.xml
+expect_run "fast-discovery-server -i 0 -l 0.0.0.0 -p 11811 -x swarm_discovery_server@/opt/swarm/share/deploy/fastdds_container.xml" \
+  SWARM_ROLE=discovery SWARM_DISCOVERY_SERVER=discovery:11811
+expect_run "fast-discovery-server -i 0 -l 0.0.0.0 -p 7777 -x swarm_discovery_server@/p.xml" \
+  SWARM_ROLE=discovery SWARM_DISCOVERY_SERVER=d:7777 SWARM_DDS_PROFILE=/p.xml
+# The discovery server ends by itself once the mission has written metrics.json (a stale one,
+# older than the container, does not count).
+printf '#!/bin/sh\nexec sleep 30\n' >"$work/bin/fast-discovery-server"
+touch -d '1 hour ago' "$work/results/metrics.json"
+start=$SECONDS
+(sleep 2; touch "$work/results/metrics.json") &
+got=$(entry SWARM_ROLE=discovery SWARM_RUN_DIR="$work/results" SWARM_DISCOVERY_LINGER=0 2>&1)
+rc=$?
+wait
+((SECONDS - start >= 2 && SECONDS - start < 10 && rc == 0)) ||
+  fail "the discovery role did not end (code 0) soon after metrics.json was written: code $rc after $((SECONDS - start)) s: $got"
 expect_error "SWARM_ROLE is not set" SWARM_ROLE=
 expect_error "SWARM_ROLE='pilot' is not a role" SWARM_ROLE=pilot
 expect_error "SWARM_GROUP is not set; a leader needs its group id" SWARM_ROLE=leader
@@ -105,6 +158,11 @@ expect_error "SWARM_INDEX='a' is not a number" SWARM_ROLE=member SWARM_GROUP=0 S
 expect_error "SWARM_PROGRESS='fancy' is not bar, plain or none" SWARM_ROLE=gcs SWARM_PROGRESS=fancy
 expect_error "SWARM_DOMAIN=233 is above 232" SWARM_ROLE=sim SWARM_DOMAIN=233
 expect_error "SWARM_SCENARIO=/nope.pbtxt does not exist" SWARM_ROLE=sim SWARM_SCENARIO=/nope.pbtxt
+expect_error "SWARM_DISCOVERY_SERVER='discovery' is not HOST:PORT" SWARM_ROLE=sim SWARM_DISCOVERY_SERVER=discovery
+expect_error "SWARM_DISCOVERY_SERVER='d:x1' is not HOST:PORT" SWARM_ROLE=discovery SWARM_DISCOVERY_SERVER=d:x1
+expect_error "SWARM_SECURITY_DIR=/nope does not exist in the container" SWARM_ROLE=sim SWARM_SECURITY_DIR=/nope
+expect_error "SWARM_SECURITY_DIR and SWARM_DISCOVERY_SERVER are both set" \
+  SWARM_ROLE=sim SWARM_SECURITY_DIR="$work/security" SWARM_DISCOVERY_SERVER=discovery:11811
 
 # 6. The Debian mirror comes from apt's configuration, in both formats.
 mkdir -p "$work/apt/sources.list.d"
