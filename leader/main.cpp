@@ -1,8 +1,8 @@
-// swarm-leader: a group leader robot and its group's planner. See leader_node.hpp.
+// swarm-leader: a group's first leader robot and its group's planner. See candidate_node.hpp.
 #include "swarm/comm/fault_injection.hpp"
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/comm/role.hpp"
-#include "swarm/leader/leader_node.hpp"
+#include "swarm/leader/candidate_node.hpp"
 
 int main(int argc, char** argv) {
   using namespace swarm;
@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
     const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Leader, "leader");
     comm::Participant participant(setup.dds);
     comm::LockstepAgent agent(participant, setup.topology, setup.links, setup.topology.leader(options.group));
-    leader::LeaderNode node(agent, setup, options.group);
+    leader::CandidateNode node(agent, setup, options.group, 0);
     comm::FaultInjector faults(setup.world.scenario, setup.topology.name_of(agent.self()));
     comm::run_lockstep(agent, [&](const msgs::Clock& clock) {
       faults.at_tick(clock.tick());

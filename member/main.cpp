@@ -17,6 +17,7 @@
 #include "swarm/comm/fault_injection.hpp"
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/comm/role.hpp"
+#include "swarm/leader/candidate_node.hpp"
 #include "swarm/member/member_node.hpp"
 
 namespace {
@@ -28,13 +29,23 @@ void run_member(comm::Participant& participant, const comm::RoleSetup& setup, in
                 comm::FaultInjector& faults) {
   const comm::AgentId self = setup.topology.robot(group, index);
   comm::LockstepAgent agent(participant, setup.topology, setup.links, self);
-  member::MemberNode node(agent, setup, group, index);
-  comm::run_lockstep(agent, [&](const msgs::Clock& clock) {
-    faults.at_tick(clock.tick());
-    node.step(clock);
-    return false;
-  });
-  agent.send_report("member", node.report_json());
+  const auto run = [&](auto& node) {
+    comm::run_lockstep(agent, [&](const msgs::Clock& clock) {
+      faults.at_tick(clock.tick());
+      node.step(clock);
+      return false;
+    });
+    agent.send_report("member", node.report_json());
+  };
+  // A standby leader (comm/leadership.hpp) is a candidate: member until the clock names it leader.
+  if (setup.topology.is_candidate(self)) {
+    leader::CandidateNode node(agent, setup, group, index);
+    run(node);
+  } else {
+    member::RobotAgent robot(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution());
+    member::MemberNode node(agent, setup, group, index, robot);
+    run(node);
+  }
 }
 
 }  // namespace

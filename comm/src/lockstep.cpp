@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "swarm/comm/leadership.hpp"
+
 namespace swarm::comm {
 
 std::chrono::seconds stall_timeout() {
@@ -38,6 +40,7 @@ msgs::AgentReport Mailbox::make_report(const std::string& role, const std::strin
     t.link(key.second);
     t.sent_messages(c.sent_messages);
     t.sent_bytes(c.sent_bytes);
+    t.addressed_messages(c.addressed_messages);
     t.received_messages(c.received_messages);
     t.received_bytes(c.received_bytes);
     t.lost_transmissions(c.lost_transmissions);
@@ -314,7 +317,8 @@ LockstepClock::LockstepClock(Bus& bus, const Topology& topology, const LinkTable
       from_sim_(topology.agents(), 0),
       lost_(topology.agents(), false),
       last_heard_(topology.agents(), std::chrono::steady_clock::now()),
-      next_undone_(topology.agents(), 0) {
+      next_undone_(topology.agents(), 0),
+      leaders_(topology.leaders()) {
   ready_[topology.sim()] = true;
   clock_writer_ = std::make_unique<Writer<msgs::Clock>>(bus, topic::kClock);
   // The agents' Done heartbeats, and the bus's verdict on their liveliness.
@@ -446,6 +450,8 @@ void LockstepClock::publish_clock(std::uint32_t k, const std::vector<msgs::Robot
   }
   clock.expected(expected);
   clock.robots(robots);
+  leaders_ = next_leaders(topology_, leaders_, robots);
+  clock.leaders(leaders_);
   bool anyone_lost = false;
   if (stop) {
     std::lock_guard<std::mutex> lock(mutex_);

@@ -82,7 +82,8 @@ RoleSetup load_role(const RoleOptions& o, RoleKind kind, const std::string& name
   const std::string dir = std::filesystem::path(o.scenario_path).parent_path().string();
   setup.world = config::resolve_world(scenario, dir.empty() ? "." : dir);
   const auto& s = setup.world.scenario;
-  setup.topology = Topology(static_cast<int>(s.groups()), static_cast<int>(s.robots_per_group()));
+  setup.topology = Topology(static_cast<int>(s.groups()), static_cast<int>(s.robots_per_group()),
+                            config::leader_standbys(s));
   if ((kind == RoleKind::Leader || kind == RoleKind::Member) &&
       (o.group < 0 || o.group >= setup.topology.groups())) {
     throw config::ConfigError("--group " + std::to_string(o.group) + " is outside the scenario's groups 0.." +

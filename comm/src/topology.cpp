@@ -16,6 +16,28 @@ std::vector<AgentId> Topology::leaders() const {
   return out;
 }
 
+std::vector<AgentId> Topology::candidates(int group) const {
+  std::vector<AgentId> out;
+  for (int i = 0; i <= standbys_; ++i) out.push_back(robot(group, i));
+  return out;
+}
+
+std::vector<AgentId> Topology::all_candidates() const {
+  std::vector<AgentId> out;
+  for (int g = 0; g < groups_; ++g) {
+    for (AgentId a : candidates(g)) out.push_back(a);
+  }
+  return out;
+}
+
+std::vector<AgentId> Topology::group_except(int group, AgentId a) const {
+  std::vector<AgentId> out;
+  for (int i = 0; i < per_group_; ++i) {
+    if (robot(group, i) != a) out.push_back(robot(group, i));
+  }
+  return out;
+}
+
 std::vector<AgentId> Topology::robot_ids() const {
   std::vector<AgentId> out;
   for (int r = 0; r < robots(); ++r) out.push_back(static_cast<AgentId>(r));

@@ -2,10 +2,12 @@
 
 namespace swarm::comm {
 
-void TrafficAccount::sent(const std::string& family, const std::string& link, std::uint64_t bytes) {
+void TrafficAccount::sent(const std::string& family, const std::string& link, std::uint64_t bytes,
+                          std::size_t receivers) {
   std::lock_guard<std::mutex> lock(mutex_);
   TrafficCount& c = counts_[{family, link}];
   c.sent_messages += 1;
+  c.addressed_messages += receivers;
   c.sent_bytes += bytes;
 }
 

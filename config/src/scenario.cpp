@@ -196,7 +196,12 @@ void validate_fault(Problems& p, const Scenario& s, int index) {
     }
   }
   if (f.has_kill_at_tick()) {
-    if (!member) p.add(field + ".agent", "be a member to be killed (a group cannot lose its leader)", f.agent());
+    if (!member && leader_standbys(s) == 0) {
+      p.add(field + ".agent",
+            "be a member to be killed: with no standby leader (leader_standbys 0, or a group of one robot) a "
+            "group cannot lose its leader",
+            f.agent());
+    }
     p.at_least(field + ".kill_at_tick", 1, f.kill_at_tick());
   }
   if (f.has_cut_from_tick() || f.has_cut_to_tick()) {
@@ -364,6 +369,10 @@ void validate(const Scenario& s, const std::string& source) {
 
   p.at_least("groups", 1, s.groups());
   p.at_least("robots_per_group", 1, s.robots_per_group());
+  if (s.has_leader_standbys() && s.robots_per_group() >= 1 && s.leader_standbys() > s.robots_per_group() - 1) {
+    p.add("leader_standbys", "be at most robots_per_group - 1 = " + std::to_string(s.robots_per_group() - 1),
+          std::to_string(s.leader_standbys()));
+  }
   const std::uint64_t robots = std::uint64_t{s.groups()} * s.robots_per_group();
   if (robots > kMaxRobots) {
     p.add("groups x robots_per_group", "give at most " + std::to_string(kMaxRobots) + " robots",
@@ -465,6 +474,11 @@ TaskKind task_of(const swarm::scenario::Phase& phase) {
     case swarm::scenario::Phase::kCollect: return TaskKind::Collect;
     default: return TaskKind::Explore;
   }
+}
+
+int leader_standbys(const Scenario& s) {
+  const int most = s.robots_per_group() > 0 ? static_cast<int>(s.robots_per_group()) - 1 : 0;
+  return std::min(static_cast<int>(s.leader_standbys()), most);
 }
 
 std::vector<swarm::scenario::Phase> mission_phases(const Scenario& s) {

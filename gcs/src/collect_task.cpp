@@ -19,7 +19,7 @@ void CollectGcsTask::start(GcsContext& ctx) {
                                  ctx.setup.world.scenario.seed(), "collect");
   std::vector<int> groups;
   for (int g = 0; g < t.groups(); ++g) {
-    if (ctx.alive(t.leader(g))) groups.push_back(g);
+    if (ctx.alive(ctx.leader_of(g))) groups.push_back(g);
   }
   objects_of_group_.assign(static_cast<std::size_t>(t.groups()), 0);
   done_.assign(static_cast<std::size_t>(t.groups()), true);
@@ -33,7 +33,7 @@ void CollectGcsTask::start(GcsContext& ctx) {
     double best_d = std::numeric_limits<double>::infinity();
     for (int g : groups) {
       if (ids[static_cast<std::size_t>(g)].size() >= room) continue;
-      const planner::Cell l = ctx.cell_of(t.leader(g));
+      const planner::Cell l = ctx.cell_of(ctx.leader_of(g));
       const double d = std::hypot(o.x - l.x, o.y - l.y);
       if (d < best_d) best_d = d, best = g;
     }

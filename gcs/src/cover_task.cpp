@@ -24,7 +24,7 @@ std::vector<int> CoverGcsTask::living_groups(const GcsContext& ctx) const {
   std::vector<int> out;
   const comm::Topology& t = ctx.setup.topology;
   for (int g = 0; g < t.groups(); ++g) {
-    if (ctx.alive(t.leader(g))) out.push_back(g);  // a group without its leader cannot act
+    if (ctx.alive(ctx.leader_of(g))) out.push_back(g);  // a group without its leader cannot act
   }
   return out;
 }
@@ -68,7 +68,7 @@ void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cell
     int living = 0;
     for (int i = 0; i < t.robots_per_group(); ++i) living += ctx.alive(t.robot(g, i)) ? 1 : 0;
     if (config_.hierarchical()) {
-      robot_ids.push_back(t.leader(g));
+      robot_ids.push_back(ctx.leader_of(g));
       weights.push_back(living);
     } else {
       for (int i = 0; i < t.robots_per_group(); ++i) {
@@ -166,7 +166,7 @@ void CoverGcsTask::step(GcsContext& ctx) {
   bool orphaned = false, all_done = true;
   for (int g = 0; g < t.groups(); ++g) {
     if (!group_alive_[static_cast<std::size_t>(g)]) continue;
-    if (!ctx.alive(t.leader(g))) {
+    if (!ctx.alive(ctx.leader_of(g))) {
       for (std::size_t i = 0; i < left.size() && !orphaned; ++i) orphaned = left[i] && group_of_cell_[i] == g;
     } else {
       all_done = all_done && group_done_[static_cast<std::size_t>(g)];

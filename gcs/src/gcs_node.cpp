@@ -53,25 +53,30 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, const
       phases_(config::mission_phases(setup.world.scenario)),
       progress_(progress, setup.world.scenario.max_ticks()),
       record_(record::run_record_path(run_dir)),
+      leaders_(setup.topology),
       last_heard_(setup.topology.groups(), 0),
       unreachable_after_ticks_(unreachable_after_ticks(setup.links)),
       unreachable_(setup.topology.groups()),
       robots_lost_(setup.topology.robots()) {
+  // Every candidate leader (comm/leadership.hpp) writes the leaders' topics; only the leader of
+  // the moment is heard. What the map patches carry is true whoever sent it, so a deposed
+  // leader's late patches are fused too.
+  const int writers = static_cast<int>(setup.topology.all_candidates().size());
   agent.subscribe<msgs::Heartbeat>(topic::kHeartbeat, LinkClass::LeaderGcs, [this](const msgs::Heartbeat& h) {
-    if (h.group() < last_heard_.size()) last_heard_[h.group()] = agent_.tick();
-  }, comm::Delivery::Reliable, setup.topology.groups());
+    if (h.group() < last_heard_.size() && from_leader(h.header())) last_heard_[h.group()] = agent_.tick();
+  }, comm::Delivery::Reliable, writers);
   agent.subscribe<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, [this](const msgs::MapPatch& p) {
     mission_.fuse(p.group(), comm::decode_patch(p.data(), setup_.world.truth.size()));
-  }, comm::Delivery::Reliable, setup.topology.groups());
-  agent.subscribe<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs,
-                                     [this](const msgs::GroupStatus& s) { statuses_.push_back(s); },
-                                     comm::Delivery::Reliable, setup.topology.groups());
-  agent.subscribe<msgs::TaskReport>(topic::kTaskReport, LinkClass::LeaderGcs,
-                                    [this](const msgs::TaskReport& r) { task_reports_.push_back(r); },
-                                    comm::Delivery::Reliable, setup.topology.groups());
+  }, comm::Delivery::Reliable, writers);
+  agent.subscribe<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs, [this](const msgs::GroupStatus& s) {
+    if (from_leader(s.header())) statuses_.push_back(s);
+  }, comm::Delivery::Reliable, writers);
+  agent.subscribe<msgs::TaskReport>(topic::kTaskReport, LinkClass::LeaderGcs, [this](const msgs::TaskReport& r) {
+    if (from_leader(r.header())) task_reports_.push_back(r);
+  }, comm::Delivery::Reliable, writers);
   agent.subscribe<msgs::PlanReport>(topic::kPlanReport, LinkClass::Telemetry,
                                     [this](const msgs::PlanReport& p) { on_plan(p); }, comm::Delivery::Reliable,
-                                    setup.topology.groups());
+                                    writers);
   reports_reader_ = std::make_unique<comm::Reader<msgs::AgentReport>>(
       agent.bus(), topic::kReport, [this](msgs::AgentReport&& r) {
         std::lock_guard<std::mutex> lock(reports_mutex_);
@@ -80,11 +85,13 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, const
 
   // The mission: one task per phase, each with the topics made here once (DDS discovery must be
   // complete before tick 0).
-  std::vector<comm::AgentId> leaders_and_sim = setup.topology.leaders();
+  // To every candidate leader: a standby keeps the latest of each, to take its group over.
+  const std::vector<comm::AgentId> leaders = setup.topology.all_candidates();
+  std::vector<comm::AgentId> leaders_and_sim = leaders;
   leaders_and_sim.push_back(setup.topology.sim());
   auto& phase = agent.advertise<msgs::PhaseStart>(topic::kPhase, LinkClass::LeaderGcs, leaders_and_sim);
-  auto& order = agent.advertise<msgs::TaskOrder>(topic::kTaskOrder, LinkClass::LeaderGcs, setup.topology.leaders());
-  auto& round = agent.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, setup.topology.leaders());
+  auto& order = agent.advertise<msgs::TaskOrder>(topic::kTaskOrder, LinkClass::LeaderGcs, leaders);
+  auto& round = agent.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, leaders);
   outlets_.order = [this, &order](msgs::TaskOrder& o) {
     o.phase(phase_);
     order.send(o);
@@ -112,6 +119,13 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, const
   h->set_groups(setup.topology.groups());
   h->set_robots_per_group(setup.topology.robots_per_group());
   record_.append(header);
+}
+
+bool GcsNode::from_leader(const msgs::Stamp& stamp) {
+  leaders_.observe(agent_.clock());  // the tick being processed: its handlers run before step()
+  if (leaders_.led_at(stamp.sender(), stamp.tick())) return true;
+  ++not_from_a_leader_;
+  return false;
 }
 
 void GcsNode::on_plan(const msgs::PlanReport& p) {
@@ -148,6 +162,7 @@ bool GcsNode::step(const msgs::Clock& clock) {
   if (clock.tick() == 0) first_tick_time_ = now;
   last_tick_time_ = now;
   last_tick_ = clock.tick();
+  leaders_.observe(clock);
 
   std::vector<planner::Cell> robots;
   record::Frame poses;
@@ -278,6 +293,7 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
       bt.link = tt.link();
       bt.messages += tt.sent_messages();
       bt.bytes += tt.sent_bytes();
+      bt.addressed_messages += tt.addressed_messages();
       bt.received_messages += tt.received_messages();
       bt.lost_transmissions += tt.lost_transmissions();
       bt.dropped_messages += tt.dropped_messages();
@@ -311,10 +327,23 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
   for (std::size_t i = 0; i < mission_.round_ticks().size(); ++i) {
     m.rounds.emplace_back(static_cast<std::uint32_t>(i + 1), mission_.round_ticks()[i]);
   }
-  for (int g = 0; g < t.groups(); ++g) {
-    const auto it = m.agents.find(t.name_of(t.leader(g)));
+  // Every robot that led a group planned for it (a standby that took over, too).
+  for (comm::AgentId c : t.all_candidates()) {
+    const auto it = m.agents.find(t.name_of(c));
     if (it != m.agents.end() && it->second.is_object()) m.planning_seconds_total += it->second.value("planning_seconds", 0.0);
   }
+  for (const auto& c : leaders_.changes()) {
+    record::Handover h{c.group, t.name_of(c.from), t.name_of(c.to), c.tick, std::nullopt, std::nullopt, std::nullopt};
+    // The old leader's loss, as the simulator saw it: the last one before the hand-over.
+    for (const auto& l : sim.agents_lost) {
+      if (l.agent != h.from || l.missed_tick > c.tick) continue;
+      h.from_stopped_at_tick = l.missed_tick;
+      h.leaderless_ticks = c.tick - l.missed_tick;
+      h.detection_seconds = l.detection_seconds;
+    }
+    m.leader_handovers.push_back(h);
+  }
+  m.messages_from_deposed_leaders = not_from_a_leader_;
   m.planning_ms_per_group_round =
       mission_.round() > 0 ? 1000.0 * m.planning_seconds_total / (mission_.round() * t.groups()) : 0.0;
   m.explored_curve = sim.explored_curve;

@@ -60,7 +60,7 @@ void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
   planner::mapf::Instance in;
   in.map = known_;
   for (int r = 0; r < t.robots(); ++r) {
-    const bool led = ctx.alive(t.leader(t.group_of(static_cast<comm::AgentId>(r))));
+    const bool led = ctx.alive(ctx.leader_of(t.group_of(static_cast<comm::AgentId>(r))));
     if (ctx.alive(r) && led && goals_[static_cast<std::size_t>(r)].x >= 0) {
       planned_.push_back(r);
       in.starts.push_back(ctx.cell_of(r));
@@ -166,11 +166,11 @@ void MapfGcsTask::step(GcsContext& ctx) {
   // plan again once every group stands still.
   bool lost = false;
   for (int r : planned_) {
-    lost = lost || !ctx.alive(r) || !ctx.alive(t.leader(t.group_of(static_cast<comm::AgentId>(r))));
+    lost = lost || !ctx.alive(r) || !ctx.alive(ctx.leader_of(t.group_of(static_cast<comm::AgentId>(r))));
   }
   bool all_done = true, all_held = true;
   for (int g = 0; g < t.groups(); ++g) {
-    if (!group_in_plan_[static_cast<std::size_t>(g)] || !ctx.alive(t.leader(g))) continue;
+    if (!group_in_plan_[static_cast<std::size_t>(g)] || !ctx.alive(ctx.leader_of(g))) continue;
     all_done = all_done && group_done_[static_cast<std::size_t>(g)];
     all_held = all_held && (group_held_[static_cast<std::size_t>(g)] || group_done_[static_cast<std::size_t>(g)]);
   }

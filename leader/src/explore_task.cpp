@@ -47,13 +47,10 @@ void ExploreGroupTask::plan(std::uint32_t round, GroupContext& ctx) {
   planner::ExploreInput in;
   in.global_map = &ctx.map.global();
   in.group_map = &ctx.map.group();
-  for (int g = 0; g < t.groups(); ++g) {
-    const auto& r = ctx.clock.robots()[t.leader(g)];
-    in.leader_positions.push_back({r.x(), r.y()});
-  }
+  for (int g = 0; g < t.groups(); ++g) in.leader_positions.push_back(ctx.leader_cell(g));
   in.group = ctx.group;
-  // Only the living robots get waypoints (K-Means with k = living members); index 0, the leader,
-  // is always alive.
+  // Only the living robots get waypoints (K-Means with k = living members); the leader's own
+  // robot is always alive.
   const std::vector<int> living = ctx.living();
   for (int i : living) in.member_positions.push_back(ctx.cell_of(i));
   in.round = static_cast<int>(round);
@@ -69,7 +66,7 @@ void ExploreGroupTask::plan(std::uint32_t round, GroupContext& ctx) {
   round_ = round;
   for (int i = 0; i < t.robots_per_group(); ++i) arrived_[static_cast<std::size_t>(i)] = !plan.waypoints[static_cast<std::size_t>(i)].has_value();
   group_reported_ = false;
-  ctx.own.assign(round, plan.waypoints[0]);
+  ctx.own.assign(round, plan.waypoints[static_cast<std::size_t>(ctx.self)]);
   msgs::Assignment a;
   a.round(round);
   a.waypoints_xy(comm::to_xy(plan.waypoints));

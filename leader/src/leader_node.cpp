@@ -17,6 +17,13 @@ using comm::LinkClass;
 using planner::Cell;
 namespace topic = comm::topic;
 
+planner::Cell GroupContext::leader_cell(int g) const {
+  const auto& leaders = clock.leaders();
+  const comm::AgentId a = static_cast<std::size_t>(g) < leaders.size() ? leaders[static_cast<std::size_t>(g)]
+                                                                       : setup.topology.leader(g);
+  return {clock.robots()[a].x(), clock.robots()[a].y()};
+}
+
 std::vector<int> GroupContext::living() const {
   std::vector<int> out;
   for (int i = 0; i < static_cast<int>(alive.size()); ++i) {
@@ -25,23 +32,30 @@ std::vector<int> GroupContext::living() const {
   return out;
 }
 
-LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group)
+LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index,
+                       member::RobotAgent& robot, bool leading)
     : agent_(agent),
       setup_(setup),
       topology_(setup.topology),
       group_(group),
+      self_index_(index),
+      leading_(leading),
       encoding_(comm::patch_encoding(setup.world.scenario.map_encoding())),
       map_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution()),
-      robot_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution()),
+      robot_(robot),
       alive_(setup.topology.robots_per_group(), true),
+      // Route ids never repeat in a run: each candidate numbers its routes in a range of its own.
+      route_ids_(static_cast<std::uint32_t>(index) << 24),
       patch_gcs_(agent.advertise<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, {topology_.gcs()})),
       heartbeat_(agent.advertise<msgs::Heartbeat>(topic::kHeartbeat, LinkClass::LeaderGcs, {topology_.gcs()})),
       motion_(agent.advertise<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, {topology_.sim()})) {
+  if (leading_) led_.push_back({0, std::nullopt});
   for (const auto& phase : config::mission_phases(setup.world.scenario)) {
     tasks_.push_back(make_group_task(phase, setup, group));
   }
-  const auto members = topology_.members(group);
-  const int n_members = static_cast<int>(members.size());
+  const auto others = topology_.group_except(group, agent.self());
+  // Every other robot of the group writes its member topics (the candidates too, while members).
+  const int writers = static_cast<int>(others.size());
   auto& group_status =
       agent.advertise<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs, {topology_.gcs()});
   auto& plan_report = agent.advertise<msgs::PlanReport>(topic::kPlanReport, LinkClass::Telemetry, {topology_.gcs()});
@@ -49,18 +63,18 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
   comm::Mailbox::Outlet<msgs::Assignment>* assign = nullptr;
   comm::Mailbox::Outlet<msgs::Route>* route = nullptr;
   comm::Mailbox::Outlet<msgs::RouteRelease>* release = nullptr;
-  if (!members.empty()) {
-    patch_down_ = &agent.advertise<msgs::MapPatch>(topic::patch_down(group), LinkClass::MemberLeader, members);
-    assign = &agent.advertise<msgs::Assignment>(topic::assign(group), LinkClass::MemberLeader, members);
-    route = &agent.advertise<msgs::Route>(topic::route(group), LinkClass::MemberLeader, members);
-    release = &agent.advertise<msgs::RouteRelease>(topic::release(group), LinkClass::MemberLeader, members);
+  if (!others.empty()) {
+    patch_down_ = &agent.advertise<msgs::MapPatch>(topic::patch_down(group), LinkClass::MemberLeader, others);
+    assign = &agent.advertise<msgs::Assignment>(topic::assign(group), LinkClass::MemberLeader, others);
+    route = &agent.advertise<msgs::Route>(topic::route(group), LinkClass::MemberLeader, others);
+    release = &agent.advertise<msgs::RouteRelease>(topic::release(group), LinkClass::MemberLeader, others);
   }
-  // The task's outlets; index 0 is the leader's own robot, which is told directly.
+  // The task's outlets; the leader's own robot (self_index_) is told directly.
   outlets_.route = [this, route](int index, msgs::Route& r) {
     r.robot(topology_.robot(group_, index));
     r.phase(phase_);
     r.route_id(++route_ids_);
-    if (index == 0) {
+    if (index == self_index_) {
       member::follow_route(robot_, r);
     } else if (route != nullptr) {
       route->send(r);
@@ -69,7 +83,7 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
   };
   outlets_.release = [this, release](int index, msgs::RouteRelease& r) {
     r.robot(topology_.robot(group_, index));
-    if (index == 0) {
+    if (index == self_index_) {
       robot_.release(r.route_id(), r.release());
     } else if (release != nullptr) {
       release->send(r);
@@ -86,25 +100,33 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
   outlets_.group_status = [&group_status](msgs::GroupStatus& s) { group_status.send(s); };
   outlets_.plan_report = [&plan_report](msgs::PlanReport& p) { plan_report.send(p); };
 
-  // Subscription order fixes the order in which same-tick messages are handled.
-  agent.subscribe<msgs::Sense>(topic::sense(agent.self()), LinkClass::SimRobot, [this](const msgs::Sense& s) {
-    learn(map_.observe(robot_.sense({s.x(), s.y()}, s.ranges(), s.max_range(), comm::route_progress(s))), true);
-  }, comm::Delivery::BestEffort, 1);  // a lost scan is not repeated; the next one is newer
-  if (!members.empty()) {
+  // Subscription order fixes the order in which same-tick messages are handled. A standby (not
+  // leading) keeps only the group map up to date from what it hears, and the GCS's latest phase,
+  // round and orders for its group: what it needs to take the group over.
+  if (!others.empty()) {
     agent.subscribe<msgs::MapPatch>(topic::patch_up(group), LinkClass::MemberLeader, [this](const msgs::MapPatch& p) {
-      learn(map_.observe(comm::decode_patch(p.data(), robot_.map().size())), true);
-    }, comm::Delivery::Reliable, n_members);
-    agent.subscribe<msgs::MemberStatus>(topic::status(group), LinkClass::MemberLeader,
-                                        [this](const msgs::MemberStatus& s) { statuses_.push_back(s); },
-                                        comm::Delivery::Reliable, n_members);
-    agent.subscribe<msgs::RouteProgress>(topic::progress(group), LinkClass::MemberLeader,
-                                         [this](const msgs::RouteProgress& p) { progress_.push_back(p); },
-                                         comm::Delivery::Reliable, n_members);
+      const auto changes = comm::decode_patch(p.data(), robot_.map().size());
+      if (leading_) {
+        learn(map_.observe(changes), true);
+      } else {
+        map_.observe(changes);
+      }
+    }, comm::Delivery::Reliable, writers);
+    agent.subscribe<msgs::MemberStatus>(topic::status(group), LinkClass::MemberLeader, [this](const msgs::MemberStatus& s) {
+      if (leading_) statuses_.push_back(s);
+    }, comm::Delivery::Reliable, writers);
+    agent.subscribe<msgs::RouteProgress>(topic::progress(group), LinkClass::MemberLeader, [this](const msgs::RouteProgress& p) {
+      if (leading_) progress_.push_back(p);
+    }, comm::Delivery::Reliable, writers);
   }
   agent.subscribe<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, [this](const msgs::RoundStart& r) {
     planner::OccupancyGrid global(r.width(), r.height(), map_.group().resolution());
     comm::decode_map(r.map_rle(), static_cast<planner::PatchEncoding>(r.encoding()), global);
-    learn(map_.adopt_global(global), false);
+    if (leading_) {
+      learn(map_.adopt_global(global), false);
+    } else {
+      map_.adopt_global(global);
+    }
     round_ = r.round();
   }, comm::Delivery::Reliable, 1);
   agent.subscribe<msgs::PhaseStart>(topic::kPhase, LinkClass::LeaderGcs,
@@ -113,6 +135,63 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
   agent.subscribe<msgs::TaskOrder>(topic::kTaskOrder, LinkClass::LeaderGcs, [this](const msgs::TaskOrder& o) {
     if (o.group() == group_ || o.group() == comm::task::kAllGroups) orders_.push_back(o);
   }, comm::Delivery::Reliable, 1);
+}
+
+void LeaderNode::learn_own(const std::vector<planner::CellChange>& changes) { learn(map_.observe(changes), true); }
+
+void LeaderNode::enter_phase() {
+  if (next_phase_ && *next_phase_ < tasks_.size()) {
+    phase_ = *next_phase_;
+    started_ = false;
+  }
+  next_phase_.reset();
+}
+
+void LeaderNode::shadow(const msgs::Clock&) {
+  // The current phase's orders for this group stay (a take-over replays them); nothing else
+  // queued is this robot's business while another leads.
+  enter_phase();
+  std::erase_if(orders_, [this](const msgs::TaskOrder& o) { return o.phase() != phase_; });
+  statuses_.clear();
+  progress_.clear();
+}
+
+std::vector<planner::CellChange> known_cells(const planner::OccupancyGrid& map) {
+  std::vector<planner::CellChange> out;
+  for (int i = 0; i < static_cast<int>(map.size()); ++i) {
+    if (map.at(i) != planner::CellState::Unknown) out.push_back({i, map.at(i)});
+  }
+  return out;
+}
+
+void LeaderNode::take_over(const msgs::Clock& clock) {
+  leading_ = true;
+  led_.push_back({clock.tick(), std::nullopt});
+  // The group map: what this robot knows itself (its scans went to the old leader, perhaps never
+  // forwarded) joins what it heard as a standby; the GCS and the members get all of it.
+  learn(map_.observe(known_cells(robot_.map())), true);
+  const auto all = known_cells(map_.group());
+  robot_.learn(all);
+  to_members_ = all;
+  for (int i = 0; i < topology_.robots_per_group(); ++i) {
+    alive_[static_cast<std::size_t>(i)] = i == self_index_ || clock.robots()[topology_.robot(group_, i)].alive();
+  }
+  // The current phase's task starts afresh from the GCS's order (kept) and, exploring, from the
+  // latest round: a new round's plan at once.
+  started_ = false;
+  if (last_round_ > 0 && !round_) round_ = last_round_;
+  std::fprintf(stderr, "%s: leads group %d from tick %u\n", topology_.name_of(agent_.self()).c_str(), group_,
+               clock.tick());
+}
+
+void LeaderNode::stand_down(std::uint32_t tick) {
+  leading_ = false;
+  if (!led_.empty() && !led_.back().to) led_.back().to = tick;
+  orders_.clear();
+  statuses_.clear();
+  progress_.clear();
+  std::fprintf(stderr, "%s: another robot leads group %d from tick %u; a member again\n",
+               topology_.name_of(agent_.self()).c_str(), group_, tick);
 }
 
 void LeaderNode::learn(const std::vector<planner::CellChange>& fresh, bool own_observation) {
@@ -125,7 +204,8 @@ void LeaderNode::learn(const std::vector<planner::CellChange>& fresh, bool own_o
 void LeaderNode::track_members(GroupContext& ctx) {
   // A member the simulator lost gets no more work and nobody waits for it; one that comes back
   // (its link healed) is planned for again.
-  for (int i = 1; i < topology_.robots_per_group(); ++i) {
+  for (int i = 0; i < topology_.robots_per_group(); ++i) {
+    if (i == self_index_) continue;
     const bool alive = ctx.clock.robots()[topology_.robot(group_, i)].alive();
     if (alive == alive_[static_cast<std::size_t>(i)]) continue;
     alive_[static_cast<std::size_t>(i)] = alive;
@@ -166,17 +246,14 @@ void LeaderNode::dispatch(GroupContext& ctx) {
   progress_.clear();
   if (round_) {
     task.on_round(*round_, ctx);
+    last_round_ = *round_;
     round_.reset();
   }
 }
 
 void LeaderNode::step(const msgs::Clock& clock) {
-  if (next_phase_ && *next_phase_ < tasks_.size()) {
-    phase_ = *next_phase_;
-    started_ = false;
-  }
-  next_phase_.reset();
-  GroupContext ctx{setup_, group_, phase_, clock, alive_, map_, robot_, outlets_};
+  enter_phase();
+  GroupContext ctx{setup_, group_, self_index_, phase_, clock, alive_, map_, robot_, outlets_};
   if (!started_) {
     tasks_[phase_]->start(ctx);
     started_ = true;
@@ -199,7 +276,7 @@ void LeaderNode::step(const msgs::Clock& clock) {
   }
   if (const planner::RouteProgress p = robot_.following(); p.id != 0 && !(p == own_progress_)) {
     own_progress_ = p;
-    tasks_[phase_]->on_progress(0, p, ctx);
+    tasks_[phase_]->on_progress(self_index_, p, ctx);
   }
   tasks_[phase_]->finish_step(ctx);
 
@@ -228,7 +305,9 @@ std::string LeaderNode::report_json() const {
                     {"noticed_at_tick", l.noticed_tick},
                     {"rejoined_at_tick", l.rejoined_tick ? nlohmann::json(*l.rejoined_tick) : nlohmann::json(nullptr)}});
   }
-  nlohmann::json out{{"members_lost", lost}, {"replans", robot_.replans()}};
+  nlohmann::json led = nlohmann::json::array();
+  for (const auto& l : led_) led.push_back({{"from_tick", l.from}, {"to_tick", l.to ? nlohmann::json(*l.to) : nlohmann::json(nullptr)}});
+  nlohmann::json out{{"members_lost", lost}, {"replans", robot_.replans()}, {"led", led}};
   // Each phase's numbers under its task's name; explore's also at the top level (the exploration
   // tables read rounds_planned and planning_seconds there).
   const auto phases = config::mission_phases(setup_.world.scenario);

@@ -21,48 +21,87 @@ void publish_motion(comm::Mailbox::Outlet<msgs::MotionCommand>& motion, comm::Ag
   motion.send(cmd);
 }
 
+std::vector<comm::AgentId> leaders_except_self(const comm::Topology& t, int group, comm::AgentId self) {
+  std::vector<comm::AgentId> out;
+  for (comm::AgentId c : t.candidates(group)) {
+    if (c != self) out.push_back(c);
+  }
+  return out;
+}
+
 void follow_route(RobotAgent& robot, const msgs::Route& r) {
   robot.follow(r.route_id(), comm::from_xy(r.path_xy()), r.release(), r.pick_steps(), r.drop_steps(), r.start_tick());
 }
 
-MemberNode::MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index)
+MemberNode::MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index,
+                       RobotAgent& robot)
     : agent_(agent),
       group_(group),
       index_(index),
-      robot_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution()),
+      robot_(robot),
+      leaders_(setup.topology),
       patch_up_(agent.advertise<msgs::MapPatch>(topic::patch_up(group), LinkClass::MemberLeader,
-                                                {setup.topology.leader(group)})),
+                                                leaders_except_self(setup.topology, group, agent.self()))),
       status_(agent.advertise<msgs::MemberStatus>(topic::status(group), LinkClass::MemberLeader,
-                                                  {setup.topology.leader(group)})),
+                                                  leaders_except_self(setup.topology, group, agent.self()))),
       motion_(agent.advertise<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, {setup.topology.sim()})),
       progress_(agent.advertise<msgs::RouteProgress>(topic::progress(group), LinkClass::MemberLeader,
-                                                     {setup.topology.leader(group)})),
+                                                     leaders_except_self(setup.topology, group, agent.self()))),
       encoding_(comm::patch_encoding(setup.world.scenario.map_encoding())) {
+  // Every other candidate of the group writes the leader's topics (only the leader of the moment
+  // sends). Readiness waits for those; whether DDS also matches this process's own writers does
+  // not matter.
+  const int leaders = static_cast<int>(leaders_except_self(setup.topology, group, agent.self()).size());
   agent.subscribe<msgs::Sense>(topic::sense(agent.self()), LinkClass::SimRobot, [this](const msgs::Sense& s) {
     auto changes = robot_.sense({s.x(), s.y()}, s.ranges(), s.max_range(), comm::route_progress(s));
-    pending_up_.insert(pending_up_.end(), changes.begin(), changes.end());
+    if (to_leader_) {
+      to_leader_(changes);
+    } else {
+      pending_up_.insert(pending_up_.end(), changes.begin(), changes.end());
+    }
   }, comm::Delivery::BestEffort, 1);  // a lost scan is not repeated; the next one is newer
-  agent.subscribe<msgs::MapPatch>(topic::patch_down(group), LinkClass::MemberLeader,
-                                  [this](const msgs::MapPatch& p) { robot_.learn(comm::decode_patch(p.data(), robot_.map().size())); },
-                                  comm::Delivery::Reliable, 1);
+  agent.subscribe<msgs::MapPatch>(topic::patch_down(group), LinkClass::MemberLeader, [this](const msgs::MapPatch& p) {
+    if (from_leader(p.header())) robot_.learn(comm::decode_patch(p.data(), robot_.map().size()));
+  }, comm::Delivery::Reliable, leaders);
   agent.subscribe<msgs::Assignment>(topic::assign(group), LinkClass::MemberLeader, [this](const msgs::Assignment& a) {
+    if (!from_leader(a.header())) return;
     const auto waypoints = comm::optional_cells_from_xy(a.waypoints_xy());
     ++assignments_;
     robot_.assign(a.round(), index_ < static_cast<int>(waypoints.size()) ? waypoints[index_] : std::nullopt);
-  }, comm::Delivery::Reliable, 1);
+  }, comm::Delivery::Reliable, leaders);
   // Routes and releases go to the whole group; each member keeps its own.
   agent.subscribe<msgs::Route>(topic::route(group), LinkClass::MemberLeader, [this](const msgs::Route& r) {
-    if (r.robot() != agent_.self()) return;
+    if (r.robot() != agent_.self() || !from_leader(r.header())) return;
     ++routes_;
     follow_route(robot_, r);
-  }, comm::Delivery::Reliable, 1);
+  }, comm::Delivery::Reliable, leaders);
   agent.subscribe<msgs::RouteRelease>(topic::release(group), LinkClass::MemberLeader,
                                       [this](const msgs::RouteRelease& r) {
-                                        if (r.robot() == agent_.self()) robot_.release(r.route_id(), r.release());
-                                      }, comm::Delivery::Reliable, 1);
+                                        if (r.robot() == agent_.self() && from_leader(r.header())) {
+                                          robot_.release(r.route_id(), r.release());
+                                        }
+                                      }, comm::Delivery::Reliable, leaders);
 }
 
+bool MemberNode::from_leader(const msgs::Stamp& stamp) {
+  // The clock being processed first: in real time a process that fell behind reads messages sent
+  // after the last clock it stepped.
+  leaders_.observe(agent_.clock());
+  if (leaders_.led_at(stamp.sender(), stamp.tick())) return true;
+  ++not_from_leader_;
+  return false;
+}
+
+void MemberNode::lead(std::function<void(const std::vector<planner::CellChange>&)> to_leader) {
+  to_leader_ = std::move(to_leader);
+  if (!pending_up_.empty()) to_leader_(pending_up_);
+  pending_up_.clear();
+}
+
+void MemberNode::follow() { to_leader_ = nullptr; }
+
 void MemberNode::step(const msgs::Clock& clock) {
+  observe(clock);
   if (!pending_up_.empty()) {
     msgs::MapPatch patch;
     patch.group(static_cast<std::uint16_t>(group_));
@@ -92,7 +131,11 @@ void MemberNode::step(const msgs::Clock& clock) {
 }
 
 std::string MemberNode::report_json() const {
-  return nlohmann::json{{"replans", robot_.replans()}, {"assignments", assignments_}, {"routes", routes_}}.dump();
+  return nlohmann::json{{"replans", robot_.replans()},
+                        {"assignments", assignments_},
+                        {"routes", routes_},
+                        {"orders_not_from_the_leader", not_from_leader_}}
+      .dump();
 }
 
 }  // namespace swarm::member

@@ -152,6 +152,7 @@ json to_json(const RunMetrics& m) {
     by_topic[topic] = {{"link", t.link},
                        {"messages", t.messages},
                        {"bytes", t.bytes},
+                       {"addressed_messages", t.addressed_messages},
                        {"received_messages", t.received_messages},
                        {"lost_transmissions", t.lost_transmissions},
                        {"dropped_messages", t.dropped_messages}};
@@ -175,6 +176,16 @@ json to_json(const RunMetrics& m) {
   json unreachable = json::array();
   for (const auto& u : m.unreachable) {
     unreachable.push_back({{"agent", u.agent}, {"from_tick", u.from_tick}, {"to_tick", u.to_tick}});
+  }
+  json handovers = json::array();
+  for (const auto& h : m.leader_handovers) {
+    handovers.push_back({{"group", h.group},
+                         {"from", h.from},
+                         {"to", h.to},
+                         {"at_tick", h.at_tick},
+                         {"from_stopped_at_tick", opt(h.from_stopped_at_tick)},
+                         {"leaderless_ticks", opt(h.leaderless_ticks)},
+                         {"detection_seconds", opt(h.detection_seconds)}});
   }
   json phases = json::array();
   for (const auto& p : m.phases) {
@@ -212,7 +223,11 @@ json to_json(const RunMetrics& m) {
           {"timings",
            {{"planning_seconds_total", m.planning_seconds_total},
             {"planning_ms_per_group_round", m.planning_ms_per_group_round}}},
-          {"faults", {{"agents_lost", lost}, {"unreachable", unreachable}}},
+          {"faults",
+           {{"agents_lost", lost},
+            {"unreachable", unreachable},
+            {"leader_handovers", handovers},
+            {"messages_from_deposed_leaders", m.messages_from_deposed_leaders}}},
           {"motion", to_json(m.motion)},
           {"phases", phases},
           {"agents", agents},
@@ -254,6 +269,7 @@ RunMetrics metrics_from_json(const json& j, const std::string& source) {
     m.traffic.by_topic[topic] = {tf.get<std::string>("link"),
                                  tf.get<std::uint64_t>("messages"),
                                  tf.get<std::uint64_t>("bytes"),
+                                 tf.get<std::uint64_t>("addressed_messages"),
                                  tf.get<std::uint64_t>("received_messages"),
                                  tf.get<std::uint64_t>("lost_transmissions"),
                                  tf.get<std::uint64_t>("dropped_messages")};
@@ -287,6 +303,14 @@ RunMetrics metrics_from_json(const json& j, const std::string& source) {
     const Fields uf(u, faults.where() + ".unreachable[]");
     m.unreachable.push_back({uf.get<std::string>("agent"), uf.get<std::uint32_t>("from_tick"),
                              uf.get<std::uint32_t>("to_tick")});
+  }
+  m.messages_from_deposed_leaders = faults.get<std::uint64_t>("messages_from_deposed_leaders");
+  for (const json& h : faults.at("leader_handovers")) {
+    const Fields hf(h, faults.where() + ".leader_handovers[]");
+    m.leader_handovers.push_back({hf.get<int>("group"), hf.get<std::string>("from"), hf.get<std::string>("to"),
+                                  hf.get<std::uint32_t>("at_tick"), hf.optional<std::uint32_t>("from_stopped_at_tick"),
+                                  hf.optional<std::uint32_t>("leaderless_ticks"),
+                                  hf.optional<double>("detection_seconds")});
   }
   m.motion = motion_from_json(f.at("motion"), source + ".motion");
   for (const json& p : f.at("phases")) {

@@ -98,9 +98,11 @@ INSTANTIATE_TEST_SUITE_P(
         Impossible{"faults { agent: \"member-3-1\" kill_at_tick: 5 }",
                    "t.pbtxt: field faults[0].agent: must name a robot of this run: leader-G (G < 3) or "
                    "member-G-I (1 <= I < 3) (got \"member-3-1\")"},
-        Impossible{"faults { agent: \"leader-1\" kill_at_tick: 5 }",
-                   "t.pbtxt: field faults[0].agent: must be a member to be killed (a group cannot lose "
-                   "its leader) (got leader-1)"},
+        Impossible{"leader_standbys: 0 faults { agent: \"leader-1\" kill_at_tick: 5 }",
+                   "t.pbtxt: field faults[0].agent: must be a member to be killed: with no standby leader "
+                   "(leader_standbys 0, or a group of one robot) a group cannot lose its leader (got leader-1)"},
+        Impossible{"leader_standbys: 3",
+                   "t.pbtxt: field leader_standbys: must be at most robots_per_group - 1 = 2 (got 3)"},
         Impossible{"faults { agent: \"leader-1\" }",
                    "t.pbtxt: field faults[0]: must say kill_at_tick, cut_from_tick and cut_to_tick, or "
                    "freeze_at_tick and freeze_seconds (got none of them)"},

@@ -1,4 +1,5 @@
-// Faults without Docker: a member crashes, a leader's links are cut and heal; and real-time mode.
+// Faults without Docker: a member or a leader crashes, a leader's links are cut and heal, a leader
+// freezes and comes back; and real-time mode.
 // The same runtime paths serve the docker-compose deployment (deploy/).
 #include <gtest/gtest.h>
 
@@ -82,15 +83,60 @@ TEST(Faults, FrozenLeaderIsReadmittedAndNothingIsLost) {
   const int away = lost[0]["rejoined_at_tick"].get<int>() - lost[0]["stopped_answering_at_tick"].get<int>();
   EXPECT_GE(away, 100) << lost;
   EXPECT_LE(away, 350) << lost;
+  // Its standby took the group over when the simulator declared it lost, and kept it: the
+  // frozen leader came back as a member (its one term as leader ended at the hand-over).
+  const auto& h = m["faults"]["leader_handovers"];
+  ASSERT_EQ(h.size(), 1u) << h;
+  EXPECT_EQ(h[0]["from"], "leader-1");
+  EXPECT_EQ(h[0]["to"], "member-1-1");
+  EXPECT_EQ(h[0]["at_tick"], lost[0]["marked_lost_at_tick"]);
+  // leader-1 learns it was replaced at the first clock it reads after resuming (in real time it
+  // skips to the newest), and was frozen until then: it never led after the hand-over.
+  const auto& old_terms = m["agents"]["leader-1"]["led"];
+  ASSERT_EQ(old_terms.size(), 1u) << old_terms;
+  EXPECT_GE(old_terms[0]["to_tick"].get<int>(), h[0]["at_tick"].get<int>());
+  EXPECT_EQ(m["agents"]["leader-1"]["member"]["orders_not_from_the_leader"], 0);
+  const auto& new_terms = m["agents"]["member-1-1"]["led"];
+  ASSERT_EQ(new_terms.size(), 1u) << new_terms;
+  EXPECT_EQ(new_terms[0]["from_tick"], h[0]["at_tick"]);
+  EXPECT_TRUE(new_terms[0]["to_tick"].is_null());
+  // The GCS heard group 1 again as soon as the standby led: unreachable for about the lease.
   const auto& unreachable = m["faults"]["unreachable"];
   ASSERT_EQ(unreachable.size(), 1u) << unreachable;
   EXPECT_EQ(unreachable[0]["agent"], "leader-1");
-  EXPECT_GE(unreachable[0]["to_tick"].get<int>() - unreachable[0]["from_tick"].get<int>(), 100) << unreachable;
+  EXPECT_LT(unreachable[0]["to_tick"].get<int>() - unreachable[0]["from_tick"].get<int>(), 100) << unreachable;
+  // Every message reached every receiver it was meant for (the standbys hear the members too).
   for (const char* topic : {"patch_up", "patch_gcs", "group_status"}) {
     const auto& t = m["traffic"]["by_topic"][topic];
-    EXPECT_EQ(t["messages"], t["received_messages"]) << topic;
+    EXPECT_EQ(t["addressed_messages"], t["received_messages"]) << topic;
   }
   EXPECT_TRUE(m["reports_missing"].empty()) << m["reports_missing"];
+}
+
+// leader-1 crashes at tick 30: the simulator declares it lost at 31 (1 s liveliness lease), the
+// clock names its standby member-1-1 leader from that tick, member-1-1 takes the group over (its
+// own map and the GCS's rounds), and the mission completes with the whole map explored.
+TEST(Faults, KilledLeaderIsReplacedByItsStandbyAndTheMissionCompletes) {
+  const std::string dir = fresh_dir("kill_leader") + "/run";
+  const CommandResult r = run_swarm(kSmall + " --kill leader-1@30 --out " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto m = read_json(dir + "/metrics.json");
+  EXPECT_TRUE(m["complete"].get<bool>());
+  EXPECT_GE(m["explored_fraction"].get<double>(), 0.99);
+  const auto& h = m["faults"]["leader_handovers"];
+  ASSERT_EQ(h.size(), 1u) << h;
+  EXPECT_EQ(h[0]["group"], 1);
+  EXPECT_EQ(h[0]["from"], "leader-1");
+  EXPECT_EQ(h[0]["to"], "member-1-1");
+  EXPECT_EQ(h[0]["at_tick"], 31);
+  EXPECT_EQ(h[0]["from_stopped_at_tick"], 30);
+  EXPECT_EQ(h[0]["leaderless_ticks"], 1);
+  EXPECT_GE(h[0]["detection_seconds"].get<double>(), 0.9);
+  const auto& led = m["agents"]["member-1-1"]["led"];
+  ASSERT_EQ(led.size(), 1u) << led;
+  EXPECT_EQ(led[0]["from_tick"], 31);
+  EXPECT_GT(m["agents"]["member-1-1"]["rounds_planned"].get<int>(), 0);
+  EXPECT_EQ(m["reports_missing"], nlohmann::json::array({"leader-1"}));
 }
 
 // Real-time mode: wall-rate ticks and millisecond delays; the metrics carry the same fields.

@@ -11,6 +11,8 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <set>
+#include <map>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -142,6 +144,60 @@ TEST(LeaderNode, ALostMemberIsNoticedPlannedWithoutAndTheMissionStillCompletes) 
   EXPECT_EQ(m["faults"]["agents_lost"][0]["agent"], "member-0-2");
   EXPECT_EQ(m["faults"]["agents_lost"][0]["marked_lost_at_tick"], 40);
   EXPECT_EQ(m["agents"]["leader-0"]["members_lost"][0]["agent"], "member-0-2");
+  EXPECT_GE(m["explored_fraction"].get<double>(), 0.99);
+}
+
+// leader-1 crashes mid-exploration: its standby member-1-1 (leader_standbys 1, the default) is
+// named leader by the clock at once on the fake, takes the group over (the GCS hears group 1 from
+// it from then on, never from two robots at one tick), plans the next rounds without the dead
+// robot, and the mission completes. metrics.json records the hand-over.
+TEST(LeaderNode, AStandbyTakesOverALostLeaderAndTheMissionCompletes) {
+  auto setup = swarm::test::setup_from_text("map: 'small' groups: 2 robots_per_group: 3 max_ticks: 1500");
+  const comm::Topology& t = setup.topology;
+  ASSERT_EQ(t.standbys(), 1);
+  swarm::test::FakeSwarm s(setup);
+  comm::FakeBus spy(s.network());
+  std::map<std::uint32_t, std::set<comm::AgentId>> heard;  // group 1's heartbeat senders per stamp tick
+  comm::Reader<msgs::Heartbeat> beats(spy, topic::kHeartbeat, [&](msgs::Heartbeat&& h) {
+    if (h.group() == 1) heard[h.header().tick()].insert(h.header().sender());
+  });
+  std::vector<msgs::Assignment> assignments;
+  comm::Reader<msgs::Assignment> reader(spy, topic::assign(1), [&](msgs::Assignment&& a) { assignments.push_back(a); });
+  s.start();
+  for (int k = 0; k < 40; ++k) ASSERT_TRUE(s.step());
+  s.disconnect(t.leader(1));
+  while (s.step()) {
+  }
+  EXPECT_TRUE(s.complete());
+  EXPECT_TRUE(s.candidate(t.robot(1, 1)).leader().leading());
+  for (const auto& [tick, senders] : heard) {
+    ASSERT_EQ(senders.size(), 1u) << "tick " << tick;
+    EXPECT_EQ(*senders.begin(), tick < 40 ? t.leader(1) : t.robot(1, 1)) << "tick " << tick;
+  }
+  // The new leader's rounds: its own robot and member-1-2 get waypoints, the dead one none.
+  std::size_t after = 0;
+  for (const auto& a : assignments) {
+    if (a.header().sender() != t.robot(1, 1)) continue;
+    ++after;
+    const auto w = comm::optional_cells_from_xy(a.waypoints_xy());
+    EXPECT_FALSE(w[0].has_value()) << "round " << a.round();
+  }
+  EXPECT_GT(after, 0u);
+  s.finish();
+  std::ifstream in(s.run_dir() + "/metrics.json");
+  const auto m = nlohmann::json::parse(in);
+  const auto& h = m["faults"]["leader_handovers"];
+  ASSERT_EQ(h.size(), 1u) << h;
+  EXPECT_EQ(h[0]["group"], 1);
+  EXPECT_EQ(h[0]["from"], "leader-1");
+  EXPECT_EQ(h[0]["to"], "member-1-1");
+  EXPECT_EQ(h[0]["at_tick"], 40);
+  EXPECT_EQ(m["faults"]["messages_from_deposed_leaders"], 0);
+  const auto& led = m["agents"]["member-1-1"]["led"];
+  ASSERT_EQ(led.size(), 1u) << led;
+  EXPECT_EQ(led[0]["from_tick"], 40);
+  EXPECT_TRUE(led[0]["to_tick"].is_null());
+  EXPECT_GT(m["agents"]["member-1-1"]["rounds_planned"].get<int>(), 0);
   EXPECT_GE(m["explored_fraction"].get<double>(), 0.99);
 }
 

@@ -35,7 +35,7 @@
 #include "swarm/comm/role.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/gcs/gcs_node.hpp"
-#include "swarm/leader/leader_node.hpp"
+#include "swarm/leader/candidate_node.hpp"
 #include "swarm/member/member_node.hpp"
 #include "swarm/planner/start_cells.hpp"
 #include "swarm/sim/sim_node.hpp"
@@ -56,7 +56,8 @@ inline comm::RoleSetup setup_for(const planner::OccupancyGrid& truth, planner::C
   if (setup.world.robot_cells.size() != s.groups() * s.robots_per_group()) {
     throw std::invalid_argument("setup_for: not enough free cells around the start for every robot");
   }
-  setup.topology = comm::Topology(static_cast<int>(s.groups()), static_cast<int>(s.robots_per_group()));
+  setup.topology = comm::Topology(static_cast<int>(s.groups()), static_cast<int>(s.robots_per_group()),
+                                  config::leader_standbys(s));
   setup.links = comm::link_table(s, setup.topology);
   return setup;
 }
@@ -68,7 +69,8 @@ inline comm::RoleSetup setup_from_text(const std::string& scenario_text) {
   comm::RoleSetup setup;
   setup.world = config::resolve_world(s, "");
   setup.topology = comm::Topology(static_cast<int>(setup.world.scenario.groups()),
-                                  static_cast<int>(setup.world.scenario.robots_per_group()));
+                                  static_cast<int>(setup.world.scenario.robots_per_group()),
+                                  config::leader_standbys(setup.world.scenario));
   setup.links = comm::link_table(setup.world.scenario, setup.topology);
   return setup;
 }
@@ -97,19 +99,19 @@ class FakeSwarm {
     } else {
       agent(t.gcs());
     }
-    leaders_.resize(static_cast<std::size_t>(t.groups()));
+    // As the processes do: a candidate leader (comm/leadership.hpp) is a CandidateNode, any other
+    // robot a MemberNode with its own RobotAgent.
     for (int g = 0; g < t.groups(); ++g) {
-      if (node(t.leader(g))) {
-        leaders_[static_cast<std::size_t>(g)] = std::make_unique<leader::LeaderNode>(agent(t.leader(g)), setup_, g);
-      } else {
-        agent(t.leader(g));
-      }
-      for (int i = 1; i < t.robots_per_group(); ++i) {
+      for (int i = 0; i < t.robots_per_group(); ++i) {
         const comm::AgentId id = t.robot(g, i);
-        if (node(id)) {
-          members_[id] = std::make_unique<member::MemberNode>(agent(id), setup_, g, i);
-        } else {
+        if (!node(id)) {
           agent(id);
+        } else if (t.is_candidate(id)) {
+          candidates_[id] = std::make_unique<leader::CandidateNode>(agent(id), setup_, g, i);
+        } else {
+          bodies_[id] = std::make_unique<member::RobotAgent>(setup_.world.truth.width(), setup_.world.truth.height(),
+                                                             setup_.world.truth.resolution());
+          members_[id] = std::make_unique<member::MemberNode>(agent(id), setup_, g, i, *bodies_[id]);
         }
       }
     }
@@ -125,8 +127,13 @@ class FakeSwarm {
   void script(comm::AgentId a, std::function<void(const msgs::Clock&)> f) { scripts_[a] = std::move(f); }
   sim::SimNode& sim() { return *sim_; }
   gcs::GcsNode& gcs() { return *gcs_; }
-  leader::LeaderNode& leader(int group) { return *leaders_.at(static_cast<std::size_t>(group)); }
-  member::MemberNode& member(comm::AgentId robot) { return *members_.at(robot); }
+  // The leader side of group `group`'s first leader (index 0), and any robot's member side.
+  leader::LeaderNode& leader(int group) { return candidates_.at(topology().leader(group))->leader(); }
+  member::MemberNode& member(comm::AgentId robot) {
+    const auto c = candidates_.find(robot);
+    return c != candidates_.end() ? c->second->member() : *members_.at(robot);
+  }
+  leader::CandidateNode& candidate(comm::AgentId robot) { return *candidates_.at(robot); }
   std::uint32_t tick() const { return tick_; }
   bool complete() const { return complete_; }
   bool stopped() const { return stopped_; }
@@ -148,32 +155,40 @@ class FakeSwarm {
       using T = typename decltype(tag)::type;
       if (!x.advertises(name) && !to.empty()) x.template advertise<T>(name, link, std::move(to));
     };
-    const auto leaders_and_sim = [&] {
-      auto v = t.leaders();
-      v.push_back(t.sim());
-      return v;
-    };
+    const std::vector<comm::AgentId> leaders = t.all_candidates();
     if (a == t.gcs()) {
-      const int g = t.groups();
-      sub(Tag<msgs::Heartbeat>{}, topic::kHeartbeat, LinkClass::LeaderGcs, g);
-      sub(Tag<msgs::MapPatch>{}, topic::kPatchGcs, LinkClass::LeaderGcs, g);
-      sub(Tag<msgs::GroupStatus>{}, topic::kGroupStatus, LinkClass::LeaderGcs, g);
-      sub(Tag<msgs::TaskReport>{}, topic::kTaskReport, LinkClass::LeaderGcs, g);
-      sub(Tag<msgs::PlanReport>{}, topic::kPlanReport, LinkClass::Telemetry, g);
-      pub(Tag<msgs::PhaseStart>{}, topic::kPhase, LinkClass::LeaderGcs, leaders_and_sim());
-      pub(Tag<msgs::TaskOrder>{}, topic::kTaskOrder, LinkClass::LeaderGcs, t.leaders());
-      pub(Tag<msgs::RoundStart>{}, topic::kRound, LinkClass::LeaderGcs, t.leaders());
+      const int writers = static_cast<int>(leaders.size());
+      sub(Tag<msgs::Heartbeat>{}, topic::kHeartbeat, LinkClass::LeaderGcs, writers);
+      sub(Tag<msgs::MapPatch>{}, topic::kPatchGcs, LinkClass::LeaderGcs, writers);
+      sub(Tag<msgs::GroupStatus>{}, topic::kGroupStatus, LinkClass::LeaderGcs, writers);
+      sub(Tag<msgs::TaskReport>{}, topic::kTaskReport, LinkClass::LeaderGcs, writers);
+      sub(Tag<msgs::PlanReport>{}, topic::kPlanReport, LinkClass::Telemetry, writers);
+      auto leaders_and_sim = leaders;
+      leaders_and_sim.push_back(t.sim());
+      pub(Tag<msgs::PhaseStart>{}, topic::kPhase, LinkClass::LeaderGcs, leaders_and_sim);
+      pub(Tag<msgs::TaskOrder>{}, topic::kTaskOrder, LinkClass::LeaderGcs, leaders);
+      pub(Tag<msgs::RoundStart>{}, topic::kRound, LinkClass::LeaderGcs, leaders);
       return;
     }
     const int g = t.group_of(a);
-    const auto members = t.members(g);
-    const int m = static_cast<int>(members.size());
+    const auto others = t.group_except(g, a);
+    const auto up = member::leaders_except_self(t, g, a);
+    const int candidates = static_cast<int>(up.size());
     sub(Tag<msgs::Sense>{}, topic::sense(a), LinkClass::SimRobot, 1, comm::Delivery::BestEffort);
     pub(Tag<msgs::MotionCommand>{}, topic::kMotion, LinkClass::SimRobot, {t.sim()});
-    if (t.index_of(a) == 0) {
-      sub(Tag<msgs::MapPatch>{}, topic::patch_up(g), LinkClass::MemberLeader, m);
-      sub(Tag<msgs::MemberStatus>{}, topic::status(g), LinkClass::MemberLeader, m);
-      sub(Tag<msgs::RouteProgress>{}, topic::progress(g), LinkClass::MemberLeader, m);
+    // Every robot's member side (a candidate's too).
+    sub(Tag<msgs::MapPatch>{}, topic::patch_down(g), LinkClass::MemberLeader, candidates);
+    sub(Tag<msgs::Assignment>{}, topic::assign(g), LinkClass::MemberLeader, candidates);
+    sub(Tag<msgs::Route>{}, topic::route(g), LinkClass::MemberLeader, candidates);
+    sub(Tag<msgs::RouteRelease>{}, topic::release(g), LinkClass::MemberLeader, candidates);
+    pub(Tag<msgs::MapPatch>{}, topic::patch_up(g), LinkClass::MemberLeader, up);
+    pub(Tag<msgs::MemberStatus>{}, topic::status(g), LinkClass::MemberLeader, up);
+    pub(Tag<msgs::RouteProgress>{}, topic::progress(g), LinkClass::MemberLeader, up);
+    if (t.is_candidate(a)) {
+      const int robots = static_cast<int>(others.size());
+      sub(Tag<msgs::MapPatch>{}, topic::patch_up(g), LinkClass::MemberLeader, robots);
+      sub(Tag<msgs::MemberStatus>{}, topic::status(g), LinkClass::MemberLeader, robots);
+      sub(Tag<msgs::RouteProgress>{}, topic::progress(g), LinkClass::MemberLeader, robots);
       sub(Tag<msgs::RoundStart>{}, topic::kRound, LinkClass::LeaderGcs, 1);
       sub(Tag<msgs::PhaseStart>{}, topic::kPhase, LinkClass::LeaderGcs, 1);
       sub(Tag<msgs::TaskOrder>{}, topic::kTaskOrder, LinkClass::LeaderGcs, 1);
@@ -182,18 +197,10 @@ class FakeSwarm {
       pub(Tag<msgs::GroupStatus>{}, topic::kGroupStatus, LinkClass::LeaderGcs, {t.gcs()});
       pub(Tag<msgs::PlanReport>{}, topic::kPlanReport, LinkClass::Telemetry, {t.gcs()});
       pub(Tag<msgs::TaskReport>{}, topic::kTaskReport, LinkClass::LeaderGcs, {t.gcs()});
-      pub(Tag<msgs::MapPatch>{}, topic::patch_down(g), LinkClass::MemberLeader, members);
-      pub(Tag<msgs::Assignment>{}, topic::assign(g), LinkClass::MemberLeader, members);
-      pub(Tag<msgs::Route>{}, topic::route(g), LinkClass::MemberLeader, members);
-      pub(Tag<msgs::RouteRelease>{}, topic::release(g), LinkClass::MemberLeader, members);
-    } else {
-      sub(Tag<msgs::MapPatch>{}, topic::patch_down(g), LinkClass::MemberLeader, 1);
-      sub(Tag<msgs::Assignment>{}, topic::assign(g), LinkClass::MemberLeader, 1);
-      sub(Tag<msgs::Route>{}, topic::route(g), LinkClass::MemberLeader, 1);
-      sub(Tag<msgs::RouteRelease>{}, topic::release(g), LinkClass::MemberLeader, 1);
-      pub(Tag<msgs::MapPatch>{}, topic::patch_up(g), LinkClass::MemberLeader, {t.leader(g)});
-      pub(Tag<msgs::MemberStatus>{}, topic::status(g), LinkClass::MemberLeader, {t.leader(g)});
-      pub(Tag<msgs::RouteProgress>{}, topic::progress(g), LinkClass::MemberLeader, {t.leader(g)});
+      pub(Tag<msgs::MapPatch>{}, topic::patch_down(g), LinkClass::MemberLeader, others);
+      pub(Tag<msgs::Assignment>{}, topic::assign(g), LinkClass::MemberLeader, others);
+      pub(Tag<msgs::Route>{}, topic::route(g), LinkClass::MemberLeader, others);
+      pub(Tag<msgs::RouteRelease>{}, topic::release(g), LinkClass::MemberLeader, others);
     }
   }
 
@@ -223,8 +230,8 @@ class FakeSwarm {
       } else if (id == topology().gcs()) {
         complete = gcs_->step(*clock);
         complete_ = complete_ || complete;
-      } else if (topology().index_of(id) == 0) {
-        leaders_[static_cast<std::size_t>(topology().group_of(id))]->step(*clock);
+      } else if (const auto c = candidates_.find(id); c != candidates_.end()) {
+        c->second->step(*clock);
       } else {
         members_.at(id)->step(*clock);
       }
@@ -271,8 +278,8 @@ class FakeSwarm {
       if (!agents_[a] || !alive_[a] || id == topology().gcs()) continue;
       if (scripted_.count(id)) {
         agents_[a]->send_report("scripted", "{}");
-      } else if (topology().index_of(id) == 0) {
-        agents_[a]->send_report("leader", leaders_[static_cast<std::size_t>(topology().group_of(id))]->report_json());
+      } else if (const auto c = candidates_.find(id); c != candidates_.end()) {
+        agents_[a]->send_report(topology().index_of(id) == 0 ? "leader" : "member", c->second->report_json());
       } else {
         agents_[a]->send_report("member", members_.at(id)->report_json());
       }
@@ -292,7 +299,8 @@ class FakeSwarm {
   std::unique_ptr<sim::SimNode> sim_;
   std::vector<std::unique_ptr<comm::LockstepAgent>> agents_;
   std::unique_ptr<gcs::GcsNode> gcs_;
-  std::vector<std::unique_ptr<leader::LeaderNode>> leaders_;
+  std::map<comm::AgentId, std::unique_ptr<leader::CandidateNode>> candidates_;
+  std::map<comm::AgentId, std::unique_ptr<member::RobotAgent>> bodies_;
   std::map<comm::AgentId, std::unique_ptr<member::MemberNode>> members_;
   std::vector<bool> alive_;
   std::uint32_t tick_ = 0;

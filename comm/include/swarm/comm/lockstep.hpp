@@ -43,6 +43,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -208,10 +209,13 @@ class Mailbox::Outlet : public Mailbox::OutletBase {
       std::lock_guard<std::mutex> lock(box_.mutex_);
       for (AgentId r : receivers_) box_.sent_counts_[r] += 1;
     }
-    box_.traffic_.sent(family_, link_name(link_), bytes);
+    box_.traffic_.sent(family_, link_name(link_), bytes, receivers_.size());
   }
   int matched() const override { return writer_.matched(); }
   int expected_readers() const override { return static_cast<int>(receivers_.size()); }
+  bool same_route(LinkClass link, const std::vector<AgentId>& receivers) const {
+    return link == link_ && receivers == receivers_;
+  }
   const std::string& name() const override { return name_; }
   Writer<T>& writer() { return writer_; }
 
@@ -234,8 +238,11 @@ void Mailbox::subscribe(const std::string& topic_name, LinkClass link, std::func
   const std::string family = topic::family(topic_name);
   auto reader = std::make_shared<Reader<T>>(
       bus_, topic_name, [this, link, order, topic_hash, family, handler, delivery](T&& msg) {
-        const std::size_t bytes = wire_size(msg);
         const msgs::Stamp& h = msg.header();
+        // An agent that both writes and reads a topic (a group's candidate leaders: leadership.hpp)
+        // never receives its own messages: no outlet counts it among their receivers.
+        if (h.sender() == self_) return;
+        const std::size_t bytes = wire_size(msg);
         const std::uint32_t lost = lost_transmissions(links_, link, h.sender(), topic_hash, h.seq(), self_);
         const bool dropped = lost > 0 && delivery == Delivery::BestEffort;
         // A best-effort message is given up after its first lost transmission.
@@ -262,6 +269,16 @@ void Mailbox::subscribe(const std::string& topic_name, LinkClass link, std::func
 template <class T>
 Mailbox::Outlet<T>& Mailbox::advertise(const std::string& topic_name, LinkClass link,
                                        std::vector<AgentId> receivers) {
+  // One outlet per topic and agent: the parts of one agent (a candidate's member and leader
+  // sides) share it, so its sequence numbers stay one series.
+  for (const auto& o : outlets_) {
+    if (o->name() != topic_name) continue;
+    auto* same = dynamic_cast<Outlet<T>*>(o.get());
+    if (same == nullptr || !same->same_route(link, receivers)) {
+      throw std::logic_error(topology_.name_of(self_) + " advertises " + topic_name + " twice, differently");
+    }
+    return *same;
+  }
   auto outlet = std::make_unique<Outlet<T>>(*this, topic_name, link, std::move(receivers));
   Outlet<T>& ref = *outlet;
   outlets_.push_back(std::move(outlet));
@@ -281,6 +298,8 @@ class LockstepAgent : public Mailbox {
   // when it returns. The pointer stays valid until the next call.
   const msgs::Clock* begin_tick();
   void end_tick(bool mission_complete = false);
+  // The clock of the tick being processed, already while its due messages' handlers run.
+  const msgs::Clock& clock() const { return current_; }
 
  private:
   void say_ready();
@@ -320,7 +339,8 @@ class LockstepClock : public Mailbox {
   void wait_ready();
   // Delivers the messages (motion commands) due at tick k to their handlers.
   void begin_tick(std::uint32_t k);
-  // Publishes Clock(k) with the barrier counts; call after sending this tick's sensor data. The
+  // Publishes Clock(k) with the barrier counts and each group's leader (the succession rule of
+  // leadership.hpp applied to `robots`); call after sending this tick's sensor data. The
   // stop waits up to 5 s for its acknowledgement when an agent is lost (it may be only cut off).
   void publish_clock(std::uint32_t k, const std::vector<msgs::RobotState>& robots, bool stop);
   // Blocks until every living agent has finished tick k; returns true when the GCS reported the
@@ -352,6 +372,7 @@ class LockstepClock : public Mailbox {
   bool stopped_ = false;
   std::vector<std::chrono::steady_clock::time_point> last_heard_;  // per agent: its latest Done
   std::vector<std::uint32_t> next_undone_;                          // per agent: tick after its latest Done
+  std::vector<AgentId> leaders_;  // each group's leader in the latest clock (leadership.hpp)
 };
 
 }  // namespace swarm::comm

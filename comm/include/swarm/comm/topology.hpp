@@ -1,8 +1,13 @@
 // Who is who in a run: agent ids and topic names, derived from groups x robots_per_group.
 //
 // Robots are agents 0..N-1 (robot = group * robots_per_group + index; index 0 is the group's
-// leader), the GCS is agent N and the simulator agent N+1. Every process derives the same
+// first leader), the GCS is agent N and the simulator agent N+1. Every process derives the same
 // numbering from the scenario, so no discovery of roles is needed.
+//
+// Candidates: indices 0..standbys of a group may lead it (leadership.hpp). Index 0 leads from the
+// start; indices 1..standbys are standbys, members that keep a leader's endpoints ready so that
+// one of them can take the group over when its leader is lost. Every topic a leader reads or
+// writes therefore has all the group's candidates as readers or writers from tick 0 on.
 //
 // Topics are named per recipient (sense_3, patch_up_g1, ...) rather than keyed: each process
 // then receives only its own data, instead of every member deserialising all nine scans a tick.
@@ -19,7 +24,8 @@ using AgentId = std::uint16_t;
 
 class Topology {
  public:
-  Topology(int groups, int robots_per_group) : groups_(groups), per_group_(robots_per_group) {}
+  Topology(int groups, int robots_per_group, int standbys = 0)
+      : groups_(groups), per_group_(robots_per_group), standbys_(standbys < robots_per_group ? standbys : robots_per_group - 1) {}
 
   int groups() const { return groups_; }
   int robots_per_group() const { return per_group_; }
@@ -29,13 +35,19 @@ class Topology {
   AgentId sim() const { return static_cast<AgentId>(robots() + 1); }
 
   AgentId robot(int group, int index) const { return static_cast<AgentId>(group * per_group_ + index); }
-  AgentId leader(int group) const { return robot(group, 0); }
+  AgentId leader(int group) const { return robot(group, 0); }  // the first leader (see leadership.hpp)
+  int standbys() const { return standbys_; }
+  bool is_candidate(AgentId a) const { return is_robot(a) && index_of(a) <= standbys_; }
   int group_of(AgentId robot_id) const { return robot_id / per_group_; }
   int index_of(AgentId robot_id) const { return robot_id % per_group_; }
   bool is_robot(AgentId a) const { return a < robots(); }
 
   std::vector<AgentId> members(int group) const;  // the group's robots except its leader
   std::vector<AgentId> leaders() const;
+  std::vector<AgentId> candidates(int group) const;  // indices 0..standbys
+  std::vector<AgentId> all_candidates() const;       // every group's, group by group
+  // The robots of `group` except `a` (a candidate's readers and writers leave out itself).
+  std::vector<AgentId> group_except(int group, AgentId a) const;
   std::vector<AgentId> robot_ids() const;
   std::vector<AgentId> all_but_sim() const;  // robots and the GCS: who receives the clock
 
@@ -47,6 +59,7 @@ class Topology {
  private:
   int groups_;
   int per_group_;
+  int standbys_ = 0;
 };
 
 // Topic names. Families (the name without the per-recipient suffix) key the traffic accounts.

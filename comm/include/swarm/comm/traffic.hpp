@@ -15,6 +15,7 @@ namespace swarm::comm {
 struct TrafficCount {
   std::uint64_t sent_messages = 0;
   std::uint64_t sent_bytes = 0;
+  std::uint64_t addressed_messages = 0;  // each sent message once per receiver it was meant for
   std::uint64_t received_messages = 0;
   std::uint64_t received_bytes = 0;
   std::uint64_t lost_transmissions = 0;  // emulated losses, retransmitted on reliable topics
@@ -24,7 +25,7 @@ struct TrafficCount {
 class TrafficAccount {
  public:
   using Key = std::pair<std::string, std::string>;  // (topic family, link name)
-  void sent(const std::string& family, const std::string& link, std::uint64_t bytes);
+  void sent(const std::string& family, const std::string& link, std::uint64_t bytes, std::size_t receivers = 1);
   // A message that arrived after `lost` lost transmissions (each counted as received bytes too:
   // they crossed the link); `dropped` = lost for good.
   void received(const std::string& family, const std::string& link, std::uint64_t bytes, std::uint32_t lost,

@@ -85,6 +85,8 @@ enum class TaskKind { Explore, Cover, Mapf, Collect };
 // phases, or (no mission) explore alone with the top-level `explore`. An explore phase's settings
 // are merged over the top-level `explore` (so `--mode` and the top-level settings apply to it).
 [[nodiscard]] std::vector<swarm::scenario::Phase> mission_phases(const swarm::scenario::Scenario& scenario);
+// The standby leaders per group the run really has: leader_standbys, at most robots_per_group - 1.
+[[nodiscard]] int leader_standbys(const swarm::scenario::Scenario& scenario);
 
 // `--mission explore,cover`: replaces the scenario's mission by these phases with default settings.
 // Throws ConfigError naming an unknown task.

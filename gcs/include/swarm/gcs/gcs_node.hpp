@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "swarm/comm/leadership.hpp"
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/comm/role.hpp"
 #include "swarm/gcs/gcs_task.hpp"
@@ -59,6 +60,11 @@ class GcsNode {
   std::map<comm::AgentId, msgs::AgentReport> reports_;
 
   // Reachability of each group's leader, judged from its per-tick heartbeat.
+  // Who led each group when (the clocks' leaders): a message from a robot that did not lead its
+  // group at its stamp tick (a deposed leader's, late) is dropped and counted.
+  comm::LeaderLog leaders_;
+  std::uint64_t not_from_a_leader_ = 0;
+  bool from_leader(const msgs::Stamp& stamp);
   std::vector<std::uint32_t> last_heard_;
   std::uint32_t unreachable_after_ticks_ = 3;
   Outages unreachable_;  // per group

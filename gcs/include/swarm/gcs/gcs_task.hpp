@@ -49,6 +49,11 @@ struct GcsContext {
     return {r.x(), r.y()};
   }
   bool alive(int robot) const { return clock.robots()[static_cast<std::size_t>(robot)].alive(); }
+  // Group g's leader at this tick (comm/leadership.hpp: a standby may have taken over).
+  int leader_of(int g) const {
+    const auto& l = clock.leaders();
+    return static_cast<std::size_t>(g) < l.size() ? l[static_cast<std::size_t>(g)] : setup.topology.leader(g);
+  }
 };
 
 struct ProgressLine {

@@ -40,7 +40,7 @@
 
 namespace swarm::leader {
 
-// Sending, for a task (the node stamps and routes: index 0 is the leader's own robot).
+// Sending, for a task (the node stamps and routes: index ctx.self is the leader's own robot).
 struct GroupOutlets {
   // Gives the route a number of its own (route ids never repeat in a run) and returns it.
   std::function<std::uint32_t(int index, msgs::Route&)> route;
@@ -54,9 +54,10 @@ struct GroupOutlets {
 struct GroupContext {
   const comm::RoleSetup& setup;
   int group = 0;
+  int self = 0;  // the leader's own index in the group (0 unless a standby took over)
   std::uint32_t phase = 0;
   const msgs::Clock& clock;
-  const std::vector<bool>& alive;  // per index of the group (index 0, the leader, always)
+  const std::vector<bool>& alive;  // per index of the group (the leader's own, `self`, always)
   GroupMap& map;
   member::RobotAgent& own;         // the leader's robot
   GroupOutlets& out;
@@ -68,6 +69,8 @@ struct GroupContext {
     return {r.x(), r.y()};
   }
   std::vector<int> living() const;
+  // Where group g's leader of this tick is (the clock names it: comm/leadership.hpp).
+  planner::Cell leader_cell(int g) const;
 };
 
 class GroupTask {

@@ -3,6 +3,11 @@
 // new information to the GCS, relays the group map to its members, notices members the simulator
 // declares lost, and runs the current phase's GroupTask (group_task.hpp), routing the phase's
 // messages to it.
+//
+// Any candidate of the group (comm/leadership.hpp) has one: the leader of the moment steps it;
+// a standby shadows (keeps the group map from what it hears, and the GCS's latest phase, round and
+// orders) until the clock names it leader, then takes over: its own map joins the group map, and
+// the current phase's task starts afresh from the GCS's order (candidate_node.hpp drives this).
 #pragma once
 
 #include <memory>
@@ -21,8 +26,16 @@ namespace swarm::leader {
 
 class LeaderNode {
  public:
-  LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group);
-  void step(const msgs::Clock& clock);
+  // `robot` is the leader's own body, owned by the caller; `index` its index in the group.
+  LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index,
+             member::RobotAgent& robot, bool leading);
+  void step(const msgs::Clock& clock);    // every tick while leading
+  void shadow(const msgs::Clock& clock);  // every tick while another leads
+  void take_over(const msgs::Clock& clock);
+  void stand_down(std::uint32_t tick);
+  // The own robot's scan changes (through its member side, which owns the sense topic).
+  void learn_own(const std::vector<planner::CellChange>& changes);
+  bool leading() const { return leading_; }
   std::string report_json() const;
   std::uint32_t phase() const { return phase_; }
 
@@ -30,14 +43,17 @@ class LeaderNode {
   void learn(const std::vector<planner::CellChange>& fresh, bool own_observation);
   void track_members(GroupContext& ctx);
   void dispatch(GroupContext& ctx);
+  void enter_phase();  // a PhaseStart that came makes its phase current
 
   comm::LockstepAgent& agent_;
   const comm::RoleSetup& setup_;
   const comm::Topology topology_;
   int group_;
+  int self_index_;
+  bool leading_;
   planner::PatchEncoding encoding_;
   GroupMap map_;
-  member::RobotAgent robot_;
+  member::RobotAgent& robot_;
   std::vector<planner::CellChange> to_gcs_;
   std::vector<planner::CellChange> to_members_;
   std::vector<bool> alive_;  // per robot of the group, from the clock's shared robot states
@@ -48,12 +64,13 @@ class LeaderNode {
   bool started_ = false;
   std::optional<std::uint32_t> next_phase_;
   std::optional<std::uint32_t> round_;
+  std::uint32_t last_round_ = 0;
   std::vector<msgs::TaskOrder> orders_;
   std::vector<msgs::MemberStatus> statuses_;
   std::vector<msgs::RouteProgress> progress_;
   planner::RouteProgress own_progress_;
   GroupOutlets outlets_;
-  std::uint32_t route_ids_ = 0;
+  std::uint32_t route_ids_;
 
   comm::Mailbox::Outlet<msgs::MapPatch>& patch_gcs_;
   comm::Mailbox::Outlet<msgs::MapPatch>* patch_down_ = nullptr;  // none in a group of one
@@ -66,6 +83,14 @@ class LeaderNode {
     std::optional<std::uint32_t> rejoined_tick;  // its link healed
   };
   std::vector<MemberLoss> members_lost_;
+  struct Term {
+    std::uint32_t from;
+    std::optional<std::uint32_t> to;  // still leading at the end
+  };
+  std::vector<Term> led_;
 };
+
+// Every known cell of `map`, as changes (what a new leader hands on).
+std::vector<planner::CellChange> known_cells(const planner::OccupancyGrid& map);
 
 }  // namespace swarm::leader

@@ -2,9 +2,18 @@
 // changes go up to the group leader, the leader's group map changes and its orders come down:
 // waypoints (exploration: the robot plans its own way) or routes to follow exactly (every other
 // task), with releases; the member reports its progress along a route. A member knows no task.
+//
+// It obeys only its group's leader of the moment (comm/leadership.hpp): orders from a robot that
+// did not lead the group at the tick they were sent are dropped and counted. A standby leader's
+// member side (leader/candidate_node.hpp) is switched off while that robot leads: its scans then
+// go to the leader side (lead()), and it takes no orders.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <vector>
+
+#include "swarm/comm/leadership.hpp"
 
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/comm/role.hpp"
@@ -15,15 +24,28 @@ namespace swarm::member {
 
 class MemberNode {
  public:
-  MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index);
+  // `robot`: the robot's body and map, owned by the caller (a standby shares it with its leader side).
+  MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index, RobotAgent& robot);
+  // Every tick: step() while a member (it observes the clock's leaders too), observe() alone while
+  // this robot leads.
+  void observe(const msgs::Clock& clock) { leaders_.observe(clock); }
   void step(const msgs::Clock& clock);
+  // While this robot leads its group: scans go to `to_leader` (with what was not sent up yet).
+  void lead(std::function<void(const std::vector<planner::CellChange>&)> to_leader);
+  void follow();  // a member again
   std::string report_json() const;
 
  private:
   comm::LockstepAgent& agent_;
   int group_;
   int index_;
-  RobotAgent robot_;
+  // Whether `sender` led this group at `tick` (orders from anyone else are dropped).
+  bool from_leader(const msgs::Stamp& stamp);
+
+  RobotAgent& robot_;
+  comm::LeaderLog leaders_;
+  std::function<void(const std::vector<planner::CellChange>&)> to_leader_;  // set while leading
+  std::uint64_t not_from_leader_ = 0;
   std::vector<planner::CellChange> pending_up_;
   comm::Mailbox::Outlet<msgs::MapPatch>& patch_up_;
   comm::Mailbox::Outlet<msgs::MemberStatus>& status_;
@@ -39,6 +61,8 @@ class MemberNode {
 // the leader (through `report`). Shared by the member and the leader's own robot.
 void publish_motion(comm::Mailbox::Outlet<msgs::MotionCommand>& motion, comm::AgentId robot,
                     const RobotAgent::Step& step);
+// The group's candidate leaders but `self`: who reads what a member sends up.
+std::vector<comm::AgentId> leaders_except_self(const comm::Topology& t, int group, comm::AgentId self);
 // The robot follows the route message's cells (shared by the member and the leader's own robot).
 void follow_route(RobotAgent& robot, const msgs::Route& route);
 

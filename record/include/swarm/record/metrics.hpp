@@ -31,7 +31,7 @@
 
 namespace swarm::record {
 
-inline constexpr int kMetricsSchemaVersion = 2;
+inline constexpr int kMetricsSchemaVersion = 3;  // 3: leader hand-overs, addressed_messages
 
 class MetricsError : public std::runtime_error {
  public:
@@ -63,6 +63,7 @@ struct TopicTraffic {
   std::string link;
   std::uint64_t messages = 0;
   std::uint64_t bytes = 0;
+  std::uint64_t addressed_messages = 0;  // messages x their receivers: what received_messages should be
   std::uint64_t received_messages = 0;
   std::uint64_t lost_transmissions = 0;
   std::uint64_t dropped_messages = 0;
@@ -87,6 +88,20 @@ struct AgentLost {
   std::uint32_t marked_lost_at_tick = 0;
   std::optional<std::uint32_t> rejoined_at_tick;
   std::optional<std::uint32_t> stopped_answering_at_tick;
+  std::optional<double> detection_seconds;
+};
+
+// A group's leadership passing from one robot to another (comm/leadership.hpp): the clock named
+// `to` at `at_tick`; `from` stopped answering at `from_stopped_at_tick` (the simulator's loss
+// record: null when it was not lost), so the group had no leader for `leaderless_ticks` ticks and
+// `detection_seconds` of wall time (how long DDS took to declare `from` lost).
+struct Handover {
+  int group = 0;
+  std::string from;
+  std::string to;
+  std::uint32_t at_tick = 0;
+  std::optional<std::uint32_t> from_stopped_at_tick;
+  std::optional<std::uint32_t> leaderless_ticks;
   std::optional<double> detection_seconds;
 };
 
@@ -129,6 +144,8 @@ struct RunMetrics {
   double planning_ms_per_group_round = 0;
   std::vector<AgentLost> agents_lost;
   std::vector<Unreachable> unreachable;
+  std::vector<Handover> leader_handovers;
+  std::uint64_t messages_from_deposed_leaders = 0;  // heard by the GCS from a robot no longer leading, dropped
   MotionNumbers motion;  // the whole run
   std::vector<PhaseMetrics> phases;
   std::map<std::string, nlohmann::json> agents;  // each agent's own numbers, by name

@@ -1,0 +1,47 @@
+#include "swarm/leader/candidate_node.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace swarm::leader {
+
+CandidateNode::CandidateNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index)
+    : self_(agent.self()),
+      group_(group),
+      robot_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution()),
+      member_(agent, setup, group, index, robot_),
+      leader_(agent, setup, group, index, robot_, agent.self() == setup.topology.leader(group)) {
+  // The first leader leads from tick 0: its first scans are the leader side's already.
+  if (leader_.leading()) lead();
+}
+
+void CandidateNode::lead() {
+  member_.lead([this](const std::vector<planner::CellChange>& changes) { leader_.learn_own(changes); });
+}
+
+void CandidateNode::step(const msgs::Clock& clock) {
+  const auto& leaders = clock.leaders();
+  const bool named = static_cast<std::size_t>(group_) < leaders.size() ? leaders[static_cast<std::size_t>(group_)] == self_
+                                                                        : leader_.leading();
+  if (named && !leader_.leading()) {
+    leader_.take_over(clock);
+    lead();
+  } else if (!named && leader_.leading()) {
+    leader_.stand_down(clock.tick());
+    member_.follow();
+  }
+  if (leader_.leading()) {
+    member_.observe(clock);
+    leader_.step(clock);
+  } else {
+    leader_.shadow(clock);
+    member_.step(clock);
+  }
+}
+
+std::string CandidateNode::report_json() const {
+  nlohmann::json out = nlohmann::json::parse(leader_.report_json());
+  out["member"] = nlohmann::json::parse(member_.report_json());
+  return out.dump();
+}
+
+}  // namespace swarm::leader
