@@ -112,6 +112,12 @@ void MapfGcsTask::note_plan(GcsContext& ctx, const char* why, const planner::map
 }
 
 void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res) {
+  by_graph_ = config_.execution() != swarm::scenario::MAPF_EXECUTE_TIMED;
+  if (by_graph_) {
+    adg_ = planner::mapf::dependencies(res.paths);
+    progress_.assign(res.paths.size(), 0);
+    rotation_ordered_.assign(adg_.rotations.size(), false);
+  }
   msgs::TaskOrder o;
   o.group(task::kAllGroups);
   o.kind(task::kOrderWork);
@@ -119,10 +125,7 @@ void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res) {
   if (config_.execution() == swarm::scenario::MAPF_EXECUTE_TIMED) {
     // One start tick for every robot: late enough for the order to reach every leader and its
     // routes every member, with the configured delays and jitter (loss is not allowed for).
-    const auto& links = ctx.setup.world.scenario.links();
-    const std::uint32_t margin = 2 + links.leader_gcs().delay_ticks() + links.leader_gcs().jitter_ticks() +
-                                 links.member_leader().delay_ticks() + links.member_leader().jitter_ticks();
-    o.values().push_back(static_cast<std::int32_t>(ctx.tick() + margin));
+    o.values().push_back(static_cast<std::int32_t>(start_tick(ctx)));
   }
   for (std::size_t k = 0; k < planned_.size(); ++k) {
     o.route_robots().push_back(static_cast<std::uint16_t>(planned_[k]));
@@ -130,6 +133,24 @@ void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res) {
     ctx.record.append(route_frame(ctx.tick(), phase_, planned_[k], res.paths[k]));
   }
   ctx.out.order(o);
+}
+
+std::uint32_t MapfGcsTask::start_tick(const GcsContext& ctx) const {
+  const auto& links = ctx.setup.world.scenario.links();
+  const std::uint32_t margin = 2 + links.leader_gcs().delay_ticks() + links.leader_gcs().jitter_ticks() +
+                               links.member_leader().delay_ticks() + links.member_leader().jitter_ticks();
+  return ctx.tick() + margin;
+}
+
+void MapfGcsTask::order_rotations(GcsContext& ctx) {
+  for (const int q : planner::mapf::ready_rotations(adg_, progress_)) {
+    const auto qu = static_cast<std::size_t>(q);
+    if (rotation_ordered_[qu]) continue;
+    rotation_ordered_[qu] = true;
+    ++rotations_ordered_;
+    send_order(ctx, task::kOrderRotate,
+               {static_cast<std::int32_t>(seq_), q, static_cast<std::int32_t>(start_tick(ctx))});
+  }
 }
 
 void MapfGcsTask::send_order(GcsContext& ctx, std::uint8_t kind, std::vector<std::int32_t> values) {
@@ -145,6 +166,12 @@ void MapfGcsTask::on_report(const msgs::TaskReport& r, GcsContext&) {
   const auto& v = r.values();
   if (!v.empty() && static_cast<std::uint32_t>(v[0]) == seq_ && v.size() % 3 == 1) {
     relay_.insert(relay_.end(), v.begin() + 1, v.end());
+    for (std::size_t i = 1; by_graph_ && i + 2 < v.size(); i += 3) {
+      const auto it = std::find(planned_.begin(), planned_.end(), v[i]);
+      if (it == planned_.end()) continue;
+      auto& p = progress_[static_cast<std::size_t>(it - planned_.begin())];
+      p = std::max(p, static_cast<std::uint32_t>(v[i + 1]));
+    }
   }
   if (r.group() >= group_done_.size() || v.empty() || static_cast<std::uint32_t>(v[0]) != seq_) return;
   if (r.state() == task::kDone) group_done_[r.group()] = true;
@@ -159,6 +186,7 @@ void MapfGcsTask::step(GcsContext& ctx) {
     relay_.clear();
     send_order(ctx, task::kOrderProgress, std::move(values));
   }
+  if (by_graph_ && !holding_ && !failed_) order_rotations(ctx);
   arrived_ = 0;
   for (int r : planned_) arrived_ += ctx.alive(r) && ctx.cell_of(r) == goals_[static_cast<std::size_t>(r)] ? 1 : 0;
   if (failed_) return;
@@ -206,6 +234,7 @@ nlohmann::json MapfGcsTask::numbers() const {
           {"lower_bound", first_.lower_bound},
           {"solver_status", planner::mapf::to_string(first_.status)},
           {"solver_seconds", first_.seconds},
+          {"rotations_ordered", rotations_ordered_},
           {"plans", plans_}};
 }
 

@@ -46,6 +46,7 @@ void MapfGroupTask::take_plan(const msgs::TaskOrder& o, GroupContext& ctx) {
   progress_.assign(n, 0);
   released_.assign(n, 0);
   route_id_.assign(n, 0);
+  base_.assign(n, 0);
   own_.clear();
   report_.clear();
   const comm::Topology& t = ctx.topology();
@@ -60,7 +61,7 @@ void MapfGroupTask::take_plan(const msgs::TaskOrder& o, GroupContext& ctx) {
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
     released_[ku] = timed_ ? static_cast<std::uint32_t>(routes_[ku].size() - 1)
-                           : planner::mapf::releasable(adg_, k, progress_);
+                           : planner::mapf::releasable(adg_, k, progress_, planner::mapf::Rotations::Held);
     msgs::Route m;
     m.path_xy(comm::to_xy(routes_[ku]));
     m.release(released_[ku]);
@@ -80,6 +81,13 @@ void MapfGroupTask::on_order(const msgs::TaskOrder& o, GroupContext& ctx) {
     holding_ = true;
     return;
   }
+  if (o.kind() == task::kOrderRotate) {
+    if (o.values().size() == 3 && !timed_ && o.values()[1] >= 0 &&
+        static_cast<std::size_t>(o.values()[1]) < adg_.rotations.size()) {
+      rotate(o.values()[1], static_cast<std::uint32_t>(o.values()[2]), ctx);
+    }
+    return;
+  }
   if (o.kind() != task::kOrderProgress) return;
   const auto& v = o.values();
   for (std::size_t i = 1; i + 2 < v.size(); i += 3) {
@@ -97,8 +105,8 @@ void MapfGroupTask::on_progress(int index, const planner::RouteProgress& p, Grou
   if (!have_plan_) return;
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
-    if (index_of_[ku] != index || route_id_[ku] != p.id || p.step <= progress_[ku]) continue;
-    progress_[ku] = p.step;
+    if (index_of_[ku] != index || route_id_[ku] != p.id || base_[ku] + p.step <= progress_[ku]) continue;
+    progress_[ku] = base_[ku] + p.step;
     note(k);
   }
   release(ctx);
@@ -109,15 +117,34 @@ void MapfGroupTask::release(GroupContext& ctx) {
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
     if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
-    const std::uint32_t may = planner::mapf::releasable(adg_, k, progress_);
+    const std::uint32_t may = planner::mapf::releasable(adg_, k, progress_, planner::mapf::Rotations::Held);
     if (may <= released_[ku]) continue;
     released_[ku] = may;
     msgs::RouteRelease r;
     r.route_id(route_id_[ku]);
-    r.release(may);
+    r.release(may - base_[ku]);
     ctx.out.release(index_of_[ku], r);
     ++releases_sent_;
     note(k);
+  }
+}
+
+void MapfGroupTask::rotate(int q, std::uint32_t tick, GroupContext& ctx) {
+  for (const planner::mapf::Need& m : adg_.rotations[static_cast<std::size_t>(q)]) {
+    const auto ku = static_cast<std::size_t>(m.robot);
+    if (index_of_[ku] < 0 || !ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
+    if (progress_[ku] + 1 != m.step) continue;  // not where the GCS saw it (cannot happen: it was held)
+    // The rest of its route from the cell it stands on, its first step released from `tick` on:
+    // every member's simulator command then leaves in one tick.
+    const std::uint32_t from = m.step - 1;
+    msgs::Route r;
+    r.path_xy(comm::to_xy(std::vector<planner::Cell>(routes_[ku].begin() + from, routes_[ku].end())));
+    r.release(1);
+    r.start_tick(tick);
+    base_[ku] = from;
+    released_[ku] = m.step;
+    route_id_[ku] = ctx.out.route(index_of_[ku], r);
+    note(static_cast<int>(ku));
   }
 }
 

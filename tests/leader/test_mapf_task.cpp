@@ -3,6 +3,9 @@
 // member<->leader delay and jitter, and when a member is lost midway.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
+#include "swarm_test/ascii_grid.hpp"
 #include "swarm_test/fake_swarm.hpp"
 
 namespace swarm::leader {
@@ -93,6 +96,39 @@ TEST(MapfTask, AMemberLostMidwayTheOthersArePlannedAgain) {
   EXPECT_EQ(p["task"]["plans"][1]["robots"], 5);
   EXPECT_EQ(p["task"]["robots_at_goal"], 5);
   EXPECT_EQ(p["task"]["conflicts"], 0);
+}
+
+// Four robots in a closed 2 x 2 room, each to go to the next cell round it: the only plan is one
+// rotation of all four (no cell is free), and it spans both groups. Driven by the graph under
+// member<->leader delay and jitter, the leaders learn of it at different ticks, so they never
+// release it themselves: the GCS orders it with one start tick, and all four move in one tick.
+TEST(MapfTask, ARotationAcrossGroupsMovesInOneTickUnderDelayAndJitter) {
+  const auto truth = swarm::test::grid_from({"####", "#..#", "#..#", "####"});
+  auto sc = config::parse_scenario_text(
+      "groups: 2 robots_per_group: 2 max_ticks: 300 links { member_leader { delay_ticks: 2 jitter_ticks: 3 } } "
+      "mission { phase { mapf { execution: MAPF_EXECUTE_ADG solver: MAPF_CBS } } }",
+      "rotation test");
+  auto setup = swarm::test::setup_for(truth, {1, 1}, sc);
+  const std::vector<planner::Cell> ring{{1, 1}, {1, 2}, {2, 2}, {2, 1}};
+  auto* mapf = setup.world.scenario.mutable_mission()->mutable_phase(0)->mutable_mapf();
+  for (const planner::Cell c : setup.world.robot_cells) {
+    const auto at = std::find(ring.begin(), ring.end(), c);
+    ASSERT_NE(at, ring.end());
+    const planner::Cell next = ring[static_cast<std::size_t>(at - ring.begin() + 1) % ring.size()];
+    auto* g = mapf->add_goals();
+    g->set_x(truth.origin_x() + (next.x + 0.5) * truth.resolution());
+    g->set_y(truth.origin_y() + (next.y + 0.5) * truth.resolution());
+  }
+  swarm::test::FakeSwarm s(setup);
+  const auto m = s.run_to_end();
+  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto& p = mapf_phase(m);
+  EXPECT_EQ(p["task"]["planned_makespan"], 1);
+  EXPECT_EQ(p["task"]["rotations_ordered"], 1);
+  EXPECT_EQ(p["task"]["robots_at_goal"], 4);
+  EXPECT_EQ(p["task"]["conflicts"], 0);
+  EXPECT_EQ(p["motion"]["blocked_moves"], 0);
+  EXPECT_EQ(p["motion"]["moves"], 4);
 }
 
 }  // namespace

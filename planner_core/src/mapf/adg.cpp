@@ -124,22 +124,39 @@ bool met(const Dependencies& adg, std::size_t robot, std::uint32_t k, const std:
   return true;
 }
 
+// Every member of rotation q stands on the cell before its step of it (or is past it) and every
+// need of every step of it is met.
+bool rotation_may_go(const Dependencies& adg, std::size_t q, const std::vector<std::uint32_t>& progress) {
+  for (const Need& m : adg.rotations[q]) {
+    const auto mr = static_cast<std::size_t>(m.robot);
+    if (progress[mr] + 1 < m.step || !met(adg, mr, m.step, progress)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
-std::uint32_t releasable(const Dependencies& adg, int robot, const std::vector<std::uint32_t>& progress) {
+std::uint32_t releasable(const Dependencies& adg, int robot, const std::vector<std::uint32_t>& progress,
+                         Rotations rotations) {
   const auto r = static_cast<std::size_t>(robot);
   const auto& needs = adg.needs[r];
   for (std::uint32_t k = 1; k < needs.size(); ++k) {
     if (!met(adg, r, k, progress)) return k - 1;
-    // A rotation goes when every member stands ready and all their needs are met.
     if (const int q = adg.rotation_of.empty() ? -1 : adg.rotation_of[r][k]; q >= 0) {
-      for (const Need& m : adg.rotations[static_cast<std::size_t>(q)]) {
-        const auto mr = static_cast<std::size_t>(m.robot);
-        if (progress[mr] + 1 < m.step || !met(adg, mr, m.step, progress)) return k - 1;
-      }
+      if (rotations == Rotations::Held || !rotation_may_go(adg, static_cast<std::size_t>(q), progress)) return k - 1;
     }
   }
   return needs.empty() ? 0 : static_cast<std::uint32_t>(needs.size() - 1);
+}
+
+std::vector<int> ready_rotations(const Dependencies& adg, const std::vector<std::uint32_t>& progress) {
+  std::vector<int> out;
+  for (std::size_t q = 0; q < adg.rotations.size(); ++q) {
+    bool at_start = true;
+    for (const Need& m : adg.rotations[q]) at_start = at_start && progress[static_cast<std::size_t>(m.robot)] + 1 == m.step;
+    if (at_start && rotation_may_go(adg, q, progress)) out.push_back(static_cast<int>(q));
+  }
+  return out;
 }
 
 }  // namespace swarm::planner::mapf

@@ -14,6 +14,7 @@ inline constexpr std::uint16_t kAllGroups = 0xFFFF;
 inline constexpr std::uint8_t kOrderWork = 0;      // the group's work
 inline constexpr std::uint8_t kOrderProgress = 1;  // other groups' route progress, relayed by the GCS
 inline constexpr std::uint8_t kOrderHold = 2;      // stop handing out work; report kHeld when still
+inline constexpr std::uint8_t kOrderRotate = 3;    // mapf: robots that move round a cycle, at one tick
 
 // TaskReport.state
 inline constexpr std::uint8_t kWorking = 0;

@@ -20,6 +20,13 @@
 //     arrived; kHeld after a hold when they all stand still.
 //   TaskOrder kOrderProgress, kAllGroups: values = [s, robot, step, release, ...], relayed.
 //   TaskOrder kOrderHold, seq s: stop releasing plan s.
+//   TaskOrder kOrderRotate, kAllGroups, seq s: values = [s, q, T]: the robots of the plan's
+//     rotation q (planner/mapf/adg.hpp: robots moving round a cycle of cells in one time step)
+//     make their step of it at tick T, all together. Driven by the graph, leaders never release a
+//     rotation themselves: they learn of their releases in different ticks, and a robot that moved
+//     early would run into one that has not left. The GCS knows every robot's progress (the
+//     leaders' reports), so it names the rotations that may go, with a start tick late enough for
+//     the order to reach every leader and its route every member (configured delays and jitter).
 // A planned robot lost midway: the GCS holds the plan, waits until every group reports its robots
 // still, and plans again from where the living robots stand (seq s + 1).
 // Complete when every group of the current plan has reported kDone.
@@ -29,6 +36,7 @@
 #include <vector>
 
 #include "swarm/gcs/gcs_task.hpp"
+#include "swarm/planner/mapf/adg.hpp"
 #include "swarm/planner/mapf/result.hpp"
 
 namespace swarm::gcs {
@@ -50,6 +58,11 @@ class MapfGcsTask : public GcsTask {
   void note_plan(GcsContext& ctx, const char* why, const planner::mapf::Result& res);  // metrics + log
   void send_plan(GcsContext& ctx, const planner::mapf::Result& res);
   void send_order(GcsContext& ctx, std::uint8_t kind, std::vector<std::int32_t> values = {});
+  // The tick a timed plan or a rotation sets off at: late enough for an order sent now to reach
+  // every leader and its routes every member, with the configured delays and jitter (loss is not
+  // allowed for).
+  std::uint32_t start_tick(const GcsContext& ctx) const;
+  void order_rotations(GcsContext& ctx);  // the rotations that may go now, ordered once each
   std::vector<planner::Cell> random_goals(const GcsContext& ctx) const;
 
   swarm::scenario::Mapf config_;
@@ -66,6 +79,13 @@ class MapfGcsTask : public GcsTask {
   std::uint32_t start_tick_ = 0;
   int arrived_ = 0;
   std::vector<std::int32_t> relay_;  // progress triples to relay this tick
+  // Driven by the graph: the plan's graph, every planned robot's progress as reported, and which
+  // rotations were ordered.
+  bool by_graph_ = false;
+  planner::mapf::Dependencies adg_;
+  std::vector<std::uint32_t> progress_;  // per plan index
+  std::vector<bool> rotation_ordered_;
+  std::uint32_t rotations_ordered_ = 0;
   planner::mapf::Result first_;      // the first plan's numbers (after any fallback)
   bool have_first_ = false;
   nlohmann::json plans_ = nlohmann::json::array();

@@ -36,6 +36,8 @@ class MapfGroupTask : public GroupTask {
   // Sends a release to every robot of the group that may now go further.
   void release(GroupContext& ctx);
   void note(int k);  // robot k's progress/release goes into the next report
+  // kOrderRotate: this group's robots of rotation q make their step of it at `tick`.
+  void rotate(int q, std::uint32_t tick, GroupContext& ctx);
 
   bool timed_;
   int group_;
@@ -49,6 +51,9 @@ class MapfGroupTask : public GroupTask {
   std::vector<std::uint32_t> progress_;       // per plan index: the route step it is known at
   std::vector<std::uint32_t> released_;       // per plan index: how far it may drive
   std::vector<std::uint32_t> route_id_;       // per plan index (own robots)
+  // per plan index (own robots): the route step its current route message starts at (a rotation
+  // sends the rest of the route anew, with its start tick)
+  std::vector<std::uint32_t> base_;
   std::vector<int> own_;                      // plan indices of this group's robots
   std::vector<std::int32_t> report_;          // (robot, step, release) triples to report
   bool reported_done_ = false;

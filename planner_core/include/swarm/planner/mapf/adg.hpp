@@ -17,9 +17,11 @@
 // released to all its robots at once when each stands on its cell and every other need of every
 // step of it is met. So driving never deadlocks; and as a robot enters a cell only once its
 // predecessors have left, two robots are never on one cell and never swap, whatever the delays.
-// The one exception: a rotation's robots must move in the same tick, and under delay they learn
-// of their release in different ticks; one that tries early is refused by the simulator (counted
-// as a conflict there, never a collision) and tries again. `rotations` says how many a plan has.
+// The one catch: a rotation's robots must move in the same tick, and under delay they learn of
+// their release in different ticks (one that tried early would be refused by the simulator, a
+// conflict there). So a live run holds rotations back (Rotations::Held) and releases each one
+// that ready_rotations() names as one order with one start tick for all its robots
+// (gcs/mapf_task.hpp). `rotations` says how many a plan has.
 // What a robot may do is judged from the progress of the others as the caller knows it (possibly
 // late): late knowledge only makes robots wait longer, never collide.
 //
@@ -61,9 +63,19 @@ struct Dependencies {
 // in a way that gives no order (a vertex conflict): the graph needs a valid plan.
 [[nodiscard]] Dependencies dependencies(const std::vector<Path>& paths);
 
+// How releasable() treats a rotation's step. Together: released to each member once every member
+// stands ready and every need of every step of it is met (right when all members learn it in one
+// tick). Held: never; the caller releases it at one tick for all (ready_rotations).
+enum class Rotations { Together, Held };
+
 // The last route step robot `robot` may drive to, given what is known of every robot's progress
 // (progress[r] = the route step robot r is known to stand on): the first step whose needs are not
-// all met, minus one; its whole route if none.
-[[nodiscard]] std::uint32_t releasable(const Dependencies& adg, int robot, const std::vector<std::uint32_t>& progress);
+// all met (or, Held, that belongs to a rotation), minus one; its whole route if none.
+[[nodiscard]] std::uint32_t releasable(const Dependencies& adg, int robot, const std::vector<std::uint32_t>& progress,
+                                       Rotations rotations = Rotations::Together);
+
+// The rotations whose robots all stand on the cell before their step of it (progress = step - 1)
+// with every need of every step met: the ones that may go now, in index order.
+[[nodiscard]] std::vector<int> ready_rotations(const Dependencies& adg, const std::vector<std::uint32_t>& progress);
 
 }  // namespace swarm::planner::mapf
