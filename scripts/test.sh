@@ -1,14 +1,37 @@
 #!/usr/bin/env bash
 # One command from a fresh Debian 12 machine to every test: installs what is missing, builds,
-# runs ctest (unit, integration and, where a Docker engine runs, deploy tests), then the
-# AddressSanitizer run with a short fuzz run per target (scripts/sanitize.sh address;
-# SWARM_SKIP_SANITIZE=1 skips it). Extra arguments go to ctest, e.g. scripts/test.sh -L unit
-# (then the sanitizer run is skipped too).
+# runs ctest (unit, integration and, where a Docker engine runs, deploy tests), then a short
+# libFuzzer run of every parser and decoder with ASan + UBSan (scripts/fuzz.sh --smoke;
+# SWARM_SKIP_FUZZ=1 skips it). Extra arguments go to ctest, e.g. scripts/test.sh -L unit (then
+# the fuzz run is skipped too).
+#
+# The full sanitizer runs are not part of it (each is a second build of the whole tree, which
+# would take CI past its 30 minutes on 2 cores): SWARM_SANITIZE=address (or thread) adds
+# scripts/sanitize.sh to the end; run it by hand on every change to comm/ or a role.
+#
+# Where a Docker engine runs, the deploy tests' base image and packages (debootstrap and
+# downloads: waiting on the network, not the CPU) are prepared in the background while the
+# project compiles.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
+
+prepare_pid=""
+prepare_log=build/deploy-prepare.log
+if (($# == 0)) && command -v docker >/dev/null 2>&1 && docker info >/dev/null 2>&1; then
+  mkdir -p build
+  (deploy/base-image.sh && deploy/fetch-debs.sh runtime) >"$prepare_log" 2>&1 &
+  prepare_pid=$!
+fi
 scripts/build.sh
+if [[ -n $prepare_pid ]] && ! wait "$prepare_pid"; then
+  # Not fatal here: the deploy tests make what is missing themselves and report the failure.
+  echo "test.sh: preparing the deploy base image failed (see $prepare_log); the deploy tests retry" >&2
+fi
 (cd build && ctest --output-on-failure --timeout 600 -j "${SWARM_TEST_JOBS:-2}" "$@")
-if (($# == 0)) && [[ ${SWARM_SKIP_SANITIZE:-0} != 1 ]]; then
-  scripts/sanitize.sh address
+if (($# == 0)) && [[ ${SWARM_SKIP_FUZZ:-0} != 1 ]]; then
+  scripts/fuzz.sh --smoke
+fi
+if (($# == 0)) && [[ -n ${SWARM_SANITIZE:-} ]]; then
+  SWARM_SKIP_FUZZ=1 scripts/sanitize.sh "$SWARM_SANITIZE"
 fi
