@@ -48,4 +48,20 @@ TEST(Adg, ARotationIsOneJointStep) {
   for (int r = 0; r < 4; ++r) EXPECT_EQ(releasable(d, r, {0, 0, 0, 0}), 1u) << r;
 }
 
+// Held (a live run): no robot is released into the rotation; ready_rotations names it once every
+// member stands ready; once made, it is behind each robot, and robot 0 goes on to its next cell.
+TEST(Adg, AHeldRotationIsNamedWhenReadyAndIsBehindItsRobotsOnceMade) {
+  // Robots 0..3 round the square (0, 0) -> (0, 1) -> (1, 1) -> (1, 0) -> (0, 0) at time 1; robot 0
+  // then on to (0, 2).
+  const std::vector<Path> plan{{{0, 0}, {0, 1}, {0, 2}}, {{0, 1}, {1, 1}}, {{1, 1}, {1, 0}}, {{1, 0}, {0, 0}}};
+  const Dependencies d = dependencies(plan);
+  ASSERT_EQ(d.rotations.size(), 1u);
+  EXPECT_EQ(releasable(d, 0, {0, 0, 0, 0}), 2u);  // Together: the rotation and the step after it
+  EXPECT_EQ(releasable(d, 0, {0, 0, 0, 0}, Rotations::Held), 0u);
+  EXPECT_EQ(releasable(d, 1, {0, 0, 0, 0}, Rotations::Held), 0u);
+  EXPECT_EQ(ready_rotations(d, {0, 0, 0, 0}), (std::vector<int>{0}));
+  EXPECT_TRUE(ready_rotations(d, {1, 1, 1, 1}).empty());  // made
+  EXPECT_EQ(releasable(d, 0, {1, 1, 1, 1}, Rotations::Held), 2u);
+}
+
 }  // namespace

@@ -142,7 +142,8 @@ std::uint32_t releasable(const Dependencies& adg, int robot, const std::vector<s
   const auto& needs = adg.needs[r];
   for (std::uint32_t k = 1; k < needs.size(); ++k) {
     if (!met(adg, r, k, progress)) return k - 1;
-    if (const int q = adg.rotation_of.empty() ? -1 : adg.rotation_of[r][k]; q >= 0) {
+    // A rotation step the robot has made is behind it, whoever released it.
+    if (const int q = adg.rotation_of.empty() || k <= progress[r] ? -1 : adg.rotation_of[r][k]; q >= 0) {
       if (rotations == Rotations::Held || !rotation_may_go(adg, static_cast<std::size_t>(q), progress)) return k - 1;
     }
   }
