@@ -61,13 +61,21 @@ TEST(Tasks, ExploreThenCoverReachesEveryReachableCell) {
   EXPECT_GT(poses[1], 0u);
 }
 
-TEST(Tasks, CoverWithAMemberKilledMidwayStillCoversEverything) {
+// A member and, in the other group, the leader are killed mid-coverage: group 0's leader divides
+// its share again among the living; group 1's standby takes the group over and starts its share
+// afresh from the GCS's order. Every cell is still covered.
+TEST(Tasks, CoverWithAMemberAndALeaderKilledMidwayStillCoversEverything) {
   const auto m = run_task("cover_kill", "small.pbtxt", "",
-                          "--mission cover --groups 1 --robots-per-group 3 --max-ticks 3000 --kill member-0-2@40");
+                          "--mission cover --groups 2 --robots-per-group 3 --max-ticks 3000 --kill member-0-2@40 "
+                          "--kill leader-1@60");
   EXPECT_DOUBLE_EQ(phase_named(m, "cover")["task"]["covered_fraction"].get<double>(), 1.0);
   const auto& divisions = m["agents"]["leader-0"]["phases"][0]["numbers"]["divisions"];
   ASSERT_EQ(divisions.size(), 2u) << divisions;
   EXPECT_EQ(divisions[1]["why"], "member lost");
+  const auto& h = m["faults"]["leader_handovers"];
+  ASSERT_EQ(h.size(), 1u) << h;
+  EXPECT_EQ(h[0]["to"], "member-1-1");
+  EXPECT_EQ(h[0]["at_tick"], 61);
 }
 
 // Item 6 of the coverage issue: link delay and loss slow the task but never break it.
