@@ -1,8 +1,10 @@
 #include "darp_engine.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 
@@ -10,6 +12,22 @@ namespace swarm::planner::detail {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The hot loops are compiled twice, for AVX2 and for the x86-64 baseline (SSE2), and the loader
+// picks the one the CPU runs (function multi-versioning). Lane for lane the same IEEE operations
+// in the same order (no FMA: -ffp-contract=off; no reordered reductions), so the same results.
+#if defined(__x86_64__) && defined(__gnu_linux__) && (defined(__GNUC__) || defined(__clang__))
+#define SWARM_DARP_HOT __attribute__((target_clones("avx2", "default")))
+#else
+#define SWARM_DARP_HOT
+#endif
+
+// Robot r takes the cell when its value is strictly lower (ties keep the lower robot index).
+inline void take_if_lower(DarpEngine::Metric value, std::int32_t r, DarpEngine::Metric& best, std::int32_t& owner) {
+  const bool lower = std::isless(value, best);
+  best = lower ? value : best;
+  owner = lower ? r : owner;
+}
 
 }  // namespace
 
@@ -61,6 +79,7 @@ DarpEngine::DarpEngine(const DarpSpace& space, std::vector<int> starts, const Da
     }
   }
   best_value_.resize(m_);
+  best_next_.resize(m_);
   owner_.resize(m_);
   previous_owner_.assign(m_, -1);
   counts_.resize(n_);
@@ -73,6 +92,16 @@ DarpEngine::DarpEngine(const DarpSpace& space, std::vector<int> starts, const Da
     left_[i] = g.next[i][1];  // RegionGraph order: +x, -x, +y, -y
     down_[i] = g.next[i][3];
   }
+  cell_x_.resize(m_);
+  cell_y_.resize(m_);
+  cell_column_.resize(m_);
+  for (int i = 0; i < m_; ++i) {
+    cell_column_[i] = g.cells[i].x;
+    cell_x_[i] = g.cells[i].x;
+    cell_y_[i] = g.cells[i].y;
+  }
+  own_field_.resize(n_);
+  stray_field_.resize(n_);
   assign();
   evaluate();
 }
@@ -87,18 +116,35 @@ void DarpEngine::assign() {
     Metric* best = best_value_.data();
     std::int32_t* own = owner_.data();
     const int m = m_;  // a local bound: the stores below could alias a member
-    for (int i = 0; i < m; ++i) {
-      const bool lower = std::isless(e[i], best[i]);
-      best[i] = lower ? e[i] : best[i];
-      own[i] = lower ? r : own[i];
+    for (int i = 0; i < m; ++i) take_if_lower(e[i], r, best[i], own[i]);
+  }
+  finish_assignment(true);
+}
+
+void DarpEngine::finish_assignment(bool first) {
+  for (int r = 0; r < n_; ++r) owner_[starts_[r]] = r;
+  changed_.clear();
+  // Blocks of cells without a change are passed over with one vectorised test each.
+  constexpr int kBlock = 32;
+  const std::int32_t* now = owner_.data();
+  const std::int32_t* before = previous_owner_.data();
+  for (int b = 0; b < m_; b += kBlock) {
+    const int e = std::min(m_, b + kBlock);
+    std::int32_t differ = 0;
+    for (int i = b; i < e; ++i) differ |= now[i] ^ before[i];
+    if (differ == 0) continue;
+    for (int i = b; i < e; ++i) {
+      if (now[i] != before[i]) changed_.push_back(i);
     }
   }
-  for (int r = 0; r < n_; ++r) owner_[starts_[r]] = r;
-  std::fill(counts_.begin(), counts_.end(), 0);
-  changed_.clear();
-  for (int i = 0; i < m_; ++i) {
-    ++counts_[owner_[i]];
-    if (owner_[i] != previous_owner_[i]) changed_.push_back(i);
+  if (first) {
+    std::fill(counts_.begin(), counts_.end(), 0);
+    for (int i = 0; i < m_; ++i) ++counts_[owner_[i]];
+    return;
+  }
+  for (int c : changed_) {  // counts_ held previous_owner_'s; few cells change hands
+    --counts_[previous_owner_[c]];
+    ++counts_[owner_[c]];
   }
 }
 
@@ -190,10 +236,16 @@ void DarpEngine::evaluate() {
   // Every parent is a smaller index, so one forward pass leaves each cell pointing at its root.
   for (int i = 0; i < m; ++i) parent_[i] = parent_[parent_[i]];
   std::fill(split_.begin(), split_.end(), 0);
+  // (Raw pointers: a store through a byte pointer could otherwise alias every member.)
+  const std::int32_t* __restrict own = owner_.data();
+  const int* __restrict parent = parent_.data();
+  const int* __restrict start = starts_.data();
+  std::uint8_t* __restrict in_start = in_start_piece_.data();
+  std::uint8_t* __restrict split = split_.data();
   for (int i = 0; i < m; ++i) {
-    const int o = owner_[i];
-    in_start_piece_[i] = parent_[i] == parent_[starts_[o]];
-    split_[o] |= !in_start_piece_[i];
+    const int o = own[i];
+    in_start[i] = parent[i] == parent[start[o]];
+    split[o] |= !in_start[i];
   }
   score_ = {};
   for (int r = 0; r < n_; ++r) {
@@ -214,16 +266,16 @@ DarpStatus DarpEngine::run(int budget, const std::function<bool()>& should_stop,
     if (updates_ >= budget) return DarpStatus::Failed;
     if (should_stop && should_stop()) return DarpStatus::Stopped;
     update();
-    assign();
     evaluate();
   }
 }
 
-void DarpEngine::update() {
+SWARM_DARP_HOT void DarpEngine::update() {
   // Fairness factor m_r, per piece (robots in different pieces never compete for cells). The
   // pressure is towards the exact share (no dead band, as the reference at its first threshold);
   // only the goal test allows the tolerance.
-  std::vector<double> log_m(n_, 0.0);
+  std::vector<double>& log_m = log_m_;
+  log_m.assign(n_, 0.0);
   for (int p = 0; p < space_.pieces; ++p) {
     int np = 0;
     for (int r = 0; r < n_; ++r) np += space_.robot_piece[r] == p;
@@ -246,68 +298,193 @@ void DarpEngine::update() {
   }
 
   // Every value of a cell is shifted by the same amount (the cell's smallest value, found by the
-  // last assign()): which robot is cheapest never changes, and the values stay near 0 where
+  // last assignment): which robot is cheapest never changes, and the values stay near 0 where
   // cells change hands, so float keeps ample precision there and nothing can overflow.
+  // The new values are compared as they are written: the next assignment is built in
+  // best_next_ / previous_owner_ (free until then) while owner_ still holds the division the
+  // connectivity corrections are computed from.
   const float level = static_cast<float>(config_.random_level);
   constexpr float kScale = 2.0f / 65536.0f;  // 16-bit draws: u = level * ((k + 0.5) * 2 / 65536 - 1)
-  noise_.resize(m_ + 3);
-  const Metric* shift = best_value_.data();
+  const int m = m_;
+  const int words = (m + 3) / 4;
+  noise_bits_.resize(static_cast<std::size_t>(words) * 4);
+  std::fill(best_next_.begin(), best_next_.end(), std::numeric_limits<Metric>::infinity());
+  std::fill(previous_owner_.begin(), previous_owner_.end(), 0);
+  const Metric* __restrict shift = best_value_.data();
+  Metric* __restrict best = best_next_.data();
+  std::int32_t* __restrict own = previous_owner_.data();
+  std::uint16_t* __restrict bits = noise_bits_.data();
+  auto noise = [&](int i) { return level * ((static_cast<float>(bits[i]) + 0.5f) * kScale - 1.0f); };
+  Rng rng = rng_;  // a local copy stays in registers (the stores below could alias the member)
   for (int r = 0; r < n_; ++r) {
     // One 64-bit draw gives four 16-bit uniforms: the perturbation only needs to break ties.
-    for (int i = 0; i < m_; i += 4) {
-      std::uint64_t bits = rng_.next();
-      for (int k = 0; k < 4; ++k, bits >>= 16) {
-        noise_[i + k] = level * ((static_cast<float>(bits & 0xffff) + 0.5f) * kScale - 1.0f);
+    for (int w = 0; w < words; ++w) {
+      std::uint64_t b = rng.next();
+      if constexpr (std::endian::native == std::endian::little) {
+        std::memcpy(bits + 4 * w, &b, sizeof b);  // the same four 16-bit fields, lowest first
+      } else {
+        for (int k = 0; k < 4; ++k, b >>= 16) bits[4 * w + k] = static_cast<std::uint16_t>(b & 0xffff);
       }
     }
-    Metric* e = &log_metric_[static_cast<std::size_t>(r) * m_];
+    Metric* __restrict e = &log_metric_[static_cast<std::size_t>(r) * m_];
     const Metric lm = static_cast<Metric>(log_m[r]);
-    const Metric* u = noise_.data();
     if (split_[r]) {
       connectivity_correction(r, correction_);
-      const Metric* c = correction_.data();
-      for (int i = 0; i < m_; ++i) e[i] += lm + u[i] + c[i] - shift[i];
+      const Metric* __restrict c = correction_.data();
+      for (int i = 0; i < m; ++i) {
+        e[i] += lm + noise(i) + c[i] - shift[i];
+        take_if_lower(e[i], r, best[i], own[i]);
+      }
     } else {
-      for (int i = 0; i < m_; ++i) e[i] += lm + u[i] - shift[i];
+      for (int i = 0; i < m; ++i) {
+        e[i] += lm + noise(i) - shift[i];
+        take_if_lower(e[i], r, best[i], own[i]);
+      }
     }
   }
+  rng_ = rng;
+  best_value_.swap(best_next_);
+  owner_.swap(previous_owner_);  // previous_owner_: the division evaluate() saw last
+  finish_assignment(false);
   ++updates_;
 }
 
-void DarpEngine::connectivity_correction(int r, std::vector<Metric>& correction) {
+SWARM_DARP_HOT void DarpEngine::connectivity_correction(int r, std::vector<Metric>& correction) {
   // Pieces of r: the one holding its start, and the others (found by evaluate()).
-  own_.assign(m_, 0);
-  stray_.assign(m_, 0);
-  for (int i = 0; i < m_; ++i) {
-    if (owner_[i] != r) continue;
-    (in_start_piece_[i] ? own_ : stray_)[i] = 1;
+  own_.resize(m_);
+  stray_.resize(m_);
+  {
+    const std::int32_t* __restrict owner = owner_.data();
+    const std::uint8_t* __restrict in_start = in_start_piece_.data();
+    std::uint8_t* __restrict own = own_.data();
+    std::uint8_t* __restrict stray = stray_.data();
+    const int m = m_;
+    for (int i = 0; i < m; ++i) {
+      const std::uint8_t mine = owner[i] == r;
+      own[i] = mine & in_start[i];
+      stray[i] = mine & (in_start[i] ^ 1);
+    }
   }
-  distances_from(own_, d1_);
-  distances_from(stray_, d2_);  // usually a few cells: see distances_from
   const int piece = space_.robot_piece[r];
+  const DistanceField& f1 = distances_to(own_field_[r], own_, piece);
+  const DistanceField& f2 = distances_to(stray_field_[r], stray_, piece);  // usually a few cells
+  const std::vector<double>& d1 = f1.distance;
+  const std::vector<double>& d2 = f2.distance;
   const bool one_piece = space_.pieces == 1;
-  double max1 = 0, max2 = 0;
-  for (int i = 0; i < m_; ++i) {
-    if (!one_piece && space_.piece[i] != piece) continue;
-    max1 = std::max(max1, d1_[i]);
-    max2 = std::max(max2, d2_[i]);
+  const double k1 = f1.max > 0 ? 1 / f1.max : 0.0;
+  const double k2 = f2.max > 0 ? 1 / f2.max : 0.0;
+  diff_.resize(m_);
+  // d1 / max1 - d2 / max2, and its range over the piece (min and max are exact: any order of
+  // taking them gives the same; lanes let them vectorise).
+  constexpr int kLanes = 4;
+  double lo_lane[kLanes], hi_lane[kLanes];
+  std::fill_n(lo_lane, kLanes, kInf);
+  std::fill_n(hi_lane, kLanes, -kInf);
+  {
+    const double* __restrict a = d1.data();
+    const double* __restrict b = d2.data();
+    double* __restrict diff = diff_.data();
+    const int* __restrict piece_of = space_.piece.data();
+    const int m = m_;
+    for (int i = 0; i < m; ++i) diff[i] = a[i] * k1 - b[i] * k2;
+    const int whole = one_piece ? m - m % kLanes : 0;
+    for (int i = 0; i < whole; i += kLanes) {
+      for (int k = 0; k < kLanes; ++k) {
+        lo_lane[k] = std::min(lo_lane[k], diff[i + k]);
+        hi_lane[k] = std::max(hi_lane[k], diff[i + k]);
+      }
+    }
+    for (int i = whole; i < m; ++i) {
+      if (!one_piece && piece_of[i] != piece) continue;
+      lo_lane[0] = std::min(lo_lane[0], diff[i]);
+      hi_lane[0] = std::max(hi_lane[0], diff[i]);
+    }
   }
-  const double k1 = max1 > 0 ? 1 / max1 : 0.0;
-  const double k2 = max2 > 0 ? 1 / max2 : 0.0;
-  double lo = kInf, hi = -kInf;
-  for (int i = 0; i < m_; ++i) {
-    if (!one_piece && space_.piece[i] != piece) continue;
-    d1_[i] = d1_[i] * k1 - d2_[i] * k2;  // d1_ now holds d1 / max1 - d2 / max2
-    lo = std::min(lo, d1_[i]);
-    hi = std::max(hi, d1_[i]);
-  }
+  const double lo = *std::min_element(lo_lane, lo_lane + kLanes);
+  const double hi = *std::max_element(hi_lane, hi_lane + kLanes);
   const double cv = config_.connectivity_variation;
   const double scale = hi > lo ? 2 * cv / (hi - lo) : 0.0;
-  correction.assign(m_, 0.0f);
-  if (scale <= 0) return;
-  for (int i = 0; i < m_; ++i) {
-    if (one_piece || space_.piece[i] == piece) correction[i] = static_cast<Metric>((d1_[i] - lo) * scale - cv);
+  correction.resize(m_);
+  Metric* c = correction.data();
+  if (scale <= 0) {
+    std::fill(correction.begin(), correction.end(), 0.0f);
+  } else if (one_piece) {
+    for (int i = 0; i < m_; ++i) c[i] = static_cast<Metric>((diff_[i] - lo) * scale - cv);
+  } else {
+    for (int i = 0; i < m_; ++i) {
+      c[i] = space_.piece[i] == piece ? static_cast<Metric>((diff_[i] - lo) * scale - cv) : 0.0f;
+    }
   }
+}
+
+SWARM_DARP_HOT const DarpEngine::DistanceField& DarpEngine::distances_to(DistanceField& field,
+                                                                         const std::vector<std::uint8_t>& source,
+                                                                         int piece) {
+  // More new cells than this: a new transform is cheaper than lowering to each of them.
+  constexpr std::size_t kMaxAdded = 8;
+  std::vector<double>& d = field.distance;
+  if (field.valid) {
+    // Cells gained and lost since, counted without branches (the sets are 0/1 per cell).
+    const std::uint8_t* now = source.data();
+    const std::uint8_t* before = field.source.data();
+    int gained = 0, lost = 0;
+    for (int i = 0; i < m_; ++i) {
+      gained += now[i] & ~before[i] & 1;
+      lost += before[i] & ~now[i] & 1;
+    }
+    if (gained == 0 && lost == 0) return field;
+    if (lost == 0 && gained <= static_cast<int>(kMaxAdded) && config_.distance == DarpDistance::Euclidean) {
+      added_.clear();
+      for (int i = 0; i < m_; ++i) {
+        if (now[i] != before[i]) added_.push_back(i);
+      }
+      // The set only grew: a distance can only drop, to one of the new cells. Squared distances
+      // are integers, so comparing against the square of the stored root decides exactly (an
+      // equal one may pass and then rewrites the same root).
+      squared_distances_to(added_, near_);
+      for (int i = 0; i < m_; ++i) {
+        if (near_[i] < d[i] * d[i]) d[i] = std::sqrt(near_[i]);
+      }
+      for (int a : added_) field.source[a] = 1;
+      field.max = max_in_piece(d, piece);
+      return field;
+    }
+  }
+  distances_from(source, d);
+  field.source = source;
+  // (The sets of a split robot are never empty; an empty one has no distances to lower.)
+  field.valid = std::find(source.begin(), source.end(), 1) != source.end();
+  field.max = max_in_piece(d, piece);
+  return field;
+}
+
+SWARM_DARP_HOT void DarpEngine::squared_distances_to(const std::vector<int>& cells, std::vector<double>& out) const {
+  out.assign(m_, kInf);
+  const double* x = cell_x_.data();
+  const double* y = cell_y_.data();
+  double* d = out.data();
+  for (int s : cells) {  // source by source: the inner loop vectorises
+    const double sx = x[s], sy = y[s];
+    for (int i = 0; i < m_; ++i) {
+      const double dx = x[i] - sx;
+      const double dy = y[i] - sy;
+      d[i] = std::min(d[i], dx * dx + dy * dy);
+    }
+  }
+}
+
+SWARM_DARP_HOT double DarpEngine::max_in_piece(const std::vector<double>& d, int piece) const {
+  constexpr int kLanes = 4;  // max is exact: lanes let it vectorise and give the same value
+  double lane[kLanes] = {0, 0, 0, 0};
+  const bool one_piece = space_.pieces == 1;
+  const int whole = one_piece ? m_ - m_ % kLanes : 0;
+  for (int i = 0; i < whole; i += kLanes) {
+    for (int k = 0; k < kLanes; ++k) lane[k] = std::max(lane[k], d[i + k]);
+  }
+  for (int i = whole; i < m_; ++i) {
+    if (one_piece || space_.piece[i] == piece) lane[0] = std::max(lane[0], d[i]);
+  }
+  return *std::max_element(lane, lane + kLanes);
 }
 
 namespace {
@@ -315,37 +492,42 @@ namespace {
 // One row of the exact squared Euclidean distance transform of Felzenszwalb & Huttenlocher
 // ("Distance transforms of sampled functions", Theory of Computing 8, 2012): out[i] = min_p
 // (x_i - p)^2 + f(p), f(p) = column_steps[p]^2 (the column pass), over the columns p listed in
-// `roots` (ascending; the others hold no source), by the lower envelope of their parabolas, evaluated only at the row's region cells
-// [begin, end) (x ascending). The envelope's breakpoints are kept as fractions and compared by
-// cross-multiplication: every quantity is an integer below 2^53, so the transform is exact and
-// needs no division. v, zn, zd: scratch of roots.size() + 1 entries.
-void squared_distance_row(const int* column_steps, const std::vector<int>& roots, const Cell* cells, int begin,
-                          int end, int x0, double* out, int* v, double* zn, double* zd) {
-  auto f = [&](int p) { return static_cast<double>(column_steps[p]) * column_steps[p]; };
-  auto height = [&](int p) { return f(p) + static_cast<double>(p) * p; };
+// `roots` (ascending; the others hold no source), by the lower envelope of their parabolas,
+// evaluated only at the row's region cells [begin, end) (x ascending). The envelope's
+// breakpoints are kept as fractions of integers and compared by cross-multiplication, all in
+// 64-bit integers: the transform is exact and needs neither division nor floating point.
+// out[i] receives root[d^2], the distance. v, zn, zd: scratch of roots.size() + 1 entries.
+void distance_row(const int* column_steps, const std::vector<int>& roots, const int* cell_x, int begin, int end,
+                  int x0, const double* root, double* out, int* v, std::int64_t* zn, std::int64_t* zd) {
+  auto f = [&](int p) { return static_cast<std::int64_t>(column_steps[p]) * column_steps[p]; };
+  auto height = [&](int p) { return f(p) + static_cast<std::int64_t>(p) * p; };
   int k = 0;
   v[0] = roots[0];
+  std::int64_t top = height(v[0]);  // height(v[k])
   for (std::size_t i = 1; i < roots.size(); ++i) {
     const int q = roots[i];
-    double num = 0, den = 0;
+    const std::int64_t hq = height(q);
+    std::int64_t num = 0, den = 0;
     for (;;) {
-      num = height(q) - height(v[k]);  // breakpoint with parabola k: num / den
-      den = 2.0 * (q - v[k]);
+      num = hq - top;  // breakpoint with parabola k: num / den
+      den = 2 * static_cast<std::int64_t>(q - v[k]);
       if (k == 0 || num * zd[k] > zn[k] * den) break;  // to the right of breakpoint k: keep k
       --k;
+      top = height(v[k]);
     }
     ++k;
     v[k] = q;
     zn[k] = num;
     zd[k] = den;
+    top = hq;
   }
   const int last = k;
   k = 0;
   for (int i = begin; i < end; ++i) {
-    const int q = cells[i].x - x0;
+    const std::int64_t q = cell_x[i] - x0;
     while (k < last && zn[k + 1] < q * zd[k + 1]) ++k;
-    const double dq = q - v[k];
-    out[i] = dq * dq + f(v[k]);
+    const std::int64_t dq = q - v[k];
+    out[i] = root[dq * dq + f(v[k])];
   }
 }
 
@@ -353,7 +535,7 @@ void squared_distance_row(const int* column_steps, const std::vector<int>& roots
 
 void DarpEngine::distances_from(const std::vector<std::uint8_t>& source, std::vector<double>& out) {
   const RegionGraph& g = space_.graph;
-  out.assign(m_, 0.0);
+  out.resize(m_);
   if (config_.distance == DarpDistance::Geodesic) {
     // BFS steps through the region; cells of other pieces keep 0 (they are never r's).
     queue_.clear();
@@ -365,22 +547,24 @@ void DarpEngine::distances_from(const std::vector<std::uint8_t>& source, std::ve
     return;
   }
   // Euclidean distance, walls ignored (as the reference). A few sources (a region's stray piece
-  // is typically a handful of cells): directly, per cell and source.
+  // is typically a handful of cells): directly, per source and cell. Only the set's border cells
+  // (a 4-neighbour outside the set) can be the nearest to a cell outside it: from any other one,
+  // a step towards that cell stays in the set and comes closer. Both ways are exact, which one
+  // runs is only a matter of speed; a large set has many border cells and is not scanned.
+  constexpr int kScanned = 64;
+  int size = 0;
+  for (int i = 0; i < m_; ++i) size += source[i];
   queue_.clear();
-  for (int i = 0; i < m_; ++i) {
-    if (source[i]) queue_.push_back(i);
+  for (int i = 0; i < m_ && size <= kScanned; ++i) {
+    if (!source[i]) continue;
+    bool border = false;
+    for (int nb : g.next[i]) border |= nb < 0 || !source[nb];
+    if (border) queue_.push_back(i);
   }
-  if (queue_.size() <= 16) {
-    for (int i = 0; i < m_; ++i) {
-      double best = kInf;
-      for (int s : queue_) {
-        const double dx = g.cells[i].x - g.cells[s].x;
-        const double dy = g.cells[i].y - g.cells[s].y;
-        best = std::min(best, dx * dx + dy * dy);
-      }
-      out[i] = best;
-    }
-    for (double& d : out) d = std::sqrt(d);  // a separate loop vectorises (see CMakeLists.txt)
+  if (size <= kScanned && queue_.size() <= 16) {
+    squared_distances_to(queue_, out);
+    double* d = out.data();
+    for (int i = 0; i < m_; ++i) d[i] = source[i] ? 0.0 : std::sqrt(d[i]);  // vectorises (see CMakeLists.txt)
     return;
   }
   // Otherwise the exact transform over the bounding box, computed here rather than with OpenCV:
@@ -411,16 +595,24 @@ void DarpEngine::distances_from(const std::vector<std::uint8_t>& source, std::ve
   for (int x = 0; x < box_w_; ++x) {
     if (steps_[x] < kNone / 2) roots_.push_back(x);
   }
-  if (roots_.empty()) return;  // no source: no distance (all 0)
+  if (roots_.empty()) {  // no source: no distance (all 0)
+    std::fill(out.begin(), out.end(), 0.0);
+    return;
+  }
+  if (root_.empty()) {
+    // Square roots of every squared distance the box can hold, once (the same values sqrt gives).
+    const std::size_t dx = box_w_ - 1, dy = box_h_ - 1;
+    root_.resize(dx * dx + dy * dy + 1);
+    for (std::size_t k = 0; k < root_.size(); ++k) root_[k] = std::sqrt(static_cast<double>(k));
+  }
   v_.resize(roots_.size() + 1);
   zn_.resize(roots_.size() + 1);
   zd_.resize(roots_.size() + 1);
   for (int y = 0; y < box_h_; ++y) {
     if (row_begin_[y] == row_begin_[y + 1]) continue;
-    squared_distance_row(&steps_[y * w], roots_, g.cells.data(), row_begin_[y], row_begin_[y + 1], box_x0_,
-                         out.data(), v_.data(), zn_.data(), zd_.data());
+    distance_row(&steps_[y * w], roots_, cell_column_.data(), row_begin_[y], row_begin_[y + 1], box_x0_,
+                 root_.data(), out.data(), v_.data(), zn_.data(), zd_.data());
   }
-  for (double& d : out) d = std::sqrt(d);
 }
 
 }  // namespace swarm::planner::detail

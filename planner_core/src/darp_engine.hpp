@@ -58,13 +58,34 @@ class DarpEngine {
                  DivisionScore& best_score);
 
  private:
-  void assign();
+  // A robot's distances to one of its sets of cells (the piece holding its start, or its other
+  // pieces), kept from the last time the robot was split: from one iteration to the next these
+  // sets are often the same or have only gained a few cells, and then the distances are reused or
+  // lowered to the new cells instead of transformed again (exactly the same values either way).
+  struct DistanceField {
+    std::vector<std::uint8_t> source;  // per cell: in the set
+    std::vector<double> distance;      // per cell: distance to the set
+    double max = 0;                    // the largest distance in the robot's piece
+    bool valid = false;
+  };
+
+  void assign();  // the first division (the constructor); later ones are made by update()
+  // The common tail of assign() and update(): starts pinned, cells that changed hands, counts
+  // (counted afresh when `first`, else corrected by the cells that changed hands).
+  void finish_assignment(bool first);
   void evaluate();
   bool still_connected();
   bool simple_point(int c, int r) const;
+  // The metric update followed by the assignment of every cell to its cheapest robot (the two
+  // are one pass over each robot's metric).
   void update();
-  // Adds the connectivity correction of split robot r to `correction` (one value per cell).
+  // The connectivity correction of split robot r (one value per cell) into `correction`.
   void connectivity_correction(int r, std::vector<Metric>& correction);
+  // `field` brought up to date for `source`, its max taken over `piece` (see DistanceField).
+  const DistanceField& distances_to(DistanceField& field, const std::vector<std::uint8_t>& source, int piece);
+  double max_in_piece(const std::vector<double>& d, int piece) const;
+  // out[i] = the smallest squared Euclidean distance from cell i to one of `cells` (exact integers).
+  void squared_distances_to(const std::vector<int>& cells, std::vector<double>& out) const;
   void distances_from(const std::vector<std::uint8_t>& source, std::vector<double>& out);
 
   const DarpSpace& space_;
@@ -75,17 +96,25 @@ class DarpEngine {
   std::vector<int> starts_;
   std::vector<Metric> log_metric_;  // n_ x m_, robot-major
   std::vector<Metric> best_value_;  // per cell: its smallest value (assign())
+  std::vector<Metric> best_next_;   // scratch of update(): the next best_value_
   std::vector<std::int32_t> owner_;
   std::vector<std::int32_t> previous_owner_;  // the division evaluate() saw before this one
   std::vector<int> changed_, gained_by_;      // cells whose owner changed, and their new owners
   bool connected_before_ = false;             // every region of previous_owner_ was connected
   std::vector<int> counts_;
   std::vector<std::uint8_t> split_;  // per robot
-  std::vector<Metric> noise_;               // scratch of update()
+  std::vector<std::uint16_t> noise_bits_;  // scratch of update(): one 16-bit draw per cell
+  std::vector<double> log_m_;              // scratch of update(): log m_r per robot
   std::vector<Metric> correction_;
-  // Scratch of connectivity_correction() / distances_from().
+  std::vector<DistanceField> own_field_, stray_field_;  // per robot (connectivity_correction())
+  // Scratch of connectivity_correction() / distances_to() / distances_from().
   std::vector<std::uint8_t> own_, stray_;
-  std::vector<double> d1_, d2_, zn_, zd_;
+  std::vector<double> diff_, near_;
+  std::vector<std::int64_t> zn_, zd_;
+  std::vector<double> cell_x_, cell_y_;  // per cell: its coordinates (vectorised direct distances)
+  std::vector<int> cell_column_;         // per cell: its x
+  std::vector<double> root_;             // root_[k] = sqrt(k) for every squared distance in the box
+  std::vector<int> added_;
   std::vector<int> row_begin_;  // per box row: its first cell (compact indices are row-major)
   std::vector<int> v_, roots_, steps_, queue_;
   std::vector<int> left_, down_;             // per cell: its -x / -y neighbour, -1 = none

@@ -74,7 +74,9 @@
 // a full union-find labelling when that cannot tell.
 //
 // Units: cells. Deterministic per config.seed (all draws through rng.hpp). Thread-safe: no shared
-// state. Cost per iteration O(n * cells), plus two distance transforms per split region.
+// state. Cost per iteration O(n * cells), plus two distance transforms per split region (each
+// kept per robot: reused while the region's pieces stay the same, lowered when they only gain
+// a few cells).
 //
 //   DarpRequest req;
 //   req.robots = {{3, 4}, {40, 20}, {12, 30}};
