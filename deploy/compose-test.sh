@@ -323,6 +323,9 @@ summary() {
     "$(top_value ticks_per_second "$1" | awk '{ printf "%.1f", $1 }') ticks/s"
 }
 
+# A JSON list of names ("[\"a\",\"b\"]") as its sorted, comma-separated items.
+as_set() { tr -d '[]' <<<"$1" | tr , '\n' | sed '/^$/d' | sort | paste -sd, -; }
+
 check_results() {
   local dir=$1 ok=0
   [[ -s $dir/metrics.json ]] || { echo "compose-test: the GCS wrote no metrics.json to the results volume" >&2; return 1; }
@@ -342,7 +345,8 @@ check_results() {
     missing=$(sed -n '/^  "reports_missing": \[/,/^  \]/p' "$dir/metrics.json" | tr -d ' \n' |
               sed 's/^"reports_missing"://; s/,$//')
   fi
-  if [[ $missing != "$want" ]]; then
+  # As sets: metrics.json lists them in agent-id order.
+  if [[ $(as_set "$missing") != "$(as_set "$want")" ]]; then
     echo "compose-test: agents whose report never reached the GCS (reports_missing): $missing" \
       "(expected $want)" >&2
     ok=1

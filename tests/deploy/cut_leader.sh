@@ -15,32 +15,21 @@ bash "$src/deploy/compose-test.sh" --prebuilt "$bin" --image swarm:ctest \
   --after-up "bash '$src/tests/deploy/cut_link.sh' leader-1 10" || rc=$?
 ((rc == 0)) || exit "$rc"
 
-m=$out/metrics.json
-fail() {
-  echo "cut_leader: $*" >&2
-  sed -n '/"faults"/,/^  }/p' "$m" >&2
-  exit 1
-}
-# The object (pretty-printed by nlohmann::json, 2 spaces per level) that holds LINE, as one line.
-block_of() { sed -n "/$1/,/}/p" "$m" | tr -d ' \n'; }
-# metrics.json's faults section (top-level keys sit at two spaces), as one line.
-faults=$(sed -n '/^  "faults": {/,/^  }/p' "$m" | tr -d ' \n')
-# (Its keys are sorted; no entry of these lists holds a list.)
-[[ $faults =~ \"agents_lost\":\[([^]]*)\] ]] || fail "metrics.json has no faults section"
-lost=${BASH_REMATCH[1]}
-[[ $faults =~ \"unreachable\":\[([^]]*)\] ]] || fail "metrics.json has no unreachable list"
-unreachable=${BASH_REMATCH[1]}
+test_name=cut_leader metrics=$out/metrics.json
+# shellcheck source=tests/deploy/metrics_checks.sh
+source "$src/tests/deploy/metrics_checks.sh"
+lost=$(faults_list agents_lost)
+unreachable=$(faults_list unreachable)
 [[ $lost == *'"agent":"leader-1"'* ]] || fail "metrics.json does not record leader-1 as lost while cut"
 [[ $lost =~ \"rejoined_at_tick\":([0-9]+) ]] || fail "leader-1 was never re-admitted after the link healed"
 # Its standby took the group over when the simulator declared it lost, and kept it after the
 # reconnection: leader-1 came back as a member (comm/leadership.hpp).
-[[ $faults =~ \"leader_handovers\":\[([^]]*)\] ]] || fail "metrics.json has no leader_handovers"
-handovers=${BASH_REMATCH[1]}
+handovers=$(faults_list leader_handovers)
 [[ $handovers == *'"from":"leader-1"'* && $handovers == *'"to":"member-1-1"'* ]] ||
   fail "member-1-1 did not take group 1 over from leader-1: $handovers"
 [[ $handovers =~ \"at_tick\":([0-9]+) ]] || fail "the hand-over has no tick"
 took_over=${BASH_REMATCH[1]}
-old_terms=$(sed -n '/^    "leader-1": {/,/^    }/p' "$m" | tr -d ' \n')
+old_terms=$(sed -n '/^    "leader-1": {/,/^    }/p' "$metrics" | tr -d ' \n')
 # One term, from tick 0 to the first clock it read after the reconnection (it stepped no tick
 # while cut off, and in real time it then skips to the newest).
 [[ $old_terms =~ \"led\":\[\{\"from_tick\":0,\"to_tick\":([0-9]+)\}\] ]] ||
