@@ -2,6 +2,9 @@
 
 #include "swarm/config/scenario.hpp"
 
+#include <netdb.h>
+#include <sys/socket.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -41,6 +44,19 @@ namespace {
 void use_discovery_server(DomainParticipantQos& qos, const std::string& server) {
   eprosima::fastdds::rtps::RemoteServerList_t servers;
   if (!eprosima::fastdds::rtps::load_environment_server_info(server, servers) || servers.empty()) {
+    // Fast DDS resolves a host name itself; a well-formed HOST:PORT it refuses has a host that
+    // does not resolve (e.g. a container started before the discovery service exists).
+    const auto colon = server.rfind(':');
+    const std::string host = colon == std::string::npos ? server : server.substr(0, colon);
+    addrinfo hints{};
+    hints.ai_family = AF_INET;
+    addrinfo* found = nullptr;
+    const bool well_formed = colon != std::string::npos && colon > 0 && colon + 1 < server.size() &&
+                             server.find_first_not_of("0123456789", colon + 1) == std::string::npos;
+    if (well_formed && ::getaddrinfo(host.c_str(), nullptr, &hints, &found) != 0) {
+      throw std::runtime_error("discovery server '" + server + "': cannot resolve the host name '" + host + "'");
+    }
+    if (found != nullptr) ::freeaddrinfo(found);
     throw std::runtime_error("bad discovery server address '" + server + "' (expected HOST:PORT, e.g. 127.0.0.1:11811)");
   }
   auto& discovery = qos.wire_protocol().builtin.discovery_config;

@@ -25,6 +25,7 @@ expect() {
 }
 expect 2 "--seconds" --seconds 0
 expect 2 "bad discovery server address" --discovery-server 'no such server!' --seconds 0.2
+expect 2 "cannot resolve the host name 'no-such-host.invalid'" --discovery-server no-such-host.invalid:11811 --seconds 0.2
 expect 1 ": 0 clock samples from 0 clock writers" --domain 41 --partition nobody-here --seconds 1
 
 # A run in domain 41: its discovery server listens on 127.0.0.1, port 7400 + 500 x 41 + 495.
