@@ -16,7 +16,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // The hot loops are compiled twice, for AVX2 and for the x86-64 baseline (SSE2), and the loader
 // picks the one the CPU runs (function multi-versioning). Lane for lane the same IEEE operations
 // in the same order (no FMA: -ffp-contract=off; no reordered reductions), so the same results.
-#if defined(__x86_64__) && defined(__gnu_linux__) && (defined(__GNUC__) || defined(__clang__))
+// GCC only: clang (the fuzz build) wants target_clones on a member's first declaration, in the
+// class, and the fuzz and sanitizer builds need no speed.
+#if defined(__x86_64__) && defined(__gnu_linux__) && defined(__GNUC__) && !defined(__clang__)
 #define SWARM_DARP_HOT __attribute__((target_clones("avx2", "default")))
 #else
 #define SWARM_DARP_HOT
