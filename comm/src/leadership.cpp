@@ -19,6 +19,11 @@ std::vector<AgentId> next_leaders(const Topology& t, const std::vector<AgentId>&
   return next;
 }
 
+AgentId leader_in(const msgs::Clock& clock, const Topology& t, int group) {
+  const auto g = static_cast<std::size_t>(group);
+  return g < clock.leaders().size() ? clock.leaders()[g] : t.leader(group);
+}
+
 LeaderLog::LeaderLog(const Topology& t) : topology_(t), current_(t.leaders()) {}
 
 void LeaderLog::observe(const msgs::Clock& clock) {

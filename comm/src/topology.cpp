@@ -4,12 +4,6 @@
 
 namespace swarm::comm {
 
-std::vector<AgentId> Topology::members(int group) const {
-  std::vector<AgentId> out;
-  for (int i = 1; i < per_group_; ++i) out.push_back(robot(group, i));
-  return out;
-}
-
 std::vector<AgentId> Topology::leaders() const {
   std::vector<AgentId> out;
   for (int g = 0; g < groups_; ++g) out.push_back(leader(g));

@@ -2,10 +2,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "swarm/comm/leadership.hpp"
+
 namespace swarm::leader {
 
 CandidateNode::CandidateNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index)
     : self_(agent.self()),
+      topology_(setup.topology),
       group_(group),
       robot_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution()),
       member_(agent, setup, group, index, robot_),
@@ -19,9 +22,7 @@ void CandidateNode::lead() {
 }
 
 void CandidateNode::step(const msgs::Clock& clock) {
-  const auto& leaders = clock.leaders();
-  const bool named = static_cast<std::size_t>(group_) < leaders.size() ? leaders[static_cast<std::size_t>(group_)] == self_
-                                                                        : leader_.leading();
+  const bool named = comm::leader_in(clock, topology_, group_) == self_;
   if (named && !leader_.leading()) {
     leader_.take_over(clock);
     lead();

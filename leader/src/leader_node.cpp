@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "swarm/comm/convert.hpp"
+#include "swarm/comm/leadership.hpp"
 #include "swarm/comm/task_codes.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/member/member_node.hpp"
@@ -18,9 +19,7 @@ using planner::Cell;
 namespace topic = comm::topic;
 
 planner::Cell GroupContext::leader_cell(int g) const {
-  const auto& leaders = clock.leaders();
-  const comm::AgentId a = static_cast<std::size_t>(g) < leaders.size() ? leaders[static_cast<std::size_t>(g)]
-                                                                       : setup.topology.leader(g);
+  const comm::AgentId a = comm::leader_in(clock, setup.topology, g);
   return {clock.robots()[a].x(), clock.robots()[a].y()};
 }
 

@@ -26,7 +26,7 @@ TEST(Topology, AgentIdsFollowGroupsTimesRobots) {
   EXPECT_TRUE(t.is_robot(5));
   EXPECT_FALSE(t.is_robot(6));
   EXPECT_FALSE(t.is_robot(7));
-  EXPECT_EQ(t.members(1), (std::vector<AgentId>{4, 5}));
+  EXPECT_EQ(t.group_except(1, t.leader(1)), (std::vector<AgentId>{4, 5}));
   EXPECT_EQ(t.leaders(), (std::vector<AgentId>{0, 3}));
   EXPECT_EQ(t.robot_ids(), (std::vector<AgentId>{0, 1, 2, 3, 4, 5}));
   EXPECT_EQ(t.all_but_sim(), (std::vector<AgentId>{0, 1, 2, 3, 4, 5, 6}));
@@ -35,7 +35,7 @@ TEST(Topology, AgentIdsFollowGroupsTimesRobots) {
 TEST(Topology, OneRobotGroupsHaveNoMembers) {
   const Topology t(3, 1);
   EXPECT_EQ(t.leaders(), (std::vector<AgentId>{0, 1, 2}));
-  EXPECT_TRUE(t.members(2).empty());
+  EXPECT_TRUE(t.group_except(2, t.leader(2)).empty());
   EXPECT_EQ(t.gcs(), 3);
   EXPECT_EQ(t.sim(), 4);
   EXPECT_EQ(t.name_of(2), "leader-2");

@@ -34,6 +34,9 @@ namespace swarm::comm {
 std::vector<AgentId> next_leaders(const Topology& t, const std::vector<AgentId>& current,
                                   const std::vector<msgs::RobotState>& robots);
 
+// Group `group`'s leader in `clock` (a clock without leaders, a test's hand-made one: the first).
+AgentId leader_in(const msgs::Clock& clock, const Topology& t, int group);
+
 class LeaderLog {
  public:
   explicit LeaderLog(const Topology& t);

@@ -42,7 +42,6 @@ class Topology {
   int index_of(AgentId robot_id) const { return robot_id % per_group_; }
   bool is_robot(AgentId a) const { return a < robots(); }
 
-  std::vector<AgentId> members(int group) const;  // the group's robots except its leader
   std::vector<AgentId> leaders() const;
   std::vector<AgentId> candidates(int group) const;  // indices 0..standbys
   std::vector<AgentId> all_candidates() const;       // every group's, group by group

@@ -22,6 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "swarm/comm/leadership.hpp"
 #include "swarm/comm/role.hpp"
 #include "swarm/gcs/mission.hpp"
 #include "swarm/planner/map_patch.hpp"
@@ -50,10 +51,7 @@ struct GcsContext {
   }
   bool alive(int robot) const { return clock.robots()[static_cast<std::size_t>(robot)].alive(); }
   // Group g's leader at this tick (comm/leadership.hpp: a standby may have taken over).
-  int leader_of(int g) const {
-    const auto& l = clock.leaders();
-    return static_cast<std::size_t>(g) < l.size() ? l[static_cast<std::size_t>(g)] : setup.topology.leader(g);
-  }
+  int leader_of(int g) const { return comm::leader_in(clock, setup.topology, g); }
 };
 
 struct ProgressLine {

@@ -32,6 +32,7 @@ class CandidateNode {
   void lead();
 
   comm::AgentId self_;
+  comm::Topology topology_;
   int group_;
   member::RobotAgent robot_;
   member::MemberNode member_;  // first: it owns the sense topic, the first subscription
