@@ -17,8 +17,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // picks the one the CPU runs (function multi-versioning). Lane for lane the same IEEE operations
 // in the same order (no FMA: -ffp-contract=off; no reordered reductions), so the same results.
 // GCC only: clang (the fuzz build) wants target_clones on a member's first declaration, in the
-// class, and the fuzz and sanitizer builds need no speed.
-#if defined(__x86_64__) && defined(__gnu_linux__) && defined(__GNUC__) && !defined(__clang__)
+// class. Not in sanitizer builds: they need no speed, and ThreadSanitizer crashes in the ifunc
+// resolvers, which run before it is set up (every test binary linking this segfaulted at start).
+#if defined(__x86_64__) && defined(__gnu_linux__) && defined(__GNUC__) && !defined(__clang__) && \
+    !defined(__SANITIZE_THREAD__) && !defined(__SANITIZE_ADDRESS__)
 #define SWARM_DARP_HOT __attribute__((target_clones("avx2", "default")))
 #else
 #define SWARM_DARP_HOT
