@@ -416,7 +416,11 @@ std::string summarize_metrics(const std::string& path) {
   const swarm::record::RunMetrics m = swarm::record::read_metrics(path);  // throws, naming the key
   std::ostringstream o;
   char buf[200];
-  o << (m.complete ? "  complete: the mission's every phase is done\n" : "  INCOMPLETE: stopped at --max-ticks\n");
+  std::string why = "stopped at --max-ticks";
+  for (const auto& p : m.phases) {
+    if (p.gave_up) why = "phase " + p.name + " given up: " + *p.gave_up;
+  }
+  o << (m.complete ? "  complete: the mission's every phase is done\n" : "  INCOMPLETE: " + why + "\n");
   std::snprintf(buf, sizeof buf, "  steps            %u", m.steps);
   o << buf;
   if (m.steps_to_99) {

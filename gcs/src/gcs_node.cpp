@@ -187,7 +187,7 @@ bool GcsNode::step(const msgs::Clock& clock) {
     if (r.phase() == phase_) tasks_[phase_]->on_report(r, ctx);
   }
   task_reports_.clear();
-  if (!complete_tick_) {
+  if (!complete_tick_ && !gave_up_) {
     tasks_[phase_]->step(ctx);
     if (tasks_[phase_]->complete()) {
       phase_ends_.push_back(clock.tick());
@@ -202,6 +202,13 @@ bool GcsNode::step(const msgs::Clock& clock) {
       } else {
         complete_tick_ = clock.tick();
       }
+    } else if (std::string why = tasks_[phase_]->given_up(); !why.empty()) {
+      // The phase can never be done: end it and the mission here, incomplete, with the reason.
+      phase_ends_.push_back(clock.tick());
+      record_phase(clock.tick(), true, false);
+      std::fprintf(stderr, "gcs: phase %u (%s) given up at tick %u: %s\n", phase_,
+                   config::task_name(config::task_of(phases_[phase_])).c_str(), clock.tick(), why.c_str());
+      gave_up_ = std::move(why);
     }
   }
 
@@ -219,7 +226,7 @@ bool GcsNode::step(const msgs::Clock& clock) {
   const std::string task = config::task_name(config::task_of(phases_[phase_]));
   progress_.update(clock.tick(), phases_.size() > 1 ? task + " " + line.label : line.label, line.fraction,
                    line.detail, note);
-  return complete_tick_.has_value();
+  return complete_tick_.has_value() || gave_up_.has_value();
 }
 
 void GcsNode::finish(std::chrono::milliseconds wait) {
@@ -355,7 +362,9 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
     ph.name = config::task_name(config::task_of(phases_[i]));
     ph.start_tick = phase_starts_[i];
     if (i < phase_ends_.size()) ph.end_tick = phase_ends_[i];
-    ph.complete = i < phase_ends_.size();
+    const bool given_up = gave_up_ && i + 1 == phase_ends_.size();
+    ph.complete = i < phase_ends_.size() && !given_up;
+    if (given_up) ph.gave_up = *gave_up_;
     ph.task = tasks_[i]->numbers();
     for (const auto& p : sim.phases) {
       if (p.phase != i) continue;

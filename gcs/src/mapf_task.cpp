@@ -75,6 +75,8 @@ void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
   std::fill(group_done_.begin(), group_done_.end(), false);
   std::fill(group_held_.begin(), group_held_.end(), false);
   for (int r : planned_) group_in_plan_[static_cast<std::size_t>(t.group_of(static_cast<comm::AgentId>(r)))] = true;
+  plan_leaders_.clear();
+  for (int g = 0; g < t.groups(); ++g) plan_leaders_.push_back(ctx.leader_of(g));
 
   planner::mapf::SolverConfig solver = config::mapf_solver_config(config_, ctx.setup.world.scenario.seed());
   planner::mapf::Result res = planner::mapf::solve(in, solver, planner::mapf::StopCondition::after(config_.time_limit_s()));
@@ -91,7 +93,13 @@ void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
   if (!have_first_) first_ = res;  // the plan the phase's planned numbers describe (after any fallback)
   have_first_ = true;
   failed_ = res.status != planner::mapf::Status::Solved;
-  if (failed_) return;  // nothing safe to drive: the phase stays incomplete (metrics say why)
+  if (failed_) {
+    // Nothing safe to drive, and planning the same instance again gives the same answer: the
+    // phase is given up (given_up(); metrics.json says why).
+    failure_ = std::string("no plan for ") + std::to_string(planned_.size()) + " robots (" + why +
+               "): " + planner::mapf::to_string(res.status) + (res.message.empty() ? "" : ", " + res.message);
+    return;
+  }
   send_plan(ctx, res);
 }
 
@@ -192,9 +200,13 @@ void MapfGcsTask::step(GcsContext& ctx) {
   if (failed_) return;
   // A planned robot lost (or its group's leader): the others may wait for it for ever. Hold, and
   // plan again once every group stands still.
+  // A group whose leader changed (a standby took over, leader/leader_node.hpp) is held too: the new
+  // leader stops its robots where they stand and reports them held (leader/mapf_task.hpp).
   bool lost = false;
   for (int r : planned_) {
-    lost = lost || !ctx.alive(r) || !ctx.alive(ctx.leader_of(t.group_of(static_cast<comm::AgentId>(r))));
+    const int g = t.group_of(static_cast<comm::AgentId>(r));
+    lost = lost || !ctx.alive(r) || !ctx.alive(ctx.leader_of(g)) ||
+           ctx.leader_of(g) != plan_leaders_[static_cast<std::size_t>(g)];
   }
   bool all_done = true, all_held = true;
   for (int g = 0; g < t.groups(); ++g) {

@@ -178,6 +178,7 @@ void LeaderNode::take_over(const msgs::Clock& clock) {
   // The current phase's task starts afresh from the GCS's order (kept) and, exploring, from the
   // latest round: a new round's plan at once.
   started_ = false;
+  taking_over_ = true;
   if (last_round_ > 0 && !round_) round_ = last_round_;
   std::fprintf(stderr, "%s: leads group %d from tick %u\n", topology_.name_of(agent_.self()).c_str(), group_,
                clock.tick());
@@ -255,7 +256,9 @@ void LeaderNode::step(const msgs::Clock& clock) {
   GroupContext ctx{setup_, group_, self_index_, phase_, clock, alive_, map_, robot_, outlets_};
   if (!started_) {
     tasks_[phase_]->start(ctx);
+    if (taking_over_) tasks_[phase_]->took_over(ctx);
     started_ = true;
+    taking_over_ = false;
   }
   track_members(ctx);
   msgs::Heartbeat beat;

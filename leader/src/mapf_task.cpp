@@ -37,6 +37,8 @@ void MapfGroupTask::take_plan(const msgs::TaskOrder& o, GroupContext& ctx) {
   seq_ = o.seq();
   have_plan_ = true;
   holding_ = false;
+  stopping_.clear();
+  stopped_all_ = false;
   reported_done_ = reported_held_ = false;
   ++plans_taken_;
   const std::size_t n = paths.size();
@@ -56,6 +58,7 @@ void MapfGroupTask::take_plan(const msgs::TaskOrder& o, GroupContext& ctx) {
     index_of_[k] = t.index_of(robot);
     own_.push_back(static_cast<int>(k));
   }
+  if (adopting_) return;  // a take-over: the robots are stopped instead (step)
   // Each robot of the group gets its whole route, released as far as the graph allows now (or,
   // timed, all of it from the start tick).
   for (int k : own_) {
@@ -79,10 +82,13 @@ void MapfGroupTask::on_order(const msgs::TaskOrder& o, GroupContext& ctx) {
   if (!have_plan_ || o.values().empty() || static_cast<std::uint32_t>(o.values()[0]) != seq_) return;  // stale
   if (o.kind() == task::kOrderHold) {
     holding_ = true;
+    // Timed, every robot holds its whole route: stop them. Timed driving is chosen only with no
+    // link delay, so every robot of the plan stops at the same tick: a frozen step of a valid plan.
+    if (timed_ && !adopting_) stop_own_robots(ctx);
     return;
   }
   if (o.kind() == task::kOrderRotate) {
-    if (o.values().size() == 3 && !timed_ && o.values()[1] >= 0 &&
+    if (!adopting_ && stopping_.empty() && !stopped_all_ && o.values().size() == 3 && !timed_ && o.values()[1] >= 0 &&
         static_cast<std::size_t>(o.values()[1]) < adg_.rotations.size()) {
       rotate(o.values()[1], static_cast<std::uint32_t>(o.values()[2]), ctx);
     }
@@ -101,8 +107,28 @@ void MapfGroupTask::on_order(const msgs::TaskOrder& o, GroupContext& ctx) {
   release(ctx);
 }
 
+void MapfGroupTask::stop_own_robots(GroupContext& ctx) {
+  if (!stopping_.empty() || stopped_all_) return;  // stopped already
+  for (int k : own_) {
+    const auto ku = static_cast<std::size_t>(k);
+    if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
+    msgs::Route stop;  // empty: stop where it stands
+    route_id_[ku] = ctx.out.route(index_of_[ku], stop);
+    stopping_.push_back(k);
+  }
+  stopped_all_ = stopping_.empty();
+}
+
 void MapfGroupTask::on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) {
   if (!have_plan_) return;
+  if (!stopping_.empty() || stopped_all_) {
+    std::erase_if(stopping_, [&](int k) {
+      const auto ku = static_cast<std::size_t>(k);
+      return index_of_[ku] == index && route_id_[ku] == p.id && p.state == planner::RouteState::Stopped;
+    });
+    stopped_all_ = stopping_.empty();
+    return;
+  }
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
     if (index_of_[ku] != index || route_id_[ku] != p.id || base_[ku] + p.step <= progress_[ku]) continue;
@@ -113,7 +139,7 @@ void MapfGroupTask::on_progress(int index, const planner::RouteProgress& p, Grou
 }
 
 void MapfGroupTask::release(GroupContext& ctx) {
-  if (!have_plan_ || holding_ || timed_) return;
+  if (!have_plan_ || holding_ || timed_ || adopting_ || !stopping_.empty() || stopped_all_) return;
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
     if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
@@ -149,15 +175,27 @@ void MapfGroupTask::rotate(int q, std::uint32_t tick, GroupContext& ctx) {
 }
 
 void MapfGroupTask::step(GroupContext& ctx) {
+  if (adopting_) {
+    adopting_ = false;
+    // Timed, the robots keep to the plan's timing until the GCS's hold, which reaches every leader
+    // at one tick, stops them all together; by the graph they may stop at once (the others wait).
+    if (have_plan_ && (!timed_ || holding_)) stop_own_robots(ctx);
+  }
   if (!have_plan_) return;
+  if (!stopping_.empty()) {  // a robot lost before its stop was confirmed stands still anyway
+    std::erase_if(stopping_, [&](int k) { return !ctx.alive[static_cast<std::size_t>(index_of_[static_cast<std::size_t>(k)])]; });
+    stopped_all_ = stopping_.empty();
+  }
   release(ctx);
-  bool arrived = true, still = true;
+  const bool stopped = !stopping_.empty() || stopped_all_;  // a take-over's stop: wait for the hold
+  bool arrived = !stopped, still = true;
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
-    if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
+    if (stopped || !ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
     arrived = arrived && progress_[ku] + 1 >= routes_[ku].size();
     still = still && progress_[ku] >= released_[ku];
   }
+  if (stopped) still = stopped_all_;
   std::uint8_t state = task::kWorking;
   if (arrived && !reported_done_) {
     state = task::kDone;

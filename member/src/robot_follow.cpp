@@ -20,7 +20,7 @@ void RobotAgent::follow(std::uint32_t id, std::vector<Cell> cells, std::uint32_t
   f.drops = std::move(drops);
   f.start_tick = start_tick;
   follow_ = std::move(f);
-  follow_progress_ = {id, 0, follow_->cells.empty() ? RouteState::Finished : RouteState::Active};
+  follow_progress_ = {id, 0, RouteState::Active};
 }
 
 void RobotAgent::release(std::uint32_t id, std::uint32_t up_to) {
@@ -32,6 +32,15 @@ void RobotAgent::release(std::uint32_t id, std::uint32_t up_to) {
 void RobotAgent::step_following(Step& out, std::uint32_t tick) {
   Follow& f = *follow_;
   if (follow_progress_.state != RouteState::Active) return;
+  if (f.cells.empty()) {  // a stop: sent once; Stopped when the simulator has applied it
+    if (f.sim_id == 0) {
+      out.path_changed = true;
+      out.path.clear();
+    } else if (report_.id == f.sim_id && report_.state == RouteState::Stopped) {
+      follow_progress_.state = RouteState::Stopped;
+    }
+    return;
+  }
   // Where the simulator says the robot is along the part it drives.
   if (f.sim_id != 0 && report_.id == f.sim_id) {
     follow_progress_.step = f.base + report_.step;

@@ -193,6 +193,7 @@ json to_json(const RunMetrics& m) {
                       {"start_tick", p.start_tick},
                       {"end_tick", opt(p.end_tick)},
                       {"complete", p.complete},
+                      {"gave_up", opt(p.gave_up)},
                       {"motion", to_json(p.motion)},
                       {"task", p.task}});
   }
@@ -320,6 +321,7 @@ RunMetrics metrics_from_json(const json& j, const std::string& source) {
     ph.start_tick = pf.get<std::uint32_t>("start_tick");
     ph.end_tick = pf.optional<std::uint32_t>("end_tick");
     ph.complete = pf.get<bool>("complete");
+    if (pf.raw().contains("gave_up")) ph.gave_up = pf.optional<std::string>("gave_up");  // since schema 3
     ph.motion = motion_from_json(pf.at("motion"), pf.where() + ".motion");
     ph.task = pf.at("task");
     m.phases.push_back(std::move(ph));

@@ -130,5 +130,46 @@ TEST(Tasks, MapfWithMemberLeaderDelayAndJitterStillHasNoConflict) {
   EXPECT_GE(p["task"]["driven_makespan_ticks"].get<int>(), p["task"]["planned_makespan"].get<int>());
 }
 
+// A leader killed mid-plan: its standby takes the group over and stops its robots, the GCS holds
+// the plan of a group whose leader changed and plans again for the five living robots once
+// everyone stands still; no conflict.
+TEST(Tasks, MapfWithALeaderKilledMidwayItsStandbyTakesOverAndTheOthersArrive) {
+  const auto m = run_task("mapf_kill_leader", "mapf-small.pbtxt", "", "--kill leader-1@8");
+  const auto& h = m["faults"]["leader_handovers"];
+  ASSERT_EQ(h.size(), 1u) << h;
+  EXPECT_EQ(h[0]["to"], "member-1-1");
+  const auto& p = phase_named(m, "mapf");
+  const auto& plans = p["task"]["plans"];
+  ASSERT_EQ(plans.size(), 2u) << plans;
+  EXPECT_EQ(plans[1]["why"], "robot lost");
+  EXPECT_EQ(plans[1]["robots"], 5);
+  EXPECT_EQ(p["task"]["robots_at_goal"], 5);
+  EXPECT_EQ(p["task"]["conflicts"], 0);
+  EXPECT_EQ(p["motion"]["blocked_moves"], 0);
+}
+
+// A plan proven infeasible ends the mission at once, incomplete and saying why (exit 0: the run
+// itself worked), instead of running on to max_ticks.
+TEST(Tasks, MapfWithAnInfeasiblePlanEndsTheMissionAtOnce) {
+  const std::string dir = fresh_dir("mapf_infeasible");
+  // A corridor one cell wide, two robots, each to the other's end.
+  std::ofstream(dir + "/corridor.pgm") << "P2\n6 3\n255\n0 0 0 0 0 0\n0 254 254 254 254 0\n0 0 0 0 0 0\n";
+  std::ofstream(dir + "/corridor.yaml") << "image: corridor.pgm\nresolution: 0.2\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
+                                        << "occupied_thresh: 0.65\nfree_thresh: 0.196\n";
+  std::ofstream(dir + "/scenario.pbtxt")
+      << "map: \"" << dir << "/corridor.yaml\" groups: 1 robots_per_group: 2 max_ticks: 500 leader_standbys: 0\n"
+      << "start { x: 0.3 y: 0.3 }\n"  // robots on the corridor's cells 1 and 2, from the west
+      << "mission { phase { mapf { solver: MAPF_LACAM goals { x: 0.5 y: 0.3 } goals { x: 0.3 y: 0.3 } } } }\n";
+  const CommandResult r = run_swarm("run --scenario " + dir + "/scenario.pbtxt --out " + dir + "/run");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const auto m = read_json(dir + "/run/metrics.json");
+  EXPECT_FALSE(m["complete"].get<bool>());
+  EXPECT_LT(m["ticks_run"].get<int>(), 10);
+  const auto& p = phase_named(m, "mapf");
+  EXPECT_FALSE(p["complete"].get<bool>());
+  EXPECT_NE(p["gave_up"].get<std::string>().find("infeasible"), std::string::npos) << p["gave_up"];
+  EXPECT_NE(r.output.find("INCOMPLETE: phase mapf given up: no plan for 2 robots"), std::string::npos) << r.output;
+}
+
 }  // namespace
 }  // namespace swarm::test

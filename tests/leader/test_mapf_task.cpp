@@ -131,5 +131,63 @@ TEST(MapfTask, ARotationAcrossGroupsMovesInOneTickUnderDelayAndJitter) {
   EXPECT_EQ(p["motion"]["moves"], 4);
 }
 
+// leader-1 is lost midway (its robot with it): member-1-1, its standby, takes the group over. It
+// cannot know how far its robots got along the old leader's routes, so it stops them where they
+// stand; the GCS holds the plan of a group whose leader changed, and once every group stands still
+// it plans again for the five living robots. Driven by the graph under delay, and by the plan's
+// timing without.
+TEST(MapfTask, ALeaderLostMidwayItsStandbyStopsTheGroupAndAllArePlannedAgain) {
+  for (const std::string links : {"", "links { member_leader { delay_ticks: 2 jitter_ticks: 2 } } "}) {
+    SCOPED_TRACE(links.empty() ? "timed" : "graph under delay");
+    auto setup = swarm::test::setup_from_text(std::string(kTwoGroups) + links + "mission { phase { mapf {} } }");
+    swarm::test::FakeSwarm s(setup);
+    const auto m = s.run_to_end([&](std::uint32_t tick) {
+      if (tick == 6) s.disconnect(setup.topology.leader(1));
+    });
+    ASSERT_TRUE(m["complete"].get<bool>());
+    const auto& h = m["faults"]["leader_handovers"];
+    ASSERT_EQ(h.size(), 1u) << h;
+    EXPECT_EQ(h[0]["to"], "member-1-1");
+    const auto& p = mapf_phase(m);
+    ASSERT_EQ(p["task"]["plans"].size(), 2u) << p["task"]["plans"];
+    EXPECT_EQ(p["task"]["plans"][1]["why"], "robot lost");
+    EXPECT_EQ(p["task"]["plans"][1]["robots"], 5);
+    EXPECT_EQ(p["task"]["robots_at_goal"], 5);
+    EXPECT_EQ(p["task"]["conflicts"], 0) << p["motion"];
+    EXPECT_EQ(p["motion"]["blocked_moves"], 0);
+    EXPECT_EQ(p["motion"]["routes_rejected"], 0);
+  }
+}
+
+// Two robots in a one-cell-wide corridor, each to the other's end: they can never pass. LaCAM
+// explores every configuration and proves it; the phase, and with it the mission, ends at once,
+// incomplete and saying why, instead of running on to max_ticks.
+TEST(MapfTask, AnInfeasiblePlanEndsThePhaseAndTheMissionAtOnce) {
+  const auto truth = swarm::test::grid_from({"######", "#....#", "######"});
+  auto sc = config::parse_scenario_text(
+      "groups: 1 robots_per_group: 2 max_ticks: 300 mission { phase { mapf { solver: MAPF_LACAM } } }",
+      "corridor test");
+  auto setup = swarm::test::setup_for(truth, {1, 1}, sc);
+  auto* mapf = setup.world.scenario.mutable_mission()->mutable_phase(0)->mutable_mapf();
+  ASSERT_EQ(setup.world.robot_cells.size(), 2u);
+  for (int r : {1, 0}) {  // each robot's goal: the other's start
+    const planner::Cell c = setup.world.robot_cells[static_cast<std::size_t>(r)];
+    auto* g = mapf->add_goals();
+    g->set_x(truth.origin_x() + (c.x + 0.5) * truth.resolution());
+    g->set_y(truth.origin_y() + (c.y + 0.5) * truth.resolution());
+  }
+  swarm::test::FakeSwarm s(setup);
+  const auto m = s.run_to_end();
+  EXPECT_FALSE(m["complete"].get<bool>());
+  EXPECT_LT(m["ticks_run"].get<int>(), 5);
+  const auto& p = mapf_phase(m);
+  EXPECT_FALSE(p["complete"].get<bool>());
+  EXPECT_EQ(p["end_tick"], 0);
+  EXPECT_EQ(p["task"]["solver_status"], "infeasible");
+  const std::string why = p["gave_up"].get<std::string>();
+  EXPECT_NE(why.find("infeasible"), std::string::npos) << why;
+  EXPECT_EQ(p["motion"]["moves"], 0);
+}
+
 }  // namespace
 }  // namespace swarm::leader

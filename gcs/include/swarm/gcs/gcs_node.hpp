@@ -29,7 +29,7 @@ class GcsNode {
  public:
   GcsNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, const std::string& run_dir,
           Progress::Style progress);
-  // One tick; returns true once the mission is complete.
+  // One tick; returns true once the mission is over: complete, or a phase given up.
   bool step(const msgs::Clock& clock);
   // After the run stopped: waits up to `wait` for the living agents' reports, writes metrics.json
   // and closes run.pb. Throws std::runtime_error naming what is missing when the simulator's
@@ -72,6 +72,7 @@ class GcsNode {
 
   std::uint32_t last_tick_ = 0;
   std::optional<std::uint32_t> complete_tick_;
+  std::optional<std::string> gave_up_;  // why the current phase was given up (the mission is over)
   std::chrono::steady_clock::time_point first_tick_time_{};
   std::chrono::steady_clock::time_point last_tick_time_{};
 };

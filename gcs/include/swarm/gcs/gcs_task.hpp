@@ -9,6 +9,9 @@
 //   start(ctx)   the phase begins: split the work among the groups (task orders), ...
 //   step(ctx)    every tick of the phase
 //   complete()   the phase is done
+//   given_up()   why the phase can never be done (empty while it can): e.g. mapf's plan proven
+//                infeasible. The GCS then ends the phase and the mission there, incomplete,
+//                instead of running on to max_ticks
 //   progress()   what the progress display shows
 //   on_report / on_group_status   the leaders' messages of the current phase
 //   numbers()    the task's own numbers: metrics.json phases[i].task
@@ -66,6 +69,7 @@ class GcsTask {
   virtual void start(GcsContext& ctx) = 0;
   virtual void step(GcsContext& ctx) = 0;
   [[nodiscard]] virtual bool complete() const = 0;
+  [[nodiscard]] virtual std::string given_up() const { return {}; }
   [[nodiscard]] virtual ProgressLine progress(const GcsContext& ctx) const = 0;
   virtual void on_report(const msgs::TaskReport&, GcsContext&) {}
   virtual void on_group_status(const msgs::GroupStatus&, GcsContext&) {}

@@ -27,12 +27,15 @@
 //     early would run into one that has not left. The GCS knows every robot's progress (the
 //     leaders' reports), so it names the rotations that may go, with a start tick late enough for
 //     the order to reach every leader and its route every member (configured delays and jitter).
-// A planned robot lost midway: the GCS holds the plan, waits until every group reports its robots
-// still, and plans again from where the living robots stand (seq s + 1).
-// Complete when every group of the current plan has reported kDone.
+// A planned robot lost midway, or a group's leader replaced by its standby: the GCS holds the
+// plan, waits until every group reports its robots still, and plans again from where the living
+// robots stand (seq s + 1).
+// Complete when every group of the current plan has reported kDone; given up when a plan cannot be
+// made (proven infeasible, or none within the time limit): the mission ends there, incomplete.
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "swarm/gcs/gcs_task.hpp"
@@ -47,6 +50,9 @@ class MapfGcsTask : public GcsTask {
   void start(GcsContext& ctx) override;
   void step(GcsContext& ctx) override;
   [[nodiscard]] bool complete() const override { return complete_; }
+  // A plan that could not be made (proven infeasible, or no plan within the limit even from
+  // LaCAM): the same robots on the same map give the same answer, so the phase ends there.
+  [[nodiscard]] std::string given_up() const override { return failed_ ? failure_ : std::string(); }
   [[nodiscard]] ProgressLine progress(const GcsContext& ctx) const override;
   void on_report(const msgs::TaskReport& r, GcsContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
@@ -75,6 +81,8 @@ class MapfGcsTask : public GcsTask {
   std::uint32_t seq_ = 0;
   bool holding_ = false;
   bool failed_ = false;  // the last plan could not be made: nothing to drive
+  std::string failure_;  // why
+  std::vector<int> plan_leaders_;  // per group: its leader when the current plan was made
   bool complete_ = false;
   std::uint32_t start_tick_ = 0;
   int arrived_ = 0;

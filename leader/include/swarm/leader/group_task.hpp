@@ -12,6 +12,10 @@
 //                         the messages of the current phase, routed by the node
 //   member_lost / member_back
 //                         a member the simulator declared lost, or one whose link healed
+//   took_over(ctx)        this robot has just taken the group over from a lost leader (a standby,
+//                         comm/leadership.hpp): called once, right after start() and before the
+//                         GCS's orders of the phase, which the standby kept, are replayed; the
+//                         members may be half-way along routes the old leader sent
 //   numbers()             the task's own numbers for the leader's end-of-run report
 // What a task may do goes through the GroupContext: the group map, the living members and the
 // robots' true cells (the clock), the leader's own robot, and outlets that send routes, releases,
@@ -86,6 +90,7 @@ class GroupTask {
   virtual void on_progress(int /*index*/, const planner::RouteProgress&, GroupContext&) {}
   virtual void member_lost(int /*index*/, GroupContext&) {}
   virtual void member_back(int /*index*/, GroupContext&) {}
+  virtual void took_over(GroupContext&) {}
   [[nodiscard]] virtual nlohmann::json numbers() const = 0;
 };
 

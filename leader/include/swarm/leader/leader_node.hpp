@@ -62,6 +62,7 @@ class LeaderNode {
   std::vector<std::unique_ptr<GroupTask>> tasks_;
   std::uint32_t phase_ = 0;
   bool started_ = false;
+  bool taking_over_ = false;  // the next start() is a take-over's (GroupTask::took_over)
   std::optional<std::uint32_t> next_phase_;
   std::optional<std::uint32_t> round_;
   std::uint32_t last_round_ = 0;

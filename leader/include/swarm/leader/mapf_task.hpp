@@ -11,7 +11,15 @@
 // release. Late knowledge only makes robots wait longer: never collide, never deadlock (the graph
 // of a valid plan has no cycle; rotations go as one step, planner/mapf/adg.hpp).
 // With `execution: MAPF_EXECUTE_TIMED` each robot instead gets its whole timed path (waits
-// included), released at once, to set off at the plan's start tick (the order's values[0]).
+// included), released at once, to set off at the plan's start tick (the order's values[0]); a
+// hold then stops them where they stand (an empty route each), and kHeld follows once the
+// simulator has confirmed every stop.
+// A standby that takes the group over mid-plan (took_over) cannot know how far each robot got
+// along the old leader's routes, nor which releases are still on their way: it takes the plan
+// without sending it, stops each of its robots where it stands (an empty route, which the
+// simulator confirms as Stopped; timed, at the GCS's hold, with every other group) and reports
+// kHeld once all have stopped; the GCS, which holds a plan whose group changed leader, then plans
+// again from where every robot stands.
 #pragma once
 
 #include <cstdint>
@@ -29,6 +37,7 @@ class MapfGroupTask : public GroupTask {
   void step(GroupContext& ctx) override;
   void on_order(const msgs::TaskOrder& order, GroupContext& ctx) override;
   void on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) override;
+  void took_over(GroupContext&) override { adopting_ = true; }
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:
@@ -56,6 +65,13 @@ class MapfGroupTask : public GroupTask {
   std::vector<std::uint32_t> base_;
   std::vector<int> own_;                      // plan indices of this group's robots
   std::vector<std::int32_t> report_;          // (robot, step, release) triples to report
+  // Taking over: the replayed orders build the plan's state but send nothing (adopting_); then
+  // every own robot is stopped (so are they on a hold of a timed plan), and the robots whose stop
+  // is not yet confirmed are `stopping_`.
+  bool adopting_ = false;
+  std::vector<int> stopping_;  // plan indices
+  bool stopped_all_ = false;   // after a take-over: every own robot confirmed stopped
+  void stop_own_robots(GroupContext& ctx);
   bool reported_done_ = false;
   bool reported_held_ = false;
   std::uint64_t releases_sent_ = 0;

@@ -46,7 +46,9 @@ class RobotAgent {
   // when it starts), as far as index `release`; the objects under the robot are picked up at the
   // indices in `picks` and dropped at those in `drops`. Replaces a waypoint or an earlier route.
   // The robot drives the released part, then waits for release() to go on. It sets off at the
-  // step() of tick `start_tick` (or at once if that has passed).
+  // step() of tick `start_tick` (or at once if that has passed). An empty route means "stop where
+  // you stand": the simulator is told at once, and the route's progress turns Stopped once the
+  // simulator confirms it (until then Active), so a leader knows when the robot stands still.
   void follow(std::uint32_t id, std::vector<planner::Cell> cells, std::uint32_t release,
               std::vector<std::uint32_t> picks = {}, std::vector<std::uint32_t> drops = {},
               std::uint32_t start_tick = 0);

@@ -116,6 +116,7 @@ struct PhaseMetrics {
   std::uint32_t start_tick = 0;
   std::optional<std::uint32_t> end_tick;
   bool complete = false;
+  std::optional<std::string> gave_up;  // why the GCS ended it incomplete (gcs_task.hpp given_up)
   MotionNumbers motion;
   nlohmann::json task = nlohmann::json::object();  // the task's own numbers (its README section)
 };
