@@ -32,17 +32,22 @@ planner::CoverRoutesConfig cover_routes_config(const swarm::scenario::Cover& c, 
   return out;
 }
 
+bool delivery_ticks_bounded(const swarm::scenario::Scenario& s) {
+  auto bounded = [](const swarm::scenario::Link& l) {
+    return l.loss() == 0 && l.delay_ms() == 0 && l.bandwidth_bytes_per_s() == 0;
+  };
+  return !s.realtime() && bounded(s.links().sim_robot()) && bounded(s.links().member_leader()) &&
+         bounded(s.links().leader_gcs());
+}
+
 swarm::scenario::Mapf resolved_mapf(const swarm::scenario::Mapf& mapf, const swarm::scenario::Scenario& s) {
   swarm::scenario::Mapf m = mapf;
   if (m.execution() != swarm::scenario::MAPF_EXECUTE_AUTO) return m;
-  auto exact = [](const swarm::scenario::Link& l) {
-    return l.delay_ticks() == 0 && l.jitter_ticks() == 0 && l.loss() == 0 && l.delay_ms() == 0 &&
-           l.bandwidth_bytes_per_s() == 0;
-  };
+  auto undelayed = [](const swarm::scenario::Link& l) { return l.delay_ticks() == 0 && l.jitter_ticks() == 0; };
   // Any fault (a kill too: timed robots would not wait for a dead one's replanned neighbours,
   // and a route through its cell would block for good) calls for the graph.
-  const bool timed = !s.realtime() && s.faults_size() == 0 && exact(s.links().sim_robot()) && exact(s.links().member_leader()) &&
-                     exact(s.links().leader_gcs());
+  const bool timed = delivery_ticks_bounded(s) && s.faults_size() == 0 && undelayed(s.links().sim_robot()) &&
+                     undelayed(s.links().member_leader()) && undelayed(s.links().leader_gcs());
   m.set_execution(timed ? swarm::scenario::MAPF_EXECUTE_TIMED : swarm::scenario::MAPF_EXECUTE_ADG);
   return m;
 }

@@ -19,6 +19,12 @@ namespace swarm::config {
 [[nodiscard]] planner::CoverRoutesConfig cover_routes_config(const swarm::scenario::Cover& cover, std::uint64_t seed,
                                                              std::uint64_t salt);
 
+// Does every message of the run arrive within a number of ticks known in advance (its link's
+// delay + jitter)? Not with loss (a re-sent message comes later), a bandwidth cap (it queues) or
+// in real time. A plan driven by its own timing (MAPF_EXECUTE_TIMED) needs this: its start tick
+// allows for the delays, and a route that came later would set off behind the others.
+[[nodiscard]] bool delivery_ticks_bounded(const swarm::scenario::Scenario& s);
+
 // A mapf phase's settings with `execution: MAPF_EXECUTE_AUTO` made concrete for this scenario:
 // MAPF_EXECUTE_TIMED when every link class has no delay, jitter, loss or bandwidth cap, the scenario schedules no
 // fault (kill, cut or freeze) and the run is in lockstep (the plan's own timing is then exactly executable, so the executed
