@@ -30,28 +30,132 @@ CollectGroupTask::CollectGroupTask(const swarm::scenario::Collect& config, const
       robots_(static_cast<std::size_t>(setup.topology.robots_per_group())) {}
 
 void CollectGroupTask::start(GroupContext&) {
-  have_order_ = reported_ = false;
+  have_order_ = reported_ = resuming_ = false;
+  resume_order_.reset();
   state_.assign(world_.objects.size(), State::Waiting);
+  carrier_.assign(world_.objects.size(), -1);
   where_.clear();
-  for (const auto& o : world_.objects) where_.push_back(o.cell);
+  told_.clear();
+  for (const auto& o : world_.objects) {
+    where_.push_back(o.cell);
+    told_.push_back({task::kObjectLying, o.cell.x, o.cell.y});
+  }
   for (Robot& r : robots_) r = Robot{};
+  holds_.assign(robots_.size(), std::nullopt);
+  put_down_.assign(robots_.size(), std::nullopt);
 }
 
-void CollectGroupTask::on_order(const msgs::TaskOrder& o, GroupContext& ctx) {
-  if (o.kind() != task::kOrderWork || (have_order_ && o.seq() <= seq_)) return;
-  for (std::int32_t id : o.values()) {
-    if (id < 0 || static_cast<std::size_t>(id) >= world_.objects.size()) {
-      throw std::runtime_error("a collect order names object " + std::to_string(id) + " of " +
-                               std::to_string(world_.objects.size()));
-    }
+void CollectGroupTask::took_over(GroupContext& ctx) {
+  resuming_ = true;
+  // Where the simulator left what each robot lost by now held: it put it down when it lost the
+  // robot, from the robot cells of this clock (member_lost does the same for later losses).
+  for (int i = 0; i < static_cast<int>(robots_.size()); ++i) {
+    if (!ctx.alive[static_cast<std::size_t>(i)]) member_lost(i, ctx);
   }
+  // Every living member sends what it holds to a new leader at once: heard within the link's
+  // delay and jitter.
+  const auto& ml = ctx.setup.world.scenario.links().member_leader();
+  grippers_heard_by_ = ctx.clock.tick() + 2 + ml.delay_ticks() + ml.jitter_ticks();
+}
+
+void CollectGroupTask::on_carrying(int index, const std::vector<std::uint32_t>& objects, GroupContext&) {
+  holds_[static_cast<std::size_t>(index)] = objects;
+}
+
+namespace {
+void check_object(std::int64_t id, std::size_t objects) {
+  if (id < 0 || static_cast<std::size_t>(id) >= objects) {
+    throw std::runtime_error("a collect order names object " + std::to_string(id) + " of " + std::to_string(objects));
+  }
+}
+}  // namespace
+
+void CollectGroupTask::on_order(const msgs::TaskOrder& o, GroupContext& ctx) {
+  if (o.kind() == task::kOrderResume) {
+    if (o.values().size() % 4 != 0) throw std::runtime_error("a collect resume order's values are not (object, what, a, b) sets");
+    for (std::size_t k = 0; k < o.values().size(); k += 4) check_object(o.values()[k], world_.objects.size());
+    if (resuming_ && (!resume_order_ || o.seq() > resume_order_->seq())) resume_order_ = o;
+    return;
+  }
+  if (o.kind() != task::kOrderWork || (have_order_ && o.seq() <= seq_)) return;
+  if (resuming_) return;  // a take-over starts from the resume order: what was done since this one
+  for (std::int32_t id : o.values()) check_object(id, world_.objects.size());
   seq_ = o.seq();
   have_order_ = true;
   mine_.assign(o.values().begin(), o.values().end());
-  // Each object to the nearest living robot with room left.
+  share(mine_, ctx);
+  for (int i : ctx.living()) plan(i, ctx);
+}
+
+void CollectGroupTask::resume(GroupContext& ctx) {
+  const msgs::TaskOrder& o = *resume_order_;
+  seq_ = o.seq();
+  have_order_ = true;
+  resuming_ = false;
+  ++resumes_;
+  mine_.clear();
+  const comm::Topology& t = ctx.topology();
   const std::vector<int> living = ctx.living();
-  const std::size_t room = (mine_.size() + living.size() - 1) / std::max<std::size_t>(1, living.size());
-  for (int id : mine_) {
+  auto holder = [&](std::uint32_t id) {
+    for (int i : living) {
+      const auto& h = holds_[static_cast<std::size_t>(i)];
+      if (h && std::find(h->begin(), h->end(), id) != h->end()) return i;
+    }
+    return -1;
+  };
+  std::vector<int> lying;
+  const auto& v = o.values();
+  for (std::size_t k = 0; k + 3 < v.size(); k += 4) {
+    const int id = v[k];
+    const auto idu = static_cast<std::size_t>(id);
+    mine_.push_back(id);
+    told_[idu] = {v[k + 1], v[k + 2], v[k + 3]};
+    state_[idu] = State::Waiting;
+    carrier_[idu] = -1;
+    int on = holder(static_cast<std::uint32_t>(id));
+    const bool carried = v[k + 1] == task::kObjectCarried && v[k + 2] >= 0 && v[k + 2] < t.robots() &&
+                         t.group_of(static_cast<comm::AgentId>(v[k + 2])) == group_;
+    const int was_on = carried ? t.index_of(static_cast<comm::AgentId>(v[k + 2])) : -1;
+    // The report's holder, if its gripper was not heard: trust the report.
+    if (on < 0 && was_on >= 0 && ctx.alive[static_cast<std::size_t>(was_on)] && !holds_[static_cast<std::size_t>(was_on)]) {
+      on = was_on;
+    }
+    if (on >= 0) {
+      state_[idu] = State::Carried;
+      carrier_[idu] = on;
+      where_[idu] = ctx.cell_of(on);  // its tour "picks it up" where it starts: it holds it already
+      robots_[static_cast<std::size_t>(on)].pending.push_back(id);
+    } else if (v[k + 1] == task::kObjectDelivered) {
+      state_[idu] = State::Delivered;
+    } else if (was_on >= 0 && put_down_[static_cast<std::size_t>(was_on)]) {
+      where_[idu] = *put_down_[static_cast<std::size_t>(was_on)];  // its robot was lost
+      lying.push_back(id);
+    } else if (was_on >= 0) {
+      state_[idu] = State::Delivered;  // a living robot that held it holds it no more: it dropped it on its tour
+    } else {
+      where_[idu] = {v[k + 2], v[k + 3]};
+      // A lost robot of the group standing on its cell had come to pick it up and did, after the
+      // old leader's last report (a robot lost on it would otherwise cover it for good): the
+      // simulator put it down beside that robot.
+      for (std::size_t i = 0; i < put_down_.size(); ++i) {
+        if (put_down_[i] && !ctx.alive[i] && ctx.cell_of(static_cast<int>(i)) == where_[idu]) where_[idu] = *put_down_[i];
+      }
+      lying.push_back(id);
+    }
+  }
+  std::fprintf(stderr, "leader-%d: resumes %zu objects (%zu lying)\n", group_, mine_.size(), lying.size());
+  share(lying, ctx);
+  for (int i : living) plan(i, ctx);
+}
+
+void CollectGroupTask::share(const std::vector<int>& ids, GroupContext& ctx) {
+  // Each object to the nearest living robot with room left (room: an even share of these and what
+  // the robots have pending already).
+  const std::vector<int> living = ctx.living();
+  std::size_t total = ids.size();
+  for (int i : living) total += robots_[static_cast<std::size_t>(i)].pending.size();
+  const std::size_t room = (total + living.size() - 1) / std::max<std::size_t>(1, living.size());
+  for (int id : ids) {
     int best = -1;
     double best_d = std::numeric_limits<double>::infinity();
     for (int i : living) {
@@ -62,7 +166,16 @@ void CollectGroupTask::on_order(const msgs::TaskOrder& o, GroupContext& ctx) {
     }
     if (best >= 0) robots_[static_cast<std::size_t>(best)].pending.push_back(id);
   }
-  for (int i : living) plan(i, ctx);
+}
+
+planner::OccupancyGrid CollectGroupTask::planning_map(const GroupContext& ctx) const {
+  // A lost robot stands where it stopped for good (the clock says who is lost, in every group):
+  // tours and detours go round it.
+  planner::OccupancyGrid map = map_given_ ? ctx.setup.world.truth : ctx.map.group();
+  for (const auto& r : ctx.clock.robots()) {
+    if (!r.alive()) map.set({r.x(), r.y()}, planner::CellState::Occupied);
+  }
+  return map;
 }
 
 void CollectGroupTask::plan(int index, GroupContext& ctx) {
@@ -76,8 +189,10 @@ void CollectGroupTask::plan(int index, GroupContext& ctx) {
   options.variant = planner::TourVariant::kDistanceAngle;
   options.search = planner::TourOptions::Search::kExact;
   options.seed = static_cast<std::uint64_t>(1000 * group_ + index + 1);
-  const planner::OccupancyGrid& map = map_given_ ? ctx.setup.world.truth : ctx.map.group();
+  const planner::OccupancyGrid map = planning_map(ctx);
   const planner::TourPlan plan = planner::plan_tour(map, problem, options);
+  // Nothing reachable (a lost robot may stand in the way for good): the objects stay pending.
+  if (plan.legs.empty()) return;
   r.picks.clear();
   r.delivers.clear();
   std::uint32_t at = 0;
@@ -139,7 +254,7 @@ void CollectGroupTask::reroute(int index, int waits, GroupContext& ctx) {
   for (const auto& s : ctx.clock.robots()) {
     if (Cell{s.x(), s.y()} != here) others.push_back({s.x(), s.y()});
   }
-  const planner::OccupancyGrid& map = map_given_ ? ctx.setup.world.truth : ctx.map.group();
+  const planner::OccupancyGrid map = planning_map(ctx);
   // (4-connected, so legal under the tour's 8-connected motion too)
   std::vector<Cell> around = planner::detour(map, r.cells, at, others);
   std::vector<Cell> cells;
@@ -198,7 +313,10 @@ void CollectGroupTask::on_progress(int index, const planner::RouteProgress& p, G
   if (p.step > r.step) r.moved_tick = ctx.clock.tick();
   r.step = std::max(r.step, p.step);
   for (const auto& [id, step] : r.picks) {
-    if (r.step >= step && state_[static_cast<std::size_t>(id)] == State::Waiting) state_[static_cast<std::size_t>(id)] = State::Carried;
+    if (r.step >= step && state_[static_cast<std::size_t>(id)] == State::Waiting) {
+      state_[static_cast<std::size_t>(id)] = State::Carried;
+      carrier_[static_cast<std::size_t>(id)] = index;
+    }
   }
   for (const auto& [id, step] : r.delivers) {
     if (r.step >= step) state_[static_cast<std::size_t>(id)] = State::Delivered;
@@ -209,7 +327,7 @@ void CollectGroupTask::on_progress(int index, const planner::RouteProgress& p, G
   } else if (p.state != planner::RouteState::Active) {
     // Refused or abandoned (the robot was not where the route began): from where it stands back
     // onto its route, the rest unchanged.
-    const planner::OccupancyGrid& map = map_given_ ? ctx.setup.world.truth : ctx.map.group();
+    const planner::OccupancyGrid map = planning_map(ctx);
     const auto back = planner::astar(map, ctx.cell_of(index), r.cells[r.step], {.unknown_is_free = false});
     if (!back) return;
     std::vector<Cell> cells = *back;
@@ -231,6 +349,8 @@ void CollectGroupTask::member_lost(int index, GroupContext& ctx) {
   std::vector<Cell> robots;
   for (const auto& s : ctx.clock.robots()) robots.push_back({s.x(), s.y()});
   const Cell at = planner::put_down_cell(ctx.setup.world.truth, ctx.cell_of(index), robots);
+  put_down_[static_cast<std::size_t>(index)] = at;
+  if (resuming_) return;  // what it held is judged with the resume order
   std::vector<int> orphans = lost.pending;
   for (const auto& [id, step] : lost.picks) {
     auto& s = state_[static_cast<std::size_t>(id)];
@@ -254,7 +374,31 @@ void CollectGroupTask::member_lost(int index, GroupContext& ctx) {
   for (int i : living) plan(i, ctx);
 }
 
+void CollectGroupTask::report_changes(GroupContext& ctx) {
+  std::vector<std::int32_t> values{static_cast<std::int32_t>(seq_)};
+  const comm::Topology& t = ctx.topology();
+  for (int id : mine_) {
+    const auto idu = static_cast<std::size_t>(id);
+    std::array<std::int32_t, 3> now{task::kObjectLying, where_[idu].x, where_[idu].y};
+    if (state_[idu] == State::Delivered) now = {task::kObjectDelivered, 0, 0};
+    if (state_[idu] == State::Carried && carrier_[idu] >= 0) now = {task::kObjectCarried, t.robot(group_, carrier_[idu]), 0};
+    if (now == told_[idu]) continue;
+    told_[idu] = now;
+    values.push_back(id);
+    values.insert(values.end(), now.begin(), now.end());
+  }
+  if (values.size() == 1) return;
+  msgs::TaskReport report;
+  report.state(task::kWorking);
+  report.values(std::move(values));
+  ctx.out.report(report);
+}
+
 void CollectGroupTask::step(GroupContext& ctx) {
+  if (resuming_) {
+    if (!resume_order_ || ctx.clock.tick() < grippers_heard_by_) return;
+    resume(ctx);
+  }
   if (!have_order_ || reported_) return;
   for (int i : ctx.living()) {
     plan(i, ctx);  // an idle robot with objects waiting
@@ -263,6 +407,7 @@ void CollectGroupTask::step(GroupContext& ctx) {
       reroute(i, 1 + static_cast<int>(ctx.topology().robot(group_, i)), ctx);
     }
   }
+  report_changes(ctx);
   for (int id : mine_) {
     if (state_[static_cast<std::size_t>(id)] != State::Delivered) return;
   }
@@ -281,7 +426,8 @@ nlohmann::json CollectGroupTask::numbers() const {
   int delivered = 0;
   for (int id : mine_) delivered += state_[static_cast<std::size_t>(id)] == State::Delivered ? 1 : 0;
   return {{"objects", mine_.size()}, {"delivered_known", delivered}, {"reassigned", reassigned_},
-          {"backoffs", backoffs_},   {"detours", detours_},           {"per_robot", per_robot}};
+          {"backoffs", backoffs_},   {"detours", detours_},           {"resumes", resumes_},
+          {"per_robot", per_robot}};
 }
 
 }  // namespace swarm::leader

@@ -179,6 +179,7 @@ void LeaderNode::take_over(const msgs::Clock& clock) {
   // latest round: a new round's plan at once.
   started_ = false;
   taking_over_ = true;
+  own_carrying_.reset();
   if (last_round_ > 0 && !round_) round_ = last_round_;
   std::fprintf(stderr, "%s: leads group %d from tick %u\n", topology_.name_of(agent_.self()).c_str(), group_,
                clock.tick());
@@ -240,6 +241,7 @@ void LeaderNode::dispatch(GroupContext& ctx) {
   for (const auto& s : statuses_) task.on_member_status(s, ctx);
   statuses_.clear();
   for (const auto& p : progress_) {
+    task.on_carrying(topology_.index_of(p.robot()), p.carrying(), ctx);
     task.on_progress(topology_.index_of(p.robot()), {p.route_id(), p.step(), static_cast<planner::RouteState>(p.state())},
                      ctx);
   }
@@ -275,6 +277,10 @@ void LeaderNode::step(const msgs::Clock& clock) {
     own.round(s.round);
     own.state(static_cast<std::uint8_t>(*s.report));
     tasks_[phase_]->on_member_status(own, ctx);
+  }
+  if (!own_carrying_ || *own_carrying_ != robot_.carrying()) {
+    own_carrying_ = robot_.carrying();
+    tasks_[phase_]->on_carrying(self_index_, *own_carrying_, ctx);
   }
   if (const planner::RouteProgress p = robot_.following(); p.id != 0 && !(p == own_progress_)) {
     own_progress_ = p;

@@ -54,6 +54,7 @@ MemberNode::MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
   const int leaders = static_cast<int>(leaders_except_self(setup.topology, group, agent.self()).size());
   agent.subscribe<msgs::Sense>(topic::sense(agent.self()), LinkClass::SimRobot, [this](const msgs::Sense& s) {
     auto changes = robot_.sense({s.x(), s.y()}, s.ranges(), s.max_range(), comm::route_progress(s));
+    robot_.sense_gripper(s.carrying());
     if (to_leader_) {
       to_leader_(changes);
     } else {
@@ -111,15 +112,21 @@ void MemberNode::step(const msgs::Clock& clock) {
   }
   const RobotAgent::Step s = robot_.step(clock.tick());
   publish_motion(motion_, agent_.self(), s);
+  // Progress and what the robot holds go to the leader when they change, and all again to a new
+  // leader (a standby that took the group over knows nothing of this robot yet).
   const planner::RouteProgress p = robot_.following();
-  if (p.id != 0 && !(p == reported_)) {
+  const comm::AgentId leader = comm::leader_in(clock, agent_.topology(), group_);
+  if (p.id != 0 && (!(p == reported_) || robot_.carrying() != reported_carrying_ || leader != reported_to_)) {
     msgs::RouteProgress m;
     m.robot(agent_.self());
     m.route_id(p.id);
     m.step(p.step);
     m.state(static_cast<std::uint8_t>(p.state));
+    m.carrying(robot_.carrying());
     progress_.send(m);
     reported_ = p;
+    reported_carrying_ = robot_.carrying();
+    reported_to_ = leader;
   }
   if (s.report) {
     msgs::MemberStatus status;

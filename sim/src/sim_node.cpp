@@ -170,6 +170,7 @@ void SimNode::begin_tick(std::uint32_t k) {
     s.route_state(static_cast<std::uint8_t>(route.state));
     s.max_range(world_.lidar().range_cells);
     s.ranges(ranges_);
+    s.carrying(world_.carried_by(static_cast<int>(r)));
     sense_[r]->send(s);
   }
   const double explored = world_.explored_fraction();

@@ -220,4 +220,12 @@ MotionCounts World::total_counts() const {
   return t;
 }
 
+std::vector<std::uint32_t> World::carried_by(int robot) const {
+  std::vector<std::uint32_t> out;
+  for (std::size_t i = 0; i < objects_.size(); ++i) {
+    if (objects_[i].carrier == robot) out.push_back(static_cast<std::uint32_t>(i));
+  }
+  return out;
+}
+
 }  // namespace swarm::sim

@@ -171,5 +171,18 @@ TEST(Tasks, MapfWithAnInfeasiblePlanEndsTheMissionAtOnce) {
   EXPECT_NE(r.output.find("INCOMPLETE: phase mapf given up: no plan for 2 robots"), std::string::npos) << r.output;
 }
 
+// A leader killed mid-collection: its standby resumes the group from the GCS's record of what the
+// old leader reported and from what the members hold; the simulator counts every object delivered.
+TEST(Tasks, CollectWithALeaderKilledMidwayStillDeliversEveryObject) {
+  const auto m = run_task("collect_kill_leader", "small.pbtxt", "", "--mission collect --kill leader-1@30 --max-ticks 3000");
+  const auto& h = m["faults"]["leader_handovers"];
+  ASSERT_EQ(h.size(), 1u) << h;
+  EXPECT_EQ(h[0]["to"], "member-1-1");
+  const auto& p = phase_named(m, "collect");
+  EXPECT_EQ(p["task"]["delivered"], p["task"]["objects"]);
+  EXPECT_EQ(p["task"]["wrong_drops"], 0);
+  EXPECT_EQ(p["task"]["resumes"], 1);
+}
+
 }  // namespace
 }  // namespace swarm::test

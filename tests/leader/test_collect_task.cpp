@@ -4,6 +4,8 @@
 // included, put down beside it) are taken on by the others.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "swarm_test/fake_swarm.hpp"
 
 namespace swarm::leader {
@@ -40,6 +42,38 @@ TEST(CollectTask, ALostMembersObjectsAreTakenOnByTheOthers) {
   EXPECT_EQ(p["task"]["delivered"], p["task"]["objects"]);
   EXPECT_EQ(p["task"]["wrong_drops"], 0);
   EXPECT_GT(m["agents"]["leader-0"]["phases"][0]["numbers"]["reassigned"].get<int>(), 0);
+}
+
+// leader-1 is lost midway, carrying objects: member-1-1, its standby, takes the group over. The
+// GCS sends it the group's objects as leader-1 last reported them, the members tell it what they
+// hold, and it resumes: what the lost leader held lies where the simulator put it down, what was
+// delivered stays delivered. Every object reaches its destination, as the simulator judges, and
+// none is dropped elsewhere. With member<->leader and leader<->GCS delay too. (Lost at tick 45 the
+// dead robot narrows a passage for good, and two robots of group 0 that meet head-on there back
+// off in turn for ever: group 0 never delivers its last objects. The collect task's known limit
+// with lost robots as obstacles, README "Missions"; not the take-over's.)
+TEST(CollectTask, ALostLeadersGroupIsResumedByItsStandbyAndEveryObjectIsDelivered) {
+  for (const std::string links : {"", "links { member_leader { delay_ticks: 2 jitter_ticks: 1 } leader_gcs { delay_ticks: 1 } } "}) {
+    for (const std::uint32_t at : {20u, 30u}) {
+      SCOPED_TRACE(links + "lost at " + std::to_string(at));
+      auto setup = swarm::test::setup_from_text("map: 'small' groups: 2 robots_per_group: 3 max_ticks: 4000 " + links +
+                                                "mission { phase { collect {} } }");
+      swarm::test::FakeSwarm s(setup);
+      const auto m = s.run_to_end([&](std::uint32_t tick) {
+        if (tick == at) s.disconnect(setup.topology.leader(1));
+      });
+      const auto& p = phase_named(m, "collect");
+      ASSERT_TRUE(m["complete"].get<bool>()) << p["task"];
+      EXPECT_EQ(p["task"]["delivered"], p["task"]["objects"]);
+      EXPECT_EQ(p["task"]["wrong_drops"], 0);
+      EXPECT_EQ(p["task"]["resumes"], 1);
+      EXPECT_EQ(p["task"]["reported_delivered"], p["task"]["objects"]);
+      const auto& h = m["faults"]["leader_handovers"];
+      ASSERT_EQ(h.size(), 1u) << h;
+      EXPECT_EQ(h[0]["to"], "member-1-1");
+      EXPECT_EQ(m["agents"]["member-1-1"]["phases"][0]["numbers"]["resumes"], 1);
+    }
+  }
 }
 
 }  // namespace

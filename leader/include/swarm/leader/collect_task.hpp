@@ -10,9 +10,21 @@
 // route has not advanced for a while (robots contending for one free cell: the
 // simulator refuses both) waits a number of ticks unique to it and goes on, so one goes first.
 // When every object of the group is delivered the leader reports the group done.
+//
+// What it knows of each object goes to the GCS as it changes (TaskReport kWorking, values = [seq,
+// then per object: object, what, a, b], what = comm::task::kObject*), so that a standby that takes
+// the group over (took_over) can resume it: it waits for the GCS's kOrderResume (the group's
+// objects not delivered, as last reported) and for its robots' grippers (on_carrying: members send
+// what they hold to a new leader), then believes the grippers first: an object a living robot holds
+// is carried by it; one the report says a robot held that holds it no more was delivered (robots
+// drop only at their tour's destinations); one a lost robot held lies where the simulator put it
+// down (planner::put_down_cell, computed at the take-over from the robots' cells then); any other
+// lies where last reported. Then every living robot gets a new tour.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "swarm/config/task_config.hpp"
@@ -28,15 +40,25 @@ class CollectGroupTask : public GroupTask {
   void on_order(const msgs::TaskOrder& order, GroupContext& ctx) override;
   void on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) override;
   void member_lost(int index, GroupContext& ctx) override;
+  void on_carrying(int index, const std::vector<std::uint32_t>& objects, GroupContext& ctx) override;
+  void took_over(GroupContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:
+  // The map tours are planned on: the map file or the group map, lost robots' cells blocked.
+  [[nodiscard]] planner::OccupancyGrid planning_map(const GroupContext& ctx) const;
   // A tour for robot `index` over its pending objects, from where it stands.
   void plan(int index, GroupContext& ctx);
   // Robot `index` is stuck: sends it round the robots in its way, or (no way round) the rest of
   // its route after `waits` ticks of waiting.
   void reroute(int index, int waits, GroupContext& ctx);
   void send(int index, GroupContext& ctx, std::vector<planner::Cell> cells);
+  // Objects `ids` to the living robots: each to the nearest one with room left.
+  void share(const std::vector<int>& ids, GroupContext& ctx);
+  // A take-over: the resume order's objects, judged as the header says, then new tours.
+  void resume(GroupContext& ctx);
+  // What changed since the last report goes to the GCS.
+  void report_changes(GroupContext& ctx);
 
   struct Robot {
     std::uint32_t route_id = 0;
@@ -62,6 +84,18 @@ class CollectGroupTask : public GroupTask {
   std::vector<int> mine_;                 // the group's objects
   std::vector<planner::Cell> where_;      // per object: where it lies (for re-planning)
   std::vector<State> state_;              // per object, as far as the leader knows
+  std::vector<int> carrier_;              // per object: the group index of the robot it is on, or -1
+  // What the GCS was last told of each object (what, a, b), to report only changes.
+  std::vector<std::array<std::int32_t, 3>> told_;
+  // Taking over: the resume order (kept until it can be applied), the grippers heard since the
+  // take-over, where each robot lost by then left what it held, and from which tick on the
+  // members' grippers have been heard (member<->leader delays allowed for).
+  bool resuming_ = false;
+  std::optional<msgs::TaskOrder> resume_order_;
+  std::vector<std::optional<std::vector<std::uint32_t>>> holds_;  // per group index
+  std::vector<std::optional<planner::Cell>> put_down_;           // per group index
+  std::uint32_t grippers_heard_by_ = 0;
+  std::uint64_t resumes_ = 0;
   std::vector<Robot> robots_;
   std::uint64_t reassigned_ = 0;
   std::uint64_t backoffs_ = 0;

@@ -8,7 +8,7 @@
 //                         before the leader's own robot acts
 //   finish_step(ctx)      every tick, after the own robot acted (its waypoint report, if any,
 //                         came through on_member_status)
-//   on_order / on_round / on_member_status / on_progress
+//   on_order / on_round / on_member_status / on_progress / on_carrying
 //                         the messages of the current phase, routed by the node
 //   member_lost / member_back
 //                         a member the simulator declared lost, or one whose link healed
@@ -88,6 +88,9 @@ class GroupTask {
   virtual void on_member_status(const msgs::MemberStatus&, GroupContext&) {}
   // Progress of a member's route (index 0: the leader's own robot, polled by the node each tick).
   virtual void on_progress(int /*index*/, const planner::RouteProgress&, GroupContext&) {}
+  // What a robot holds, from its gripper's sensor (with its progress; index `self`: the leader's
+  // own robot, whenever it changes).
+  virtual void on_carrying(int /*index*/, const std::vector<std::uint32_t>& /*objects*/, GroupContext&) {}
   virtual void member_lost(int /*index*/, GroupContext&) {}
   virtual void member_back(int /*index*/, GroupContext&) {}
   virtual void took_over(GroupContext&) {}

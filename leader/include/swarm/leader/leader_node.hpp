@@ -62,7 +62,8 @@ class LeaderNode {
   std::vector<std::unique_ptr<GroupTask>> tasks_;
   std::uint32_t phase_ = 0;
   bool started_ = false;
-  bool taking_over_ = false;  // the next start() is a take-over's (GroupTask::took_over)
+  bool taking_over_ = false;
+  std::optional<std::vector<std::uint32_t>> own_carrying_;  // what the own robot held, as last told the task  // the next start() is a take-over's (GroupTask::took_over)
   std::optional<std::uint32_t> next_phase_;
   std::optional<std::uint32_t> round_;
   std::uint32_t last_round_ = 0;

@@ -52,6 +52,8 @@ class MemberNode {
   comm::Mailbox::Outlet<msgs::MotionCommand>& motion_;
   comm::Mailbox::Outlet<msgs::RouteProgress>& progress_;
   planner::RouteProgress reported_;  // the last progress sent to the leader
+  std::vector<std::uint32_t> reported_carrying_;  // and what the robot held then
+  comm::AgentId reported_to_ = 0;                 // and which leader it went to
   planner::PatchEncoding encoding_;
   std::uint64_t assignments_ = 0;
   std::uint64_t routes_ = 0;

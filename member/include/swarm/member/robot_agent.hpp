@@ -71,6 +71,10 @@ class RobotAgent {
   // when it cannot go on: a wall, or it is not where the route says).
   planner::RouteProgress following() const { return follow_progress_; }
 
+  // What the gripper senses with every scan (Sense.carrying): the objects the robot holds, by number.
+  void sense_gripper(std::vector<std::uint32_t> objects) { carrying_ = std::move(objects); }
+  const std::vector<std::uint32_t>& carrying() const { return carrying_; }
+
   const planner::OccupancyGrid& map() const { return map_; }
   planner::Cell pose() const { return pose_; }
   std::optional<planner::Cell> waypoint() const { return waypoint_; }
@@ -88,6 +92,8 @@ class RobotAgent {
   void step_following(Step& out, std::uint32_t tick);
   bool path_still_valid(std::size_t& at) const;
   bool replan(std::optional<planner::Cell> avoid);
+
+  std::vector<std::uint32_t> carrying_;
 
   planner::OccupancyGrid map_;
   planner::Cell pose_{-1, -1};

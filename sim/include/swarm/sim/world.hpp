@@ -95,6 +95,8 @@ class World {
     int wrong_drops = 0;  // objects dropped anywhere else
   };
   const CollectCounts& collect() const { return collect_; }
+  // The numbers of the objects robot `robot` carries (what its gripper senses), ascending.
+  std::vector<std::uint32_t> carried_by(int robot) const;
   // Every robot performs its next action.
   void move();
   // Scans from the robot's cell and records what it saw in the explored map.
