@@ -1,4 +1,5 @@
 // swarm-gcs: the ground control station of a swarm run. See gcs_node.hpp.
+#include "swarm/comm/fault_injection.hpp"
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/comm/role.hpp"
 #include "swarm/gcs/gcs_node.hpp"
@@ -13,7 +14,22 @@ int main(int argc, char** argv) {
     comm::Participant participant(setup.dds);
     comm::LockstepAgent agent(participant, setup.topology, setup.links, setup.topology.gcs());
     gcs::GcsNode node(agent, setup, options.run_dir, gcs::Progress::parse(options.progress));
-    comm::run_lockstep(agent, [&](const msgs::Clock& clock) { return node.step(clock); });
+    const std::string journal = gcs::journal_path(options.run_dir);
+    if (options.resume) {
+      // A restart (gcs_node.hpp "Restart"): the old process's inputs again, then back into the run.
+      (void)agent.replay_journal(journal, [&](const msgs::Clock& clock) { node.step(clock); });
+      node.resumed(comm::read_journal(journal).restarts);
+      agent.rejoin();
+    } else {
+      agent.journal_to(journal);
+    }
+    // The scheduled kill is the first process's; a restarted one runs to the end.
+    std::optional<comm::FaultInjector> faults;
+    if (!options.resume) faults.emplace(setup.world.scenario, "gcs");
+    comm::run_lockstep(agent, [&](const msgs::Clock& clock) {
+      if (faults) faults->at_tick(clock.tick());
+      return node.step(clock);
+    });
     node.finish();
     comm::exit_after_work("gcs");
   });

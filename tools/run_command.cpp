@@ -109,7 +109,7 @@ std::uint32_t tick_of(const std::string& digits) {
 template <class Fill>
 void add_faults(swarm::scenario::Scenario& s, const char* flag, const std::vector<std::string>& values,
                 const std::string& form_after_agent, const char* expected, Fill fill) {
-  const std::regex form(R"(([a-z]+-[0-9]+(?:-[0-9]+)?))" + form_after_agent);
+  const std::regex form(R"(([a-z]+(?:-[0-9]+(?:-[0-9]+)?)?))" + form_after_agent);
   for (const std::string& v : values) {
     std::smatch m;
     if (!std::regex_match(v, m, form)) {
@@ -175,8 +175,12 @@ void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o) {
   // Names are checked against the run's groups by validate(); here only the shape.
   using Match = std::smatch;
   using Fault = swarm::scenario::Fault;
-  add_faults(s, "--kill", o.kills, R"(@(?:tick:)?([0-9]+))", "AGENT@TICK, e.g. --kill member-1-2@100",
-             [](Fault& f, const Match& m) { f.set_kill_at_tick(tick_of(m[2])); });
+  add_faults(s, "--kill", o.kills, R"(@(?:tick:)?([0-9]+)(?:\+([0-9]{1,6}(?:\.[0-9]+)?)s?)?)",
+             "AGENT@TICK, e.g. --kill member-1-2@100, or gcs@TICK+SECONDS (restarted after SECONDS), e.g. --kill gcs@40+2",
+             [](Fault& f, const Match& m) {
+               f.set_kill_at_tick(tick_of(m[2]));
+               if (m[3].matched) f.set_restart_after_seconds(std::stod(m[3]));
+             });
   add_faults(s, "--cut", o.cuts, R"(@(?:tick:)?([0-9]+)-([0-9]+))", "AGENT@FROM-TO, e.g. --cut leader-1@80-180",
              [](Fault& f, const Match& m) {
                f.set_cut_from_tick(tick_of(m[2]));
@@ -346,7 +350,14 @@ std::vector<ProcessSpec> build_run_processes(const RunLaunch& l,
   }
   for (const auto& f : s.faults()) {
     for (ProcessSpec& p : procs) {
-      if (p.name == f.agent() && f.has_kill_at_tick()) p.killed_on_purpose = true;
+      if (p.name != f.agent() || !f.has_kill_at_tick()) continue;
+      p.killed_on_purpose = true;
+      if (f.has_restart_after_seconds()) {
+        // The GCS: started again, to resume from its journal (gcs/gcs_node.hpp "Restart").
+        p.restart_after = std::chrono::milliseconds(static_cast<long long>(1000 * f.restart_after_seconds()));
+        p.restart_argv = p.argv;
+        p.restart_argv.push_back("--resume");
+      }
     }
   }
   return procs;

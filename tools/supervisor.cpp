@@ -130,6 +130,8 @@ struct Child {
   int log_fd = -1;
   int out_fd = -1;  // read end of the stdout pipe (echo_stdout only)
   bool running = false;
+  std::optional<std::chrono::steady_clock::time_point> restart_at;  // killed on purpose: start again then
+  bool restarted = false;
 };
 
 void close_fd(int& fd) {
@@ -225,8 +227,10 @@ class Supervisor {
       begin_stop();
       return false;
     };
-    if (spec.argv.empty() || spec.argv[0].empty()) return fail_start("empty command line");
-    c.log_fd = ::open(spec.log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC,
+    const std::vector<std::string>& args = c.restarted && !spec.restart_argv.empty() ? spec.restart_argv : spec.argv;
+    if (args.empty() || args[0].empty()) return fail_start("empty command line");
+    close_fd(c.log_fd);
+    c.log_fd = ::open(spec.log_path.c_str(), O_WRONLY | O_CREAT | (c.restarted ? 0 : O_TRUNC) | O_APPEND | O_CLOEXEC,
                       0644);
     if (c.log_fd < 0) {
       return fail_start("cannot create its log " + spec.log_path + " (" + std::strerror(errno) +
@@ -242,8 +246,12 @@ class Supervisor {
       close_fd(out_pipe[1]);
       return fail_start(std::string("pipe: ") + std::strerror(errno));
     }
+    if (c.restarted) {
+      const std::string line = "--- " + spec.name + " started again (a planned restart) ---\n";
+      write_all(c.log_fd, line.data(), line.size());
+    }
     std::vector<char*> argv;
-    for (const std::string& a : spec.argv) argv.push_back(const_cast<char*>(a.c_str()));
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     const int stdout_fd = spec.echo_stdout ? out_pipe[1] : c.log_fd;
 
@@ -292,7 +300,7 @@ class Supervisor {
       while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
       }
       c.running = false;
-      return fail_start(spec.argv[0] + ": " + std::strerror(exec_errno));
+      return fail_start(args[0] + ": " + std::strerror(exec_errno));
     }
     return true;
   }
@@ -321,14 +329,16 @@ class Supervisor {
     }
   }
 
+  // A child waiting for its planned restart counts as running.
   bool any_running() const {
     return std::any_of(children_.begin(), children_.end(),
-                       [](const Child& c) { return c.running; });
+                       [](const Child& c) { return c.running || c.restart_at.has_value(); });
   }
 
   bool only_services_running() const {
-    return std::none_of(children_.begin(), children_.end(),
-                        [](const Child& c) { return c.running && !c.spec->service; });
+    return std::none_of(children_.begin(), children_.end(), [](const Child& c) {
+      return (c.running || c.restart_at.has_value()) && !c.spec->service;
+    });
   }
 
   // Copies what a child wrote to its stdout to ours and to its log. Returns false at EOF.
@@ -362,6 +372,9 @@ class Supervisor {
       // A service ends only when told to: ending by itself (even with status 0) is a failure.
       const bool failed = (!(WIFEXITED(status) && WEXITSTATUS(status) == 0) || (c.spec->service && !retiring_)) &&
                           !planned;
+      if (planned && c.spec->restart_after && !c.restarted && !stopping_) {
+        c.restart_at = Clock::now() + *c.spec->restart_after;
+      }
       if (failed && !stopping_) {
         result_.failed_name = c.spec->name;
         result_.log_path = c.spec->log_path;
@@ -388,6 +401,17 @@ class Supervisor {
                           " s; still running: " + names;
         begin_stop();
       }
+      for (Child& c : children_) {
+        if (!c.restart_at) continue;
+        if (stopping_) {
+          c.restart_at.reset();  // the run is ending: no restart
+        } else if (now >= *c.restart_at) {
+          c.restart_at.reset();
+          c.restarted = true;
+          close_fd(c.out_fd);
+          start_child(c);
+        }
+      }
       if (stopping_ && !killed_ && now >= kill_at_) {
         signal_running(SIGKILL);
         killed_ = true;
@@ -410,6 +434,9 @@ class Supervisor {
         wait = std::max(std::chrono::milliseconds(0), std::min(wait, left));
       };
       if (!stopping_ && deadline) until(*deadline);
+      for (const Child& c : children_) {
+        if (c.restart_at) until(*c.restart_at);
+      }
       if (stopping_ && !killed_) until(kill_at_);
       if (retiring_ && !killed_) until(retire_kill_at_);
 

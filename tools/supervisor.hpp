@@ -27,6 +27,7 @@
 #pragma once
 
 #include <chrono>
+#include <optional>
 #include <string>
 #include <sys/types.h>
 #include <vector>
@@ -40,6 +41,10 @@ struct ProcessSpec {
   bool echo_stdout = false;       // also copy the child's stdout to ours
   // Fault injection: this child is meant to be killed by SIGKILL; that death does not fail the run.
   bool killed_on_purpose = false;
+  // ... and started again this long after that death (once), with `restart_argv` (its log goes
+  // on, after a line that says so). Empty: not restarted.
+  std::optional<std::chrono::milliseconds> restart_after;
+  std::vector<std::string> restart_argv;
   // A service for the others (the DDS discovery server): it never ends by itself. Once every
   // other child has exited it gets SIGTERM (SIGKILL after the grace period), and how it ends then
   // does not count; ending before that fails the run like any child.

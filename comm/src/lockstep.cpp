@@ -69,7 +69,7 @@ Mailbox::~Mailbox() {
 }
 
 void Mailbox::arrive(const msgs::Stamp& stamp, std::uint32_t deliver_tick, double delay_ms, bool keep, int order,
-                     std::function<void()> run) {
+                     std::function<void()> run, std::function<std::string()> bytes) {
   const auto due = std::chrono::steady_clock::now() +
                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                        std::chrono::duration<double, std::milli>(delay_ms));
@@ -77,7 +77,7 @@ void Mailbox::arrive(const msgs::Stamp& stamp, std::uint32_t deliver_tick, doubl
     std::lock_guard<std::mutex> lock(mutex_);
     // Real time waits for nobody, so nothing is counted (the counts would only grow).
     if (!links_.realtime) (stamp.sender() == topology_.sim() ? sim_arrivals_ : agent_arrivals_).add(stamp.tick());
-    if (keep) held_.push_back({deliver_tick, due, order, stamp.sender(), stamp.seq(), std::move(run)});
+    if (keep) held_.push_back({deliver_tick, due, order, stamp.sender(), stamp.seq(), std::move(run), std::move(bytes)});
   }
   arrived_.notify_all();
 }
@@ -90,6 +90,32 @@ std::uint64_t Mailbox::Arrivals::count_before(std::uint32_t k) {
   std::uint64_t n = below;
   for (auto it = by_tick.begin(); it != by_tick.end() && it->first < k; ++it) n += it->second;
   return n;
+}
+
+void Mailbox::Arrivals::count_from(std::uint32_t k) {
+  by_tick.erase(by_tick.begin(), by_tick.lower_bound(k));
+  below = 0;
+  watermark = k;
+  floor = k;
+}
+
+void Mailbox::count_from(std::uint32_t k) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  agent_arrivals_.count_from(k);
+  sim_arrivals_.count_from(k);
+}
+
+void Mailbox::journal_to(const std::string& path, std::uint64_t keep_bytes) {
+  journal_ = std::make_unique<JournalWriter>(path, keep_bytes);
+  journaling_ = true;
+}
+
+void Mailbox::replay_message(int order, const std::string& bytes) {
+  if (order < 0 || static_cast<std::size_t>(order) >= readers_.size()) {
+    throw std::runtime_error(topology_.name_of(self_) + ": the journal names subscription " + std::to_string(order) +
+                             " of " + std::to_string(readers_.size()) + " (a journal of another build or role?)");
+  }
+  readers_[static_cast<std::size_t>(order)].replay(bytes);
 }
 
 void Mailbox::drop_malformed(const std::string& topic_family, AgentId sender, const std::string& why) {
@@ -154,7 +180,10 @@ void Mailbox::run_in_order(std::vector<Held>& due, Key key) {
     if (a.sender != b.sender) return a.sender < b.sender;
     return a.seq < b.seq;
   });
-  for (Held& h : due) h.run();
+  for (Held& h : due) {
+    if (journal_ && h.bytes) journal_->message(tick_, h.order, h.bytes());
+    h.run();
+  }
 }
 
 std::vector<std::uint32_t> Mailbox::take_sent_counts() {
@@ -256,7 +285,63 @@ void LockstepAgent::say_ready() {
   done_writer_->write(hello);
 }
 
+void LockstepAgent::wait_for_join() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  // The first clock heard is older than the one that admits this process: any earlier admission
+  // (counted_from) was a dead process's.
+  std::optional<std::uint32_t> first_heard;
+  auto admitted = [&]() -> std::optional<std::uint32_t> {
+    for (const auto& [tick, c] : clocks_) {
+      if (!first_heard) first_heard = tick;
+      if (c.stop()) return tick;
+      if (c.counted_from().size() > self_ && c.counted_from()[self_] > 0 && c.counted_from()[self_] >= *first_heard) {
+        return c.counted_from()[self_];
+      }
+    }
+    return std::nullopt;
+  };
+  const auto deadline = std::chrono::steady_clock::now() + stall_timeout();
+  std::optional<std::uint32_t> join;
+  while (!(join = admitted())) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      throw std::runtime_error(topology_.name_of(self_) + ": the simulator did not admit this restarted process in " +
+                               std::to_string(stall_timeout().count()) + " s");
+    }
+    lock.unlock();
+    say_ready();  // until the clock master has heard it
+    lock.lock();
+    arrived_.wait_for(lock, std::chrono::milliseconds(100));
+  }
+  clocks_.erase(clocks_.begin(), clocks_.lower_bound(*join));
+  next_tick_ = *join;
+  rejoining_ = false;
+  lock.unlock();
+  count_from(*join);
+  std::fprintf(stderr, "%s: joins the run again at tick %u\n", topology_.name_of(self_).c_str(), *join);
+}
+
+JournalRestart LockstepAgent::replay_journal(const std::string& path,
+                                             const std::function<void(const msgs::Clock&)>& step) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const JournalContents j = read_journal(path);
+  replaying_ = true;
+  for (const JournalTick& t : j.ticks) {
+    current_ = from_cdr<msgs::Clock>(t.clock);
+    tick_ = t.tick;
+    for (const JournalMessage& m : t.messages) replay_message(m.order, m.bytes);
+    step(current_);
+  }
+  replaying_ = false;
+  (void)take_sent_counts();
+  JournalRestart r{static_cast<std::uint32_t>(j.ticks.size()),
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
+  journal_to(path, j.complete_bytes);
+  journal_->restart(j.ticks.empty() ? 0 : j.ticks.back().tick, r);
+  return r;
+}
+
 const msgs::Clock* LockstepAgent::begin_tick() {
+  if (rejoining_) wait_for_join();
   {
     std::unique_lock<std::mutex> lock(mutex_);
     auto has_next = [&] {
@@ -291,6 +376,7 @@ const msgs::Clock* LockstepAgent::begin_tick() {
   if (current_.stop()) return nullptr;
   tick_ = current_.tick();
   next_tick_ = tick_ + 1;
+  if (journal_) journal_->clock(tick_, to_cdr(current_));
   deliver_due(tick_, current_.expected().at(self_));
   return &current_;
 }
@@ -301,6 +387,8 @@ void LockstepAgent::end_tick(bool mission_complete) {
   done.tick(tick_);
   done.sent(take_sent_counts());
   done.mission_complete(mission_complete);
+  // The tick is journalled whole before anyone hears it is done: a restart replays it.
+  if (journal_) journal_->tick_end(tick_);
   done_writer_->write(done);
 }
 
@@ -318,7 +406,10 @@ LockstepClock::LockstepClock(Bus& bus, const Topology& topology, const LinkTable
       lost_(topology.agents(), false),
       last_heard_(topology.agents(), std::chrono::steady_clock::now()),
       next_undone_(topology.agents(), 0),
-      leaders_(topology.leaders()) {
+      leaders_(topology.leaders()),
+      restarting_(topology.agents(), false),
+      counted_from_(topology.agents(), 0),
+      base_(topology.agents(), 0) {
   ready_[topology.sim()] = true;
   clock_writer_ = std::make_unique<Writer<msgs::Clock>>(bus, topic::kClock);
   // The agents' Done heartbeats, and the bus's verdict on their liveliness.
@@ -332,8 +423,23 @@ void LockstepClock::on_done(msgs::Done&& d, WriterId writer) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (d.agent() >= topology_.agents()) return;
     writer_agent_[writer] = d.agent();
+    const AgentId a = d.agent();
+    const bool newest = !writer_of_.count(a) || writer_of_[a] == writer;
+    if (d.tick() == kReadyTick && started_ && !newest && !restarting_[a]) {
+      // A new process of a running agent (Restart): waited for again from the next clock on.
+      // If DDS has not declared the old one lost yet, it is lost now.
+      if (!lost_[a]) losses_.push_back({a, next_undone_[a], 0.0, std::nullopt, false});
+      lost_[a] = true;
+      restarting_[a] = true;
+      writer_of_[a] = writer;
+      arrived_.notify_all();
+      return;
+    }
+    if (!writer_of_.count(a)) writer_of_[a] = writer;
+    if (!newest && d.tick() == kReadyTick) return;  // a restarted process repeating its hello
     last_heard_[d.agent()] = std::chrono::steady_clock::now();
-    if (lost_[d.agent()] && d.tick() != kReadyTick) {
+    if (lost_[d.agent()] && d.tick() != kReadyTick && !restarting_[a]) {
+      writer_of_[a] = writer;  // the same process, its session perhaps rediscovered
       // A lost agent that speaks again was cut off, not dead: its link healed. Waited for again.
       lost_[d.agent()] = false;
       for (auto it = losses_.rbegin(); it != losses_.rend(); ++it) {
@@ -365,8 +471,9 @@ void LockstepClock::on_liveliness_lost(WriterId writer) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     auto it = writer_agent_.find(writer);
-    // After the stop every agent leaves; that is not a loss.
+    // After the stop every agent leaves; that is not a loss. Nor is a restarted agent's old process.
     if (stopped_ || it == writer_agent_.end() || lost_[it->second]) return;
+    if (writer_of_.count(it->second) && writer_of_[it->second] != writer) return;
     lost_[it->second] = true;
     const double waited =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - last_heard_[it->second]).count();
@@ -443,12 +550,28 @@ void LockstepClock::publish_clock(std::uint32_t k, const std::vector<msgs::Robot
   std::vector<std::uint32_t> expected(topology_.agents(), 0);
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    started_ = true;
     for (int a = 0; a < topology_.agents(); ++a) {
+      if (restarting_[a]) {
+        // A restarted process joins now: it counts the messages stamped from k on, and so do we
+        // (every Done of tick k - 1 is in: the agents' messages stamped before k are counted).
+        restarting_[a] = false;
+        lost_[a] = false;
+        counted_from_[a] = k;
+        base_[a] = from_agents_[a] + from_sim_[a];
+        for (auto it = losses_.rbegin(); it != losses_.rend(); ++it) {
+          if (it->agent != a) continue;
+          it->rejoined_tick = k;
+          it->restarted = true;
+          break;
+        }
+      }
       from_sim_[a] += sent[a];
-      expected[a] = static_cast<std::uint32_t>(from_agents_[a] + from_sim_[a]);
+      expected[a] = static_cast<std::uint32_t>(from_agents_[a] + from_sim_[a] - base_[a]);
     }
   }
   clock.expected(expected);
+  clock.counted_from(counted_from_);
   clock.robots(robots);
   leaders_ = next_leaders(topology_, leaders_, robots);
   clock.leaders(leaders_);

@@ -38,6 +38,8 @@ void add_role_flags(CLI::App& app, RoleOptions& o, RoleKind kind) {
   }
   if (kind == RoleKind::Gcs) {
     app.add_option("--progress", o.progress, "progress display")->check(CLI::IsMember({"bar", "plain", "none"}));
+    app.add_flag("--resume", o.resume,
+                 "a restarted GCS: rebuild the state from RUN_DIR's journal, then rejoin the running mission");
   }
 }
 

@@ -174,13 +174,33 @@ std::optional<std::pair<long, long>> robot_name(const std::string& name) {
 void validate_fault(Problems& p, const Scenario& s, int index) {
   const auto& f = s.faults(index);
   const std::string field = "faults[" + std::to_string(index) + "]";
+  if (f.agent() == "gcs") {
+    // The ground station can only be killed to be restarted: without it no mission completes.
+    if (!f.has_kill_at_tick() || !f.has_restart_after_seconds() || f.has_cut_from_tick() || f.has_cut_to_tick() ||
+        f.has_freeze_at_tick()) {
+      p.add(field, "kill the GCS with a restart: kill_at_tick and restart_after_seconds (--kill gcs@T+S)",
+            f.has_kill_at_tick() && !f.has_restart_after_seconds() ? "a kill without restart_after_seconds"
+                                                                    : "another fault");
+      return;
+    }
+    p.at_least(field + ".kill_at_tick", 1, f.kill_at_tick());
+    if (!(f.restart_after_seconds() > 0 && f.restart_after_seconds() < 30)) {
+      p.add(field + ".restart_after_seconds", "be more than 0 and less than 30 (the DDS participant lease)",
+            num(f.restart_after_seconds()));
+    }
+    return;
+  }
+  if (f.has_restart_after_seconds()) {
+    p.add(field + ".restart_after_seconds", "be given for the GCS only (a robot's process is not restarted)",
+          "\"" + f.agent() + "\"");
+  }
   const auto who = robot_name(f.agent());
   const bool member = who && who->second >= 1 && who->second < static_cast<long>(s.robots_per_group());
   const bool known = who && who->first < static_cast<long>(s.groups()) && (who->second == 0 || member);
   if (!known) {
     p.add(field + ".agent",
           "name a robot of this run: leader-G (G < " + std::to_string(s.groups()) + ") or member-G-I (1 <= I < " +
-              std::to_string(s.robots_per_group()) + ")",
+              std::to_string(s.robots_per_group()) + "), or gcs",
           "\"" + f.agent() + "\"");
     return;
   }

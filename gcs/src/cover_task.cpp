@@ -153,6 +153,8 @@ void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cell
 
 void CoverGcsTask::on_report(const msgs::TaskReport& r, GcsContext&) {
   if (r.group() < group_done_.size() && r.state() == comm::task::kDone) group_done_[r.group()] = true;
+  // Cells a leader knows covered (after a restart of the GCS, which missed the clocks meanwhile).
+  for (const planner::Cell c : comm::from_xy(r.xy())) tracker_.mark(c);
 }
 
 void CoverGcsTask::step(GcsContext& ctx) {

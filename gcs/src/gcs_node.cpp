@@ -157,10 +157,37 @@ void GcsNode::record_phase(std::uint32_t tick, bool ended, bool complete) {
   record_.append(f);
 }
 
+std::string journal_path(const std::string& run_dir) { return run_dir + "/gcs.journal"; }
+
+namespace {
+std::string start_time_path(const std::string& run_dir) { return run_dir + "/gcs.start"; }
+}  // namespace
+
+void GcsNode::resumed(std::vector<comm::JournalRestart> restarts) {
+  restarts_ = std::move(restarts);
+  rejoining_ = true;
+  long long ms = 0;
+  if (std::ifstream in(start_time_path(run_dir_)); in >> ms) {
+    first_tick_time_ = std::chrono::system_clock::time_point(std::chrono::milliseconds(ms));
+  }
+  std::fprintf(stderr, "gcs: resumed: %u ticks of the journal replayed in %.3f s\n",
+               restarts_.empty() ? 0u : restarts_.back().replayed_ticks, restarts_.empty() ? 0.0 : restarts_.back().seconds);
+}
+
 bool GcsNode::step(const msgs::Clock& clock) {
-  const auto now = std::chrono::steady_clock::now();
-  if (clock.tick() == 0) first_tick_time_ = now;
-  last_tick_time_ = now;
+  const bool live = !agent_.replaying();
+  const auto now = std::chrono::system_clock::now();
+  if (clock.tick() == 0 && live) {
+    first_tick_time_ = now;
+    std::ofstream(start_time_path(run_dir_))
+        << std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() << "\n";
+  }
+  if (live) last_tick_time_ = now;
+  if (live && rejoining_) {
+    // Back in the run: the leaders were not silent, this process was; hear them from now on.
+    rejoining_ = false;
+    std::fill(last_heard_.begin(), last_heard_.end(), clock.tick());
+  }
   last_tick_ = clock.tick();
   leaders_.observe(clock);
 
@@ -184,7 +211,12 @@ bool GcsNode::step(const msgs::Clock& clock) {
   for (const auto& st : statuses_) tasks_[phase_]->on_group_status(st, ctx);
   statuses_.clear();
   for (const auto& r : task_reports_) {
-    if (r.phase() == phase_) tasks_[phase_]->on_report(r, ctx);
+    if (r.phase() != phase_) continue;
+    try {
+      tasks_[phase_]->on_report(r, ctx);  // decodes the report's cells
+    } catch (const std::exception& e) {
+      agent_.drop_malformed(comm::topic::kTaskReport, r.header().sender(), e.what());
+    }
   }
   task_reports_.clear();
   if (!complete_tick_ && !gave_up_) {
@@ -224,8 +256,10 @@ bool GcsNode::step(const msgs::Clock& clock) {
   }
   const ProgressLine line = tasks_[phase_]->progress(ctx);
   const std::string task = config::task_name(config::task_of(phases_[phase_]));
-  progress_.update(clock.tick(), phases_.size() > 1 ? task + " " + line.label : line.label, line.fraction,
-                   line.detail, note);
+  if (live) {
+    progress_.update(clock.tick(), phases_.size() > 1 ? task + " " + line.label : line.label, line.fraction,
+                     line.detail, note);
+  }
   return complete_tick_.has_value() || gave_up_.has_value();
 }
 
@@ -351,6 +385,19 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
     m.leader_handovers.push_back(h);
   }
   m.messages_from_deposed_leaders = not_from_a_leader_;
+  // The GCS's own restarts: the simulator saw it stop and come back; the journal says what each
+  // new process replayed. The n-th of each is the n-th restart.
+  std::size_t nth = 0;
+  for (const auto& l : sim.agents_lost) {
+    if (l.agent != t.name_of(t.gcs())) continue;
+    record::GcsRestart r{l.missed_tick, l.detection_seconds, l.rejoined_tick, 0, 0.0};
+    if (nth < restarts_.size()) {
+      r.replayed_ticks = restarts_[nth].replayed_ticks;
+      r.replay_seconds = restarts_[nth].seconds;
+    }
+    ++nth;
+    m.gcs_restarts.push_back(r);
+  }
   m.planning_ms_per_group_round =
       mission_.round() > 0 ? 1000.0 * m.planning_seconds_total / (mission_.round() * t.groups()) : 0.0;
   m.explored_curve = sim.explored_curve;

@@ -418,6 +418,12 @@ void CollectGroupTask::step(GroupContext& ctx) {
   reported_ = true;
 }
 
+void CollectGroupTask::gcs_back(GroupContext&) {
+  // What is known of every object, and the group's done, again.
+  for (auto& t : told_) t = {-1, -1, -1};
+  reported_ = false;
+}
+
 nlohmann::json CollectGroupTask::numbers() const {
   nlohmann::json per_robot = nlohmann::json::array();
   for (const Robot& r : robots_) {

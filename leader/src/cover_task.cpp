@@ -120,6 +120,23 @@ void CoverGroupTask::member_back(int, GroupContext& ctx) {
   if (have_share_ && !tracker_.complete()) divide(ctx, "member back");
 }
 
+void CoverGroupTask::gcs_back(GroupContext& ctx) {
+  // The GCS judges coverage from the robots' cells in the clocks it heard: the share's cells
+  // covered while it was down, and the group's done, again.
+  if (!have_share_) return;
+  const std::vector<std::uint8_t> left = tracker_.uncovered();
+  std::vector<Cell> covered;
+  const auto& target = tracker_.target();
+  for (std::size_t i = 0; i < target.size(); ++i) {
+    if (target[i] && !left[i]) covered.push_back(ctx.map.group().cell_of(static_cast<int>(i)));
+  }
+  msgs::TaskReport report;
+  report.state(comm::task::kWorking);
+  report.xy(comm::to_xy(covered));
+  ctx.out.report(report);
+  reported_done_ = false;
+}
+
 void CoverGroupTask::step(GroupContext& ctx) {
   tick_ = ctx.clock.tick();
   if (!have_share_) return;

@@ -101,6 +101,16 @@ void ExploreGroupTask::finish_step(GroupContext& ctx) {
   }
 }
 
+void ExploreGroupTask::gcs_back(GroupContext& ctx) {
+  // The round's arrival, if the GCS may have missed it.
+  if (round_ > 0 && group_reported_) {
+    msgs::GroupStatus status;
+    status.group(static_cast<std::uint16_t>(ctx.group));
+    status.round(round_);
+    ctx.out.group_status(status);
+  }
+}
+
 nlohmann::json ExploreGroupTask::numbers() const {
   return {{"rounds_planned", rounds_planned_},
           {"case_a_rounds", case_a_},

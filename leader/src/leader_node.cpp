@@ -263,6 +263,15 @@ void LeaderNode::step(const msgs::Clock& clock) {
     taking_over_ = false;
   }
   track_members(ctx);
+  // The GCS restarted (Clock.counted_from, comm/lockstep.hpp "Restart"): what it missed, again.
+  if (const auto& from = clock.counted_from(); from.size() > topology_.gcs() && from[topology_.gcs()] > gcs_back_at_) {
+    gcs_back_at_ = from[topology_.gcs()];
+    const auto all = known_cells(map_.group());
+    to_gcs_.insert(to_gcs_.end(), all.begin(), all.end());
+    tasks_[phase_]->gcs_back(ctx);
+    std::fprintf(stderr, "%s: the GCS is back at tick %u; sent it the group map again\n",
+                 topology_.name_of(agent_.self()).c_str(), clock.tick());
+  }
   msgs::Heartbeat beat;
   beat.group(static_cast<std::uint16_t>(group_));
   heartbeat_.send(beat);

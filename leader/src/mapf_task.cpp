@@ -214,6 +214,13 @@ void MapfGroupTask::step(GroupContext& ctx) {
   ctx.out.report(r);
 }
 
+void MapfGroupTask::gcs_back(GroupContext&) {
+  // Every robot's progress and release, and the group's done or held, again.
+  if (!have_plan_) return;
+  for (int k : own_) note(k);
+  reported_done_ = reported_held_ = false;
+}
+
 nlohmann::json MapfGroupTask::numbers() const {
   return {{"plans", plans_taken_}, {"releases_sent", releases_sent_}};
 }

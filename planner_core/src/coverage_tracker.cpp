@@ -23,19 +23,20 @@ int CoverageTracker::visit(Cell c) {
   int fresh = 0;
   for (int dy = -radius_; dy <= radius_; ++dy) {
     for (int dx = -radius_; dx <= radius_; ++dx) {
-      if (dx * dx + dy * dy > radius_ * radius_) continue;
-      const int x = c.x + dx, y = c.y + dy;
-      if (x < 0 || y < 0 || x >= width_ || y >= height_) continue;
-      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
-      if (!free_[i] || covered_[i]) continue;
-      covered_[i] = 1;
-      if (target_[i]) {
-        ++covered_target_;
-        ++fresh;
-      }
+      if (dx * dx + dy * dy <= radius_ * radius_) fresh += mark({c.x + dx, c.y + dy});
     }
   }
   return fresh;
+}
+
+int CoverageTracker::mark(Cell c) {
+  if (c.x < 0 || c.y < 0 || c.x >= width_ || c.y >= height_) return 0;
+  const std::size_t i = static_cast<std::size_t>(c.y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(c.x);
+  if (!free_[i] || covered_[i]) return 0;
+  covered_[i] = 1;
+  if (!target_[i]) return 0;
+  ++covered_target_;
+  return 1;
 }
 
 bool CoverageTracker::is_covered(Cell c) const {

@@ -187,6 +187,14 @@ json to_json(const RunMetrics& m) {
                          {"leaderless_ticks", opt(h.leaderless_ticks)},
                          {"detection_seconds", opt(h.detection_seconds)}});
   }
+  json restarts = json::array();
+  for (const auto& r : m.gcs_restarts) {
+    restarts.push_back({{"stopped_at_tick", opt(r.stopped_at_tick)},
+                        {"detection_seconds", opt(r.detection_seconds)},
+                        {"rejoined_at_tick", opt(r.rejoined_at_tick)},
+                        {"replayed_ticks", r.replayed_ticks},
+                        {"replay_seconds", r.replay_seconds}});
+  }
   json phases = json::array();
   for (const auto& p : m.phases) {
     phases.push_back({{"name", p.name},
@@ -228,6 +236,7 @@ json to_json(const RunMetrics& m) {
            {{"agents_lost", lost},
             {"unreachable", unreachable},
             {"leader_handovers", handovers},
+            {"gcs_restarts", restarts},
             {"messages_from_deposed_leaders", m.messages_from_deposed_leaders}}},
           {"motion", to_json(m.motion)},
           {"phases", phases},
@@ -313,6 +322,14 @@ RunMetrics metrics_from_json(const json& j, const std::string& source) {
                                   hf.optional<std::uint32_t>("leaderless_ticks"),
                                   hf.optional<double>("detection_seconds")});
   }
+  if (faults.raw().contains("gcs_restarts")) {  // since the GCS restart
+    for (const json& r : faults.at("gcs_restarts")) {
+      const Fields rf(r, faults.where() + ".gcs_restarts[]");
+      m.gcs_restarts.push_back({rf.optional<std::uint32_t>("stopped_at_tick"), rf.optional<double>("detection_seconds"),
+                                rf.optional<std::uint32_t>("rejoined_at_tick"), rf.get<std::uint32_t>("replayed_ticks"),
+                                rf.number("replay_seconds")});
+    }
+  }
   m.motion = motion_from_json(f.at("motion"), source + ".motion");
   for (const json& p : f.at("phases")) {
     const Fields pf(p, source + ".phases[]");
@@ -364,7 +381,8 @@ json to_json(const SimReport& r) {
     losses.push_back({{"agent", l.agent},
                       {"missed_tick", l.missed_tick},
                       {"detection_seconds", l.detection_seconds},
-                      {"rejoined_tick", opt(l.rejoined_tick)}});
+                      {"rejoined_tick", opt(l.rejoined_tick)},
+                      {"restarted", l.restarted}});
   }
   return {{"last_tick", r.last_tick},
           {"steps_to_99", opt(r.steps_to_99)},
@@ -394,7 +412,8 @@ SimReport sim_report_from_json(const json& j, const std::string& process) {
   for (const json& l : f.at("agents_lost")) {
     const Fields lf(l, f.where() + ".agents_lost[]");
     r.agents_lost.push_back({lf.get<std::string>("agent"), lf.get<std::uint32_t>("missed_tick"),
-                             lf.number("detection_seconds"), lf.optional<std::uint32_t>("rejoined_tick")});
+                             lf.number("detection_seconds"), lf.optional<std::uint32_t>("rejoined_tick"),
+                             l.contains("restarted") && lf.get<bool>("restarted")});
   }
   return r;
 }

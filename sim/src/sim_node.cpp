@@ -1,6 +1,8 @@
 #include "swarm/sim/sim_node.hpp"
 
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -38,6 +40,14 @@ SimNode::SimNode(comm::LockstepClock& clock, const comm::RoleSetup& setup)
       robot_cells_(setup.world.robot_cells),
       seed_(setup.world.scenario.seed()) {
   const comm::Topology& t = setup.topology;
+  // Lockstep has no wall time, but a GCS that is down comes back after wall seconds: while it is
+  // lost, mission time passes at the real-time rate (tick_ms), so its outage lasts as many ticks
+  // as it would in real time, rather than as many as the machine can run.
+  for (const auto& f : setup.world.scenario.faults()) {
+    if (f.agent() == "gcs" && f.has_restart_after_seconds() && !setup.world.scenario.realtime()) {
+      pace_while_gcs_lost_ = std::chrono::milliseconds(setup.world.scenario.tick_ms());
+    }
+  }
   for (comm::AgentId r : t.robot_ids()) {
     sense_.push_back(&clock.advertise<msgs::Sense>(topic::sense(r), LinkClass::SimRobot, {r}));
   }
@@ -189,6 +199,9 @@ void SimNode::begin_tick(std::uint32_t k) {
 
 bool SimNode::end_tick(std::uint32_t k) {
   complete_ = clock_.wait_done(k);
+  if (pace_while_gcs_lost_.count() > 0 && clock_.is_lost(clock_.topology().gcs())) {
+    std::this_thread::sleep_for(pace_while_gcs_lost_);
+  }
   last_tick_ = k;
   if (!complete_ && k + 1 < max_ticks_) return false;
   curve_.emplace_back(k, world_.explored_fraction());
@@ -232,7 +245,7 @@ std::string SimNode::report_json() const {
     r.phases.push_back({p.index, p.task, p.start_tick, p.motion, p.judge});
   }
   for (const auto& l : clock_.losses()) {
-    r.agents_lost.push_back({clock_.topology().name_of(l.agent), l.tick, l.detection_seconds, l.rejoined_tick});
+    r.agents_lost.push_back({clock_.topology().name_of(l.agent), l.tick, l.detection_seconds, l.rejoined_tick, l.restarted});
   }
   return record::to_json(r).dump();
 }

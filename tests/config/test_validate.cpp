@@ -97,7 +97,13 @@ INSTANTIATE_TEST_SUITE_P(
                    "(got -1)"},
         Impossible{"faults { agent: \"member-3-1\" kill_at_tick: 5 }",
                    "t.pbtxt: field faults[0].agent: must name a robot of this run: leader-G (G < 3) or "
-                   "member-G-I (1 <= I < 3) (got \"member-3-1\")"},
+                   "member-G-I (1 <= I < 3), or gcs (got \"member-3-1\")"},
+        Impossible{"faults { agent: \"gcs\" kill_at_tick: 5 }",
+                   "t.pbtxt: field faults[0]: must kill the GCS with a restart: kill_at_tick and "
+                   "restart_after_seconds (--kill gcs@T+S) (got a kill without restart_after_seconds)"},
+        Impossible{"faults { agent: \"member-0-1\" kill_at_tick: 5 restart_after_seconds: 2 }",
+                   "t.pbtxt: field faults[0].restart_after_seconds: must be given for the GCS only (a robot's "
+                   "process is not restarted) (got \"member-0-1\")"},
         Impossible{"leader_standbys: 0 faults { agent: \"leader-1\" kill_at_tick: 5 }",
                    "t.pbtxt: field faults[0].agent: must be a member to be killed: with no standby leader "
                    "(leader_standbys 0, or a group of one robot) a group cannot lose its leader (got leader-1)"},

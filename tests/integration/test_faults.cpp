@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "run_swarm.hpp"
+#include "swarm/record/record.hpp"
+#include "swarm_test/files.hpp"
 
 namespace swarm::test {
 namespace {
@@ -140,6 +142,42 @@ TEST(Faults, KilledLeaderIsReplacedByItsStandbyAndTheMissionCompletes) {
 }
 
 // Real-time mode: wall-rate ticks and millisecond delays; the metrics carry the same fields.
+// The last fused map a run recorded (run.pb's last MapVersion frame).
+std::string last_map(const std::string& run_dir) {
+  std::string rle;
+  for (const auto& f : record::read_record(run_dir + "/run.pb")) {
+    if (f.has_map()) rle = f.map().rle();
+  }
+  return rle;
+}
+
+// The GCS's process is killed at tick 40 and started again 2 s later: it rebuilds its state from
+// its journal (40 ticks replayed), the simulator admits it back, the leaders send it their group
+// maps again, and the mission completes with the same explored map as without the fault. The run
+// record is one valid file (read whole here), rewritten by the new process from tick 0.
+TEST(Faults, KilledGcsIsRestartedAndTheMissionCompletesWithTheSameMap) {
+  const std::string base = fresh_dir("kill_gcs");
+  const CommandResult plain = run_swarm(kSmall + " --out " + base + "/plain");
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  const CommandResult r = run_swarm(kSmall + " --kill gcs@40+2 --out " + base + "/restart");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto m = read_json(base + "/restart/metrics.json");
+  EXPECT_TRUE(m["complete"].get<bool>());
+  EXPECT_GE(m["explored_fraction"].get<double>(), 0.99);
+  const auto& restarts = m["faults"]["gcs_restarts"];
+  ASSERT_EQ(restarts.size(), 1u) << restarts;
+  EXPECT_EQ(restarts[0]["stopped_at_tick"], 40);
+  EXPECT_EQ(restarts[0]["replayed_ticks"], 40);
+  EXPECT_GT(restarts[0]["rejoined_at_tick"].get<int>(), 40);
+  EXPECT_TRUE(m["reports_missing"].empty()) << m["reports_missing"];
+  // Nothing lost: the final fused map is the fault-free run's, cell for cell.
+  const std::string restarted = last_map(base + "/restart");
+  ASSERT_FALSE(restarted.empty());
+  EXPECT_EQ(restarted, last_map(base + "/plain"));
+  EXPECT_NE(slurp(base + "/restart/logs/gcs.log").find("gcs: resumed: 40 ticks of the journal replayed"),
+            std::string::npos);
+}
+
 TEST(RealTime, SmallMissionCompletes) {
   const std::string dir = fresh_dir("realtime") + "/run";
   const CommandResult r = run_swarm(kSmall + " --realtime --tick-ms 20 --out " + dir);

@@ -28,6 +28,13 @@
 // readers have matched their writers (subscribe's `writers`), and it repeats the announcement
 // until the first clock comes (the simulator's reader may be the late side).
 //
+// Restart: a process that dies can be started again as the same agent. It first replays its input
+// journal (journal.hpp, written by journal_to()) to rebuild the old process's state, its sends
+// muted, then announces itself again (rejoin()). The clock master takes a Ready from a new writer
+// of a running agent for a restart: from its next clock J on it waits for the agent again and
+// counts its messages afresh (Clock.counted_from[a] = J; expected[a] = the messages stamped from J
+// on), and the new process counts only those too, so neither needs what the dead one had heard.
+//
 // Real-time mode (LinkTable::realtime, for deployment): the clock ticks at a fixed wall rate and
 // waits for nobody; messages are held for their link's delay in milliseconds; an agent that falls
 // behind skips to the newest tick. Runs are then not reproducible, by nature.
@@ -48,7 +55,9 @@
 #include <thread>
 #include <vector>
 
+#include "swarm/comm/cdr.hpp"
 #include "swarm/comm/endpoint.hpp"
+#include "swarm/comm/journal.hpp"
 #include "swarm/comm/link.hpp"
 #include "swarm/comm/topology.hpp"
 #include "swarm/comm/traffic.hpp"
@@ -100,6 +109,11 @@ class Mailbox {
   // the nodes, which decode some messages after the handler queued them.
   void drop_malformed(const std::string& topic_family, AgentId sender, const std::string& why);
   std::uint64_t malformed_messages() const { return malformed_; }
+  // From now on every message handed to a handler is kept in the journal at `path` (cut first to
+  // `keep_bytes`: see JournalWriter), and LockstepAgent adds each tick's clock and end.
+  void journal_to(const std::string& path, std::uint64_t keep_bytes = 0);
+  // While replaying a journal: sends are counted and numbered but not written.
+  bool replaying() const { return replaying_; }
   const Topology& topology() const { return topology_; }
   TrafficAccount& traffic() { return traffic_; }
   Bus& bus() { return bus_; }
@@ -115,6 +129,13 @@ class Mailbox {
   // Every outlet sees its readers and every reader its writers (see Start-up above).
   bool outlets_matched(std::string* missing) const;
   std::uint64_t arrivals_counted_for(std::uint32_t k);  // caller holds mutex_
+  // A restarted process joins at tick k: only messages stamped from k on count (caller: no lock).
+  void count_from(std::uint32_t k);
+  // Hands a journalled message to the handler of subscription `order`, as on arrival.
+  void replay_message(int order, const std::string& bytes);
+  std::unique_ptr<JournalWriter> journal_;
+  std::atomic<bool> journaling_{false};
+  bool replaying_ = false;
 
   Bus& bus_;
   Topology topology_;
@@ -136,12 +157,14 @@ class Mailbox {
     AgentId sender;
     std::uint32_t seq;
     std::function<void()> run;
+    std::function<std::string()> bytes;  // the message's CDR, when journalling
   };
   struct ReaderEntry {
     std::shared_ptr<void> reader;
     std::function<int()> matched;
     int writers;
     std::string name;
+    std::function<void(const std::string&)> replay;  // a journalled message to the handler
   };
   struct OutletBase {
     virtual ~OutletBase() = default;
@@ -155,12 +178,12 @@ class Mailbox {
   // Runs them in the one deterministic order: `key` (deliver tick, or due time in real time),
   // then subscription order, sender, sequence number.
   template <class Key>
-  static void run_in_order(std::vector<Held>& due, Key key);
+  void run_in_order(std::vector<Held>& due, Key key);
 
   // Counts one arrival for the barrier; keeps it for delivery (at deliver_tick in lockstep, after
   // delay_ms in real time) unless the link dropped it.
   void arrive(const msgs::Stamp& stamp, std::uint32_t deliver_tick, double delay_ms, bool keep, int order,
-              std::function<void()> run);
+              std::function<void()> run, std::function<std::string()> bytes);
 
   std::vector<Held> held_;
   std::uint64_t malformed_ = 0;
@@ -169,9 +192,13 @@ class Mailbox {
   struct Arrivals {
     std::uint64_t below = 0;  // arrivals stamped before `watermark`
     std::uint32_t watermark = 0;
+    std::uint32_t floor = 0;  // arrivals stamped before it are not counted (a restarted process)
     std::map<std::uint32_t, std::uint64_t> by_tick;
-    void add(std::uint32_t tick) { tick < watermark ? ++below : ++by_tick[tick]; }
+    void add(std::uint32_t tick) {
+      if (tick >= floor) tick < watermark ? ++below : ++by_tick[tick];
+    }
     std::uint64_t count_before(std::uint32_t k);  // folds every tick < k into `below`
+    void count_from(std::uint32_t k);              // forgets every arrival stamped before k
   };
   Arrivals agent_arrivals_;  // from agents: due before acting at k if stamped < k
   Arrivals sim_arrivals_;    // from the sim: due if stamped <= k
@@ -204,12 +231,13 @@ class Mailbox::Outlet : public Mailbox::OutletBase {
     s.deliver_tick(box_.link_sender_.deliver_tick(link_, box_.tick_, bytes, topic_hash_, seq_,
                                                   box_.self_ == box_.topology_.sim()));
     ++seq_;
+    box_.traffic_.sent(family_, link_name(link_), bytes, receivers_.size());
+    if (box_.replaying_) return;  // the old process sent it (and the clock master counted it)
     writer_.write(msg);
     {
       std::lock_guard<std::mutex> lock(box_.mutex_);
       for (AgentId r : receivers_) box_.sent_counts_[r] += 1;
     }
-    box_.traffic_.sent(family_, link_name(link_), bytes, receivers_.size());
   }
   int matched() const override { return writer_.matched(); }
   int expected_readers() const override { return static_cast<int>(receivers_.size()); }
@@ -253,6 +281,8 @@ void Mailbox::subscribe(const std::string& topic_name, LinkClass link, std::func
         const std::uint32_t deliver =
             after_cuts(links_, link, h.sender(), self_, h.tick(), h.deliver_tick() + retry_ticks);
         auto shared = std::make_shared<T>(std::move(msg));
+        std::function<std::string()> cdr;
+        if (journaling_) cdr = [shared] { return to_cdr(*shared); };
         arrive(shared->header(), deliver, delay_ms, !dropped, order, [this, handler, shared, family] {
           // A message that does not decode (a peer's bug, or bytes from outside the swarm) is
           // dropped with a log line; the process goes on.
@@ -261,9 +291,18 @@ void Mailbox::subscribe(const std::string& topic_name, LinkClass link, std::func
           } catch (const std::exception& e) {
             drop_malformed(family, shared->header().sender(), e.what());
           }
-        });
+        }, std::move(cdr));
       });
-  readers_.push_back({reader, [reader] { return reader->matched(); }, writers, topic_name});
+  auto replay = [this, handler, family, link](const std::string& bytes) {
+    const T msg = from_cdr<T>(bytes);
+    traffic_.received(family, link_name(link), wire_size(msg), 0, false);
+    try {
+      handler(msg);
+    } catch (const std::exception& e) {
+      drop_malformed(family, msg.header().sender(), e.what());
+    }
+  };
+  readers_.push_back({reader, [reader] { return reader->matched(); }, writers, topic_name, std::move(replay)});
 }
 
 template <class T>
@@ -301,8 +340,18 @@ class LockstepAgent : public Mailbox {
   // The clock of the tick being processed, already while its due messages' handlers run.
   const msgs::Clock& clock() const { return current_; }
 
+  // A restarted process (see Restart above), before announce_ready: runs `step` on every complete
+  // tick of the journal at `path` with its messages handed to their handlers, sends muted; then
+  // journals on after them (journal_to) and marks the restart. Returns what it replayed.
+  JournalRestart replay_journal(const std::string& path, const std::function<void(const msgs::Clock&)>& step);
+  // This process is a new one of an agent that was running: its first tick is the one the clock
+  // master names it back at (Clock.counted_from), and it counts only messages from then on.
+  void rejoin() { rejoining_ = true; }
+
  private:
   void say_ready();
+  void wait_for_join();  // a rejoining process: until the clock that admits it is here
+  bool rejoining_ = false;
 
   std::unique_ptr<Writer<msgs::Done>> done_writer_;
   std::unique_ptr<Reader<msgs::Clock>> clock_reader_;
@@ -327,6 +376,7 @@ struct AgentLoss {
   std::uint32_t tick = 0;
   double detection_seconds = 0;
   std::optional<std::uint32_t> rejoined_tick;
+  bool restarted = false;  // it came back as a new process (see Restart above), not a healed link
 };
 
 // The simulator's side: it owns the clock and the barrier counts.
@@ -373,6 +423,13 @@ class LockstepClock : public Mailbox {
   std::vector<std::chrono::steady_clock::time_point> last_heard_;  // per agent: its latest Done
   std::vector<std::uint32_t> next_undone_;                          // per agent: tick after its latest Done
   std::vector<AgentId> leaders_;  // each group's leader in the latest clock (leadership.hpp)
+  // Restarts: each agent's current writer of Done (an older one is a dead process), whether a new
+  // process waits to be admitted, and from which tick and which count on each one's counts run.
+  std::map<AgentId, WriterId> writer_of_;
+  std::vector<bool> restarting_;
+  std::vector<std::uint32_t> counted_from_;
+  std::vector<std::uint64_t> base_;
+  bool started_ = false;  // the first clock is out
 };
 
 }  // namespace swarm::comm

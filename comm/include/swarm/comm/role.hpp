@@ -39,6 +39,7 @@ struct RoleOptions {
   int group = -1;              // leader, member
   std::vector<int> indices;    // member: the robots this process runs (1..robots_per_group-1)
   std::string progress = "plain";  // gcs: bar | plain | none
+  bool resume = false;             // gcs: a restarted process: replays its journal, then rejoins
 };
 
 void add_role_flags(CLI::App& app, RoleOptions& options, RoleKind kind);

@@ -3,6 +3,15 @@
 // planning rounds, coverage's division, ...), starts the next phase when one is done, declares the
 // mission complete after the last, shows progress, records the run (run.pb) and, once the
 // simulator stops the run, gathers every agent's report into metrics.json.
+//
+// Restart (issue 11): the GCS keeps what it needs to resume as the run goes: its input journal
+// (journal_path(): every clock and every message its handlers got, comm/journal.hpp) and the wall
+// time of tick 0. A process started with --resume (swarm run --kill gcs@T+S starts one S seconds
+// after the kill) replays the journal through the same node (lockstep: the same inputs give the
+// same state; its sends are muted, and run.pb, rewritten from the start, comes out the same as
+// the dead process's), then rejoins the run at the tick the simulator admits it (comm/lockstep.hpp
+// "Restart"). What it did not hear meanwhile, the leaders send it again when they see it back
+// (Clock.counted_from: the whole group map, and each task's state, GroupTask::gcs_back).
 #pragma once
 
 #include <chrono>
@@ -31,6 +40,9 @@ class GcsNode {
           Progress::Style progress);
   // One tick; returns true once the mission is over: complete, or a phase given up.
   bool step(const msgs::Clock& clock);
+  // A restarted process, after its journal was replayed: `restarts` are every restart's replay so
+  // far (this one last), for metrics.json.
+  void resumed(std::vector<comm::JournalRestart> restarts);
   // After the run stopped: waits up to `wait` for the living agents' reports, writes metrics.json
   // and closes run.pb. Throws std::runtime_error naming what is missing when the simulator's
   // report (the ground truth the run is judged by) did not come or lacks a key.
@@ -73,8 +85,14 @@ class GcsNode {
   std::uint32_t last_tick_ = 0;
   std::optional<std::uint32_t> complete_tick_;
   std::optional<std::string> gave_up_;  // why the current phase was given up (the mission is over)
-  std::chrono::steady_clock::time_point first_tick_time_{};
-  std::chrono::steady_clock::time_point last_tick_time_{};
+  // Wall time (system clock: a restarted process reads tick 0's from the run directory).
+  std::chrono::system_clock::time_point first_tick_time_{};
+  std::chrono::system_clock::time_point last_tick_time_{};
+  std::vector<comm::JournalRestart> restarts_;
+  bool rejoining_ = false;  // resumed, and not yet at its first tick back in the run
 };
+
+// Where the GCS of run `run_dir` keeps its input journal.
+[[nodiscard]] std::string journal_path(const std::string& run_dir);
 
 }  // namespace swarm::gcs

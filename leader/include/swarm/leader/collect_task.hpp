@@ -42,6 +42,7 @@ class CollectGroupTask : public GroupTask {
   void member_lost(int index, GroupContext& ctx) override;
   void on_carrying(int index, const std::vector<std::uint32_t>& objects, GroupContext& ctx) override;
   void took_over(GroupContext& ctx) override;
+  void gcs_back(GroupContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:

@@ -30,6 +30,7 @@ class CoverGroupTask : public GroupTask {
   void on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) override;
   void member_lost(int index, GroupContext& ctx) override;
   void member_back(int index, GroupContext& ctx) override;
+  void gcs_back(GroupContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:

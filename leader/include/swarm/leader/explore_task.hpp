@@ -18,6 +18,7 @@ class ExploreGroupTask : public GroupTask {
   void start(GroupContext& ctx) override;
   void step(GroupContext& ctx) override;
   void finish_step(GroupContext& ctx) override;
+  void gcs_back(GroupContext& ctx) override;
   void on_round(std::uint32_t round, GroupContext& ctx) override;
   void on_member_status(const msgs::MemberStatus& s, GroupContext& ctx) override;
   void member_lost(int index, GroupContext& ctx) override;

@@ -12,6 +12,7 @@
 //                         the messages of the current phase, routed by the node
 //   member_lost / member_back
 //                         a member the simulator declared lost, or one whose link healed
+//   gcs_back(ctx)         the GCS restarted (it heard nothing for a while): re-send its state
 //   took_over(ctx)        this robot has just taken the group over from a lost leader (a standby,
 //                         comm/leadership.hpp): called once, right after start() and before the
 //                         GCS's orders of the phase, which the standby kept, are replayed; the
@@ -94,6 +95,10 @@ class GroupTask {
   virtual void member_lost(int /*index*/, GroupContext&) {}
   virtual void member_back(int /*index*/, GroupContext&) {}
   virtual void took_over(GroupContext&) {}
+  // The GCS's process restarted and is back in the run (gcs/gcs_node.hpp "Restart"); it heard
+  // nothing meanwhile: send it again what it needs of this task's state (the node sends the group
+  // map).
+  virtual void gcs_back(GroupContext&) {}
   [[nodiscard]] virtual nlohmann::json numbers() const = 0;
 };
 

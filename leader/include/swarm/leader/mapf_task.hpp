@@ -38,6 +38,7 @@ class MapfGroupTask : public GroupTask {
   void on_order(const msgs::TaskOrder& order, GroupContext& ctx) override;
   void on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) override;
   void took_over(GroupContext&) override { adopting_ = true; }
+  void gcs_back(GroupContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:

@@ -24,6 +24,9 @@ class CoverageTracker {
 
   // Marks the cells within the radius of `c`; returns how many target cells became covered.
   int visit(Cell c);
+  // Cell c itself is covered (known from elsewhere: another's tracker); returns 1 if it is a
+  // target cell that was not covered yet.
+  int mark(Cell c);
   bool is_covered(Cell c) const;
   bool is_target(Cell c) const;
 

@@ -91,6 +91,18 @@ struct AgentLost {
   std::optional<double> detection_seconds;
 };
 
+// The GCS's process killed and started again (gcs/gcs_node.hpp "Restart"): it stopped answering at
+// `stopped_at_tick` (DDS noticed after `detection_seconds`), rebuilt its state by replaying
+// `replayed_ticks` ticks of its journal in `replay_seconds`, and took part again from
+// `rejoined_at_tick` on; it heard nothing in between.
+struct GcsRestart {
+  std::optional<std::uint32_t> stopped_at_tick;
+  std::optional<double> detection_seconds;
+  std::optional<std::uint32_t> rejoined_at_tick;
+  std::uint32_t replayed_ticks = 0;
+  double replay_seconds = 0;
+};
+
 // A group's leadership passing from one robot to another (comm/leadership.hpp): the clock named
 // `to` at `at_tick`; `from` stopped answering at `from_stopped_at_tick` (the simulator's loss
 // record: null when it was not lost), so the group had no leader for `leaderless_ticks` ticks and
@@ -146,6 +158,7 @@ struct RunMetrics {
   std::vector<AgentLost> agents_lost;
   std::vector<Unreachable> unreachable;
   std::vector<Handover> leader_handovers;
+  std::vector<GcsRestart> gcs_restarts;
   std::uint64_t messages_from_deposed_leaders = 0;  // heard by the GCS from a robot no longer leading, dropped
   MotionNumbers motion;  // the whole run
   std::vector<PhaseMetrics> phases;
@@ -182,6 +195,7 @@ struct SimReport {
     std::uint32_t missed_tick = 0;
     double detection_seconds = 0;
     std::optional<std::uint32_t> rejoined_tick;
+    bool restarted = false;  // it came back as a new process (comm/lockstep.hpp "Restart")
   };
   std::vector<Loss> agents_lost;
 };

@@ -10,6 +10,7 @@
 //   for (k = 0; node.begin_tick(k), step the agents, !node.end_tick(k); ++k) {}
 #pragma once
 
+#include <chrono>
 #include <optional>
 
 #include <nlohmann/json.hpp>
@@ -49,6 +50,7 @@ class SimNode {
   comm::LockstepClock& clock_;
   World world_;
   std::uint32_t max_ticks_;
+  std::chrono::milliseconds pace_while_gcs_lost_{0};  // a GCS restart is scheduled: see the constructor
   std::vector<comm::Mailbox::Outlet<msgs::Sense>*> sense_;
   std::optional<std::uint32_t> steps_to_99_;
   std::vector<std::pair<std::uint32_t, double>> curve_;  // (tick, explored fraction)
