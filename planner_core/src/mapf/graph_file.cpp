@@ -60,13 +60,12 @@ class Reader {
     }
     if (vertices_ < 0) fail(path_, 0, "empty file: expected \"vertices N\", then edge and agent lines");
     if (in_.starts.empty()) fail(path_, 0, "no agents: expected at least one \"agent START GOAL\" line");
-    const auto given = static_cast<std::size_t>(std::count_if(position_line_.begin(), position_line_.end(), [](int l) { return l > 0; }));
-    if (given > 0 && given < positions_.size()) {
+    const auto given = std::count_if(position_line_.begin(), position_line_.end(), [](int l) { return l > 0; });
+    if (given > 0 && given < vertices_) {
       const auto missing = std::find(position_line_.begin(), position_line_.end(), 0) - position_line_.begin();
       fail(path_, 0, "positions are given for " + std::to_string(given) + " of " + std::to_string(vertices_) +
                          " vertices (vertex " + std::to_string(missing) + " has none): give one per vertex, or none");
     }
-    if (given == 0) positions_.clear();
     in_.graph = Graph(vertices_, std::move(edges_), std::move(positions_));
     return std::move(in_);
   }
@@ -97,8 +96,6 @@ class Reader {
                              " (got " + quoted(w[1]) + ")");
     }
     vertices_line_ = line_;
-    positions_.assign(static_cast<std::size_t>(vertices_), {});
-    position_line_.assign(static_cast<std::size_t>(vertices_), 0);
   }
 
   void edge(const std::vector<std::string>& w) {
@@ -120,6 +117,10 @@ class Reader {
     Position p;
     if (!detail::parse_double(w[2], p.x)) fail(path_, line_, what + ": x must be a number (got " + quoted(w[2]) + ")");
     if (!detail::parse_double(w[3], p.y)) fail(path_, line_, what + ": y must be a number (got " + quoted(w[3]) + ")");
+    if (positions_.empty()) {  // the first position: every vertex needs one now
+      positions_.assign(static_cast<std::size_t>(vertices_), {});
+      position_line_.assign(static_cast<std::size_t>(vertices_), 0);
+    }
     int& first = position_line_[static_cast<std::size_t>(v)];
     if (first > 0) fail(path_, line_, what + " is already given on line " + std::to_string(first));
     first = line_;
@@ -146,8 +147,8 @@ class Reader {
   int vertices_line_ = 0;
   std::vector<Edge> edges_;
   std::unordered_map<std::uint64_t, int> edge_line_;  // {min, max} -> its line
-  std::vector<Position> positions_;
-  std::vector<int> position_line_;  // per vertex, 0 = not given
+  std::vector<Position> positions_;  // empty until a position is given, then one per vertex
+  std::vector<int> position_line_;   // per vertex, 0 = not given
   std::unordered_map<int, int> start_line_, goal_line_;
   Instance in_;
 };
