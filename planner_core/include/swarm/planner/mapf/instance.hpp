@@ -12,7 +12,10 @@
 //     are the free cells, the edges join 4-neighbours. Cells are grid.hpp cells (x right, y up).
 //   - a GRAPH instance: `graph` is set (graph.hpp: V vertices, undirected edges); `map` and
 //     `motion` are unused. Vertex v is written Cell{v, 0} wherever the interface takes cells
-//     (starts, goals, paths, reserved paths, validator reports): vertex_cell(v) makes one.
+//     (starts, goals, paths, reserved paths, validator reports: a conflict "at (3, 0)" is on
+//     vertex 3), so a plan has one type (Path) for both kinds and everything that reads plans
+//     (costs, the validator, adg.hpp) serves both; vertex_cell(v) writes one, cell_vertex reads it.
+//     Where a vertex is drawn is the graph's business (Graph::positions), not the cell's.
 // Either way the solvers see one adjacency structure: InstanceGraph below (a grid's graph has one
 // vertex per free cell, its neighbours in motion.hpp's fixed order, so grid results do not depend
 // on the graph machinery). graph_instance() turns a grid instance into the equivalent graph
