@@ -52,10 +52,15 @@ inline std::unique_ptr<MapfCli> add_mapf_cli(CLI::App& app) {
   MapfOptions& o = cli->options;
   CLI::App* c = app.add_subcommand("mapf", "Multi-agent path finding on one instance: CBS, ECBS, LaCAM*, the paper's GA");
   cli->command = c;
-  c->add_option("--map", o.map, "MovingAI .map, map_server YAML, built-in name, or warehouse-RxC (the paper's 5x8 world: warehouse-5x8)")->required();
-  c->add_option("--scen", o.scen, "MovingAI .scen file (with --agents K: its first K rows)");
+  CLI::Option* map = c->add_option("--map", o.map, "MovingAI .map, map_server YAML, built-in name, or warehouse-RxC (the paper's 5x8 world: warehouse-5x8)");
+  CLI::Option* scen = c->add_option("--scen", o.scen, "MovingAI .scen file (with --agents K: its first K rows)");
   cli->agents_opt = c->add_option("--agents", cli->agents, "Number of agents taken from --scen")->check(CLI::PositiveNumber);
   cli->random_opt = c->add_option("--random", cli->random, "K random agents (distinct random free cells / intersections)")->check(CLI::PositiveNumber);
+  c->add_option("--graph", o.graph, "A graph and its agents instead of --map: lines `vertices N`, `edge U V`, `agent START GOAL` (planner/mapf/graph_file.hpp)")
+      ->excludes(map)
+      ->excludes(scen)
+      ->excludes(cli->agents_opt)
+      ->excludes(cli->random_opt);
   c->add_option("--seed", o.seed, "Seed of the random instance and of the solver")->capture_default_str();
   c->add_option("--solver", o.solver, "cbs | ecbs | lacam | ga | ga1 (single-stage GA)")->capture_default_str();
   c->add_option("--w", o.w, "ECBS suboptimality bound (>= 1)")->capture_default_str();

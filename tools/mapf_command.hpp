@@ -3,24 +3,31 @@
 //   swarm mapf --map random-32-32-20.map --scen random-32-32-20-random-1.scen --agents 20 \
 //              --solver cbs --time-limit 10 --out runs/mapf
 //   swarm mapf --map warehouse-5x8 --random 20 --seed 3 --solver ga
+//   swarm mapf --graph ring.graph --solver lacam
 //
 // The map: a MovingAI `.map`, a ROS map_server YAML, a built-in map name (open, maze1, ...), or
 // the paper's warehouse world `warehouse-RxC` (R x C intersections; `warehouse-5x8` is the
 // paper's; its rules are the paper's unless --standard-rules). Agents: the first K rows of a
 // MovingAI `.scen` (--scen F --agents K), or K random ones (--random K --seed S: distinct random
 // free cells; on a warehouse, random intersections). Solvers: cbs, ecbs (--w), lacam, ga, ga1.
+// Or, instead of --map and its agents, --graph FILE: a graph and its agents in the text format of
+// planner/mapf/graph_file.hpp (`vertices N`, `edge U V`, `agent START GOAL` lines; standard rules;
+// every solver but the GA).
 //
 // Writes into --out DIR (default runs/mapf-<time>): result.json (status, soc, makespan,
 // lower_bound, seconds, collisions, paths per agent as [x, y] per time step in the map file's own
 // coordinates: MovingAI and warehouse maps x = column, y = row from the top; map_server maps x, y
 // = cell column and row from the bottom), paths.png (every path on the map), animation.html (a
 // self-contained player: open it in a browser) and instance.scen + map.map (the instance as
-// MovingAI files, to run again or elsewhere).
+// MovingAI files, to run again or elsewhere). With --graph, result.json's starts, goals and paths
+// are the file's vertex ids (a path: one id per time step), the pictures draw the graph (the
+// file's positions, or the vertices on a circle when it gives none) and instance.graph is the
+// instance again.
 //
 // Exit 0 solved, 1 not solved (timeout, infeasible, failed: the result is still written), 2 bad
 // input (a missing or malformed file, a start or goal outside the map or blocked, two agents on
-// one start or goal, a scenario for another map, K larger than the scenario, an unknown solver),
-// with one message naming the file and line or the flag.
+// one start or goal, a scenario for another map, K larger than the scenario, an unknown solver,
+// --graph with --map, the GA on a graph), with one message naming the file and line or the flag.
 #pragma once
 
 #include <cstdint>
@@ -32,6 +39,7 @@ namespace swarm::tools {
 
 struct MapfOptions {
   std::string map;
+  std::string graph;              // a graph instance file instead of map + agents
   std::string scen;
   std::optional<int> agents;      // with scen
   std::optional<int> random;      // K random agents

@@ -1,13 +1,10 @@
 // The MAPF solvers behind solve() (planner/mapf/solver.hpp): CBS's sum of costs equals a brute
 // force's optimum, ECBS stays within w of it, every plan passes the independent validator, an
-// unsolvable instance ends with a status inside its limit, reservations are respected, results
-// are deterministic, and every solver's plans are valid on MovingAI maps.
+// unsolvable instance (grid or graph) ends with a status inside its limit, reservations are
+// respected, results are deterministic, and every solver's plans are valid on MovingAI maps.
 #include <gtest/gtest.h>
 
-#include <map>
-#include <queue>
-#include <tuple>
-
+#include "mapf_brute_force.hpp"
 #include "swarm/planner/map_io.hpp"
 #include "swarm/planner/mapf/movingai_scen.hpp"
 #include "swarm/planner/mapf/solver.hpp"
@@ -22,61 +19,13 @@ namespace {
 using swarm::planner::Cell;
 using swarm::planner::OccupancyGrid;
 using namespace swarm::planner::mapf;
+using swarm::test::brute_force_soc;
 
 SolverConfig config(SolverKind kind, double w = 1.5) {
   SolverConfig c;
   c.kind = kind;
   c.ecbs.w = w;
   return c;
-}
-
-// The optimal sum of costs by brute force (standard rules): Dijkstra over (every agent's cell,
-// which agents have "settled" on their goal for good). An unsettled agent pays 1 per step; a
-// settled one stays put and pays nothing, so an agent's cost is the step of its last arrival.
-long long brute_force_soc(const Instance& in) {
-  const OccupancyGrid& g = in.map;
-  const int n = in.agents();
-  using State = std::pair<std::vector<int>, int>;  // cells, settled mask
-  std::map<State, long long> best;
-  using Item = std::tuple<long long, std::vector<int>, int>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
-  std::vector<int> start;
-  for (Cell c : in.starts) start.push_back(g.index(c));
-  open.push({0, start, 0});
-  const int all = (1 << n) - 1;
-  while (!open.empty()) {
-    auto [cost, cells, mask] = open.top();
-    open.pop();
-    if (auto it = best.find({cells, mask}); it != best.end() && it->second <= cost) continue;
-    best[{cells, mask}] = cost;
-    if (mask == all) return cost;
-    // Settle any agent on its goal (free).
-    for (int a = 0; a < n; ++a) {
-      if (!(mask >> a & 1) && cells[a] == g.index(in.goals[a])) open.push({cost, cells, mask | (1 << a)});
-    }
-    // Every joint move of the unsettled agents.
-    std::vector<std::vector<int>> options(n);
-    for (int a = 0; a < n; ++a) {
-      options[a].push_back(cells[a]);
-      if (mask >> a & 1) continue;
-      in.motion.for_each_neighbour(g, g.cell_of(cells[a]), [&](Cell c, double) { options[a].push_back(g.index(c)); });
-    }
-    std::vector<int> pick(n, 0), next(n);
-    while (true) {
-      for (int a = 0; a < n; ++a) next[a] = options[a][pick[a]];
-      bool ok = true;
-      for (int a = 0; a < n && ok; ++a) {
-        for (int b = a + 1; b < n && ok; ++b) {
-          ok = next[a] != next[b] && !(next[a] == cells[b] && next[b] == cells[a]);
-        }
-      }
-      if (ok) open.push({cost + (n - __builtin_popcount(mask)), next, mask});
-      int a = 0;
-      while (a < n && ++pick[a] == static_cast<int>(options[a].size())) pick[a++] = 0;
-      if (a == n) break;
-    }
-  }
-  return -1;
 }
 
 Instance small_random(std::uint64_t seed) {
@@ -149,17 +98,29 @@ Instance swap_in_a_dead_end() {
   return in;
 }
 
+// The same on a graph: two agents swapping the ends of the path 0 - 1 - 2 - 3 (nobody can pass).
+Instance swap_on_a_path_graph() {
+  Instance in;
+  in.graph = Graph(4, {{0, 1}, {1, 2}, {2, 3}});
+  in.starts = {vertex_cell(0), vertex_cell(3)};
+  in.goals = {vertex_cell(3), vertex_cell(0)};
+  return in;
+}
+
 TEST(MapfSolvers, AnUnsolvableInstanceEndsWithinItsLimit) {
-  const Instance in = swap_in_a_dead_end();
-  for (SolverKind k : {SolverKind::Cbs, SolverKind::Ecbs}) {
-    const Result r = solve(in, config(k), StopCondition::after(0.2));
-    EXPECT_TRUE(r.status == Status::Timeout || r.status == Status::Infeasible) << to_string(r.status);
-    EXPECT_LT(r.seconds, 0.2 + 0.15) << to_string(k);
+  for (const Instance& in : {swap_in_a_dead_end(), swap_on_a_path_graph()}) {
+    const std::string what = in.graph ? "graph" : "grid";
+    EXPECT_EQ(feasibility_problem(in), "") << what;  // connected: the cheap test cannot tell
+    for (SolverKind k : {SolverKind::Cbs, SolverKind::Ecbs}) {
+      const Result r = solve(in, config(k), StopCondition::after(0.2));
+      EXPECT_TRUE(r.status == Status::Timeout || r.status == Status::Infeasible) << what << " " << to_string(r.status);
+      EXPECT_LT(r.seconds, 0.2 + 0.15) << what << " " << to_string(k);
+    }
+    // LaCAM explores every configuration of this small instance and proves it.
+    const Result r = solve(in, config(SolverKind::Lacam), StopCondition::after(5));
+    EXPECT_EQ(r.status, Status::Infeasible) << what << ": " << r.message;
+    EXPECT_LT(r.seconds, 1.0) << what;
   }
-  // LaCAM explores every configuration of this small instance and proves it.
-  const Result r = solve(in, config(SolverKind::Lacam), StopCondition::after(5));
-  EXPECT_EQ(r.status, Status::Infeasible) << r.message;
-  EXPECT_LT(r.seconds, 1.0);
 }
 
 TEST(MapfSolvers, AnUnreachableGoalIsInfeasibleAtOnce) {
@@ -191,12 +152,21 @@ TEST(MapfSolvers, ReservedPathsAreRespected) {
   in.starts = {{0, 1}};
   in.goals = {{4, 1}};
   in.reserved = {{{2, 2}, {2, 1}, {2, 0}}, {{3, 0}, {3, 1}, {3, 1}, {3, 1}, {3, 2}}};
+  const Instance on_graph = graph_instance(in);
+  const InstanceGraph g(in);
   for (SolverKind k : {SolverKind::Cbs, SolverKind::Ecbs}) {
     const Result r = solve(in, config(k), StopCondition::after(5));
     ASSERT_EQ(r.status, Status::Solved) << to_string(k) << ": " << r.message;
     const ValidationReport v = validate(in, r.paths);
     EXPECT_TRUE(v.ok()) << v.summary();
     EXPECT_GE(r.soc, 4);
+    // The graph form carries the reserved paths over: the same plan, vertex for cell.
+    const Result rg = solve(on_graph, config(k), StopCondition::after(5));
+    ASSERT_EQ(rg.status, Status::Solved) << to_string(k) << ": " << rg.message;
+    ASSERT_EQ(rg.paths.size(), 1u);
+    Path cells;
+    for (const Cell c : rg.paths[0]) cells.push_back(g.cell(c.x));
+    EXPECT_EQ(cells, r.paths[0]) << to_string(k);
   }
   // Without reservations the straight line (cost 4) would cross both robots.
   EXPECT_FALSE(validate(in, {{{0, 1}, {1, 1}, {2, 1}, {3, 1}, {4, 1}}}).ok());

@@ -41,6 +41,11 @@ struct Files {
   }
 };
 
+// A graph file (planner/mapf/graph_file.hpp), no positions: the path 0 - 1 - 2 - 3 with the side
+// branch 1 - 4, two agents swapping its ends. Optimum 8 (test_mapf_graph.cpp works it out): agent
+// 0 waits in the branch while agent 1 goes by.
+constexpr const char* kBranchGraph = "vertices 5\nedge 0 1\nedge 1 2\nedge 2 3\nedge 1 4\nagent 0 3\nagent 3 0\n";
+
 TEST(MapfCommand, SolvesAScenarioAndWritesItsFiles) {
   Files f;
   MapfOptions o;
@@ -156,6 +161,76 @@ TEST(MapfCommand, BadInputExitsTwoNamingTheFileOrFlag) {
   x.map = "warehouse-5x8";
   x.random = 41;
   bad(x, "--random: 41 robots do not fit on the 40 intersections");
+  bad(MapfOptions{}, "--map: required");
+  // --graph: a malformed or missing file, other flags that give the instance, the GA.
+  swarm::test::spit(f.tmp.file("broken.graph"), "vertices 5\nedge 0 1\nedge 0 7\nagent 0 1\n");
+  MapfOptions g;
+  g.graph = f.tmp.file("broken.graph");
+  bad(g, "broken.graph:3: edge 0 7: vertex 7 is not in the graph (vertices 0..4)");
+  g.graph = f.tmp.file("missing.graph");
+  bad(g, "missing.graph: cannot open the graph file");
+  swarm::test::spit(f.tmp.file("branch.graph"), kBranchGraph);
+  g.graph = f.tmp.file("branch.graph");
+  x = o;
+  x.graph = g.graph;
+  bad(x, "--graph: the file holds the graph and its agents; give it without --map, --scen, --agents and --random");
+  x = g;
+  x.random = 3;
+  bad(x, "--graph: the file holds the graph and its agents");
+  x = g;
+  x.solver = "ga";
+  bad(x, "--solver ga: the paper's GA runs only on --map warehouse-RxC");
+}
+
+TEST(MapfCommand, SolvesAGraphFile) {
+  swarm::test::TempDir tmp;
+  swarm::test::spit(tmp.file("branch.graph"), kBranchGraph);
+  MapfOptions o;
+  o.graph = tmp.file("branch.graph");
+  o.out_dir = tmp.file("out");
+  const Outcome r = run(o);
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* name : {"result.json", "paths.png", "animation.html", "instance.graph"}) {
+    EXPECT_TRUE(fs::exists(fs::path(o.out_dir) / name)) << name;
+  }
+  EXPECT_FALSE(fs::exists(fs::path(o.out_dir) / "map.map"));
+  const auto j = nlohmann::json::parse(swarm::test::slurp(o.out_dir + "/result.json"));
+  EXPECT_EQ(j["graph"], o.graph);
+  EXPECT_FALSE(j.contains("map"));
+  EXPECT_EQ(j["status"], "solved");
+  EXPECT_EQ(j["soc"], 8);
+  EXPECT_EQ(j["lower_bound"], 6);
+  EXPECT_EQ(j["makespan"], 5);
+  EXPECT_EQ(j["coordinates"], "vertex ids of the graph file");
+  EXPECT_EQ(j["starts"], nlohmann::json::array({0, 3}));
+  EXPECT_EQ(j["goals"], nlohmann::json::array({3, 0}));
+  // Vertex ids per time step.
+  EXPECT_EQ(j["paths"][0], nlohmann::json::array({0, 1, 4, 1, 2, 3}));
+  EXPECT_EQ(j["paths"][1], nlohmann::json::array({3, 2, 1, 0}));
+  // The instance written back reads as the same graph and agents.
+  EXPECT_TRUE(contains(swarm::test::slurp(o.out_dir + "/instance.graph"), "edge 1 4\nagent 0 3\nagent 3 0\n"));
+  // LaCAM solves it too (its plan may cost more).
+  o.solver = "lacam";
+  o.out_dir = tmp.file("lacam");
+  const Outcome l = run(o);
+  EXPECT_EQ(l.code, 0) << l.err;
+  EXPECT_GE(nlohmann::json::parse(swarm::test::slurp(o.out_dir + "/result.json"))["soc"].get<int>(), 8);
+}
+
+TEST(MapfCommand, AnUnsolvableGraphExitsOne) {
+  swarm::test::TempDir tmp;
+  // Two agents swapping the ends of a path: nobody can pass.
+  swarm::test::spit(tmp.file("path.graph"), "vertices 4\nedge 0 1\nedge 1 2\nedge 2 3\nagent 0 3\nagent 3 0\n");
+  MapfOptions o;
+  o.graph = tmp.file("path.graph");
+  o.solver = "lacam";
+  o.time_limit_s = 2;
+  o.out_dir = tmp.file("out");
+  const Outcome r = run(o);
+  EXPECT_EQ(r.code, 1) << r.err;
+  const auto j = nlohmann::json::parse(swarm::test::slurp(o.out_dir + "/result.json"));
+  EXPECT_EQ(j["status"], "infeasible");
+  EXPECT_LT(j["seconds"].get<double>(), 1.0);
 }
 
 TEST(ExperimentMapf, WritesTablesAndPlots) {

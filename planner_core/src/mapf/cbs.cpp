@@ -61,18 +61,19 @@ class ConflictSearch {
         bypass_(bypass),
         timeout_plan_(plan),
         stop_(stop),
-        model_(in),
+        graph_(in),
+        model_(in, graph_),
         vanish_(in.rules.at_goal == GoalRule::Vanish) {
     reserved_cells_.resize(in.reserved.size());
     for (std::size_t r = 0; r < in.reserved.size(); ++r) {
-      for (Cell c : in.reserved[r]) reserved_cells_[r].push_back(in.map.index(c));
+      for (Cell c : in.reserved[r]) reserved_cells_[r].push_back(graph_.vertex(c));
       reserved_.add(static_cast<int>(r), &reserved_cells_[r], true);
     }
     low_ = std::make_unique<LowLevel>(in, model_, in.reserved.empty() ? nullptr : &reserved_);
     for (int a = 0; a < n_; ++a) {
-      h_.emplace_back(in.map, in.motion, in.goals[static_cast<std::size_t>(a)]);
-      goal_cell_.push_back(in.map.index(in.goals[static_cast<std::size_t>(a)]));
-      start_state_.push_back(model_.start_state(in.map.index(in.starts[static_cast<std::size_t>(a)])));
+      goal_cell_.push_back(graph_.vertex(in.goals[static_cast<std::size_t>(a)]));
+      h_.emplace_back(graph_.graph(), goal_cell_.back());
+      start_state_.push_back(model_.start_state(graph_.vertex(in.starts[static_cast<std::size_t>(a)])));
     }
     should_stop_ = [this] { return stop_.reached(); };
   }
@@ -241,12 +242,12 @@ class ConflictSearch {
         vc.get_or_insert(FlatMap::key(c.cell, c.time), 1, ins);
         if (c.cell == goal) goal_last = std::max(goal_last, c.time);
       } else {
-        ec.get_or_insert(FlatMap::key(c.time, c.cell * 4 + edge_dir(c.cell, c.cell2)), 1, ins);
+        ec.get_or_insert(FlatMap::key(c.time, graph_.graph().arc(c.cell, c.cell2)), 1, ins);
       }
     }
     const auto legal = [&](int u, int v, int t1) {
       if (vc.find(FlatMap::key(v, t1)) != nullptr) return false;
-      if (u != v && ec.find(FlatMap::key(t1, u * 4 + edge_dir(u, v))) != nullptr) return false;
+      if (u != v && ec.size() > 0 && ec.find(FlatMap::key(t1, graph_.graph().arc(u, v))) != nullptr) return false;
       if (!in_.reserved.empty()) {
         if (reserved_.count_at(v, t1, -1) > 0) return false;
         if (u != v && reserved_.count_swap(u, v, t1, -1) > 0) return false;
@@ -258,10 +259,10 @@ class ConflictSearch {
     for (int t = 0; t < cost; ++t) {
       FlatMap seen(states[static_cast<std::size_t>(t)].size() * 4);
       for (int s : states[static_cast<std::size_t>(t)]) {
-        const int u = model_.cell(s);
+        const int u = model_.vertex(s);
         if (vanish_ && u == goal) continue;
         model_.for_each_successor(s, [&](int s2) {
-          const int v = model_.cell(s2);
+          const int v = model_.vertex(s2);
           const int d = h.at(v);
           if (d >= DistanceTable::kUnreachable || t + 1 + d > cost) return;
           if (vanish_ && v == goal && t + 1 != cost) return;
@@ -276,14 +277,14 @@ class ConflictSearch {
     std::vector<std::vector<int>> level_cells(static_cast<std::size_t>(cost) + 1);
     std::vector<int> keep;
     for (int s : states[static_cast<std::size_t>(cost)]) {
-      if (model_.cell(s) == goal && cost > goal_last) keep.push_back(s);
+      if (model_.vertex(s) == goal && cost > goal_last) keep.push_back(s);
     }
     for (int t = cost; t >= 0; --t) {
       FlatMap cells(keep.size() * 2 + 2);
       for (int s : keep) {
         bool fresh = false;
-        cells.get_or_insert(static_cast<std::uint64_t>(model_.cell(s)), 1, fresh);
-        if (fresh) level_cells[static_cast<std::size_t>(t)].push_back(model_.cell(s));
+        cells.get_or_insert(static_cast<std::uint64_t>(model_.vertex(s)), 1, fresh);
+        if (fresh) level_cells[static_cast<std::size_t>(t)].push_back(model_.vertex(s));
       }
       if (t == 0) break;
       FlatMap next(keep.size() * 2 + 2);
@@ -291,11 +292,11 @@ class ConflictSearch {
       for (int s : keep) next.get_or_insert(static_cast<std::uint64_t>(s), 1, fresh);
       std::vector<int> prev;
       for (int s : states[static_cast<std::size_t>(t) - 1]) {
-        const int u = model_.cell(s);
+        const int u = model_.vertex(s);
         if (vanish_ && u == goal) continue;
         bool ok = false;
         model_.for_each_successor(s, [&](int s2) {
-          if (!ok && next.find(static_cast<std::uint64_t>(s2)) != nullptr && legal(u, model_.cell(s2), t)) ok = true;
+          if (!ok && next.find(static_cast<std::uint64_t>(s2)) != nullptr && legal(u, model_.vertex(s2), t)) ok = true;
         });
         if (ok) prev.push_back(s);
       }
@@ -308,12 +309,6 @@ class ConflictSearch {
     }
     mdd.first.push_back(static_cast<int>(mdd.cells.size()));
     return &mdd;
-  }
-
-  int edge_dir(int from, int to) const {
-    const int d = to - from;
-    const int width = in_.map.width();
-    return d == 1 ? 0 : d == -1 ? 1 : d == width ? 2 : 3;
   }
 
   // 2 = cardinal for this agent, 0 = not. `parked`: the agent already sits on its goal then.
@@ -484,7 +479,7 @@ class ConflictSearch {
       const CtNode& n = *nodes_[static_cast<std::size_t>(id)];
       for (const PlanPtr& p : n.plans) {
         Path path;
-        for (int c : p->cells) path.push_back(in_.map.cell_of(c));
+        for (int c : p->cells) path.push_back(graph_.cell(c));
         out.paths.push_back(std::move(path));
       }
     }
@@ -499,6 +494,7 @@ class ConflictSearch {
   bool bypass_;
   TimeoutPlan timeout_plan_;
   const StopCondition& stop_;
+  InstanceGraph graph_;
   AgentModel model_;
   bool vanish_;
   std::vector<CellPath> reserved_cells_;

@@ -299,6 +299,13 @@ Result run_ga(const Instance& in, const GaConfig& config, bool two_stage, const 
     r.message = "the GA does not take reserved paths";
     return r;
   }
+  if (in.graph) {
+    Result r;
+    r.status = Status::Unsupported;
+    r.message = "the GA runs on the paper's warehouse world only: a graph instance has no directions to order "
+                "(use cbs, ecbs or lacam)";
+    return r;
+  }
   if (in.rules != Rules::paper_warehouse() || !warehouse_size_of(in.map)) {
     Result r;
     r.status = Status::Unsupported;

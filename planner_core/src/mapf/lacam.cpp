@@ -44,8 +44,8 @@ class LazyDistance {
     while (d == DistanceTable::kUnreachable && head_ < queue_.size()) {
       const int c = queue_[head_++];
       const int dc = dist_[static_cast<std::size_t>(c)] + 1;
-      for (int n : model_->neighbours(c)) {
-        if (n < 0 || dist_[static_cast<std::size_t>(n)] != DistanceTable::kUnreachable) continue;
+      for (const int n : model_->neighbours(c)) {
+        if (dist_[static_cast<std::size_t>(n)] != DistanceTable::kUnreachable) continue;
         dist_[static_cast<std::size_t>(n)] = dc;
         queue_.push_back(n);
       }
@@ -83,14 +83,15 @@ class Lacam {
       : in_(in),
         cfg_(cfg),
         stop_(stop),
-        model_(in),
+        graph_(in),
+        model_(in, graph_),
         n_(in.agents()),
         vanish_(in.rules.at_goal == GoalRule::Vanish),
         paper_(in.rules.waits == WaitRule::PassageMiddles),
         rng_(mix_seed(cfg.seed, 0x6c6163616dULL)) {
-    const std::size_t cells = in.map.size();
+    const auto cells = static_cast<std::size_t>(graph_.vertices());
     for (int a = 0; a < n_; ++a) {
-      goal_.push_back(in.map.index(in.goals[static_cast<std::size_t>(a)]));
+      goal_.push_back(graph_.vertex(in.goals[static_cast<std::size_t>(a)]));
       dist_.emplace_back(model_, cells, goal_.back());
     }
     occupied_now_.assign(cells, -1);
@@ -102,7 +103,7 @@ class Lacam {
   Result run() {
     Result out;
     Config start(static_cast<std::size_t>(n_));
-    for (int a = 0; a < n_; ++a) start[static_cast<std::size_t>(a)] = model_.start_state(in_.map.index(in_.starts[static_cast<std::size_t>(a)]));
+    for (int a = 0; a < n_; ++a) start[static_cast<std::size_t>(a)] = model_.start_state(graph_.vertex(in_.starts[static_cast<std::size_t>(a)]));
     HighNode* root = make_node(start, nullptr);
     std::stack<HighNode*> open;
     open.push(root);
@@ -201,7 +202,7 @@ class Lacam {
   }
 
   bool at_goal(int a, int state) const {
-    return state == kGone || model_.cell(state) == goal_[static_cast<std::size_t>(a)];
+    return state == kGone || model_.vertex(state) == goal_[static_cast<std::size_t>(a)];
   }
   bool is_goal(const Config& c) const {
     for (int a = 0; a < n_; ++a) {
@@ -210,7 +211,7 @@ class Lacam {
     return true;
   }
   int distance(int a, int state) {
-    return state == kGone ? 0 : dist_[static_cast<std::size_t>(a)](model_.cell(state));
+    return state == kGone ? 0 : dist_[static_cast<std::size_t>(a)](model_.vertex(state));
   }
   long long heuristic(const Config& c) {
     long long s = 0;
@@ -267,8 +268,8 @@ class Lacam {
         next_[static_cast<std::size_t>(a)] = kGone;
         continue;
       }
-      occupied_now_[static_cast<std::size_t>(model_.cell(s))] = a;
-      touched_.push_back(model_.cell(s));
+      occupied_now_[static_cast<std::size_t>(model_.vertex(s))] = a;
+      touched_.push_back(model_.vertex(s));
       if (vanish_ && at_goal(a, s)) next_[static_cast<std::size_t>(a)] = kGone;
     }
     illegal_ = false;
@@ -276,12 +277,12 @@ class Lacam {
       const int a = low.who[k];
       const int s = low.where[k];
       if (s == kGone) continue;
-      const int v = model_.cell(s);
+      const int v = model_.vertex(s);
       if (occupied_next_[static_cast<std::size_t>(v)] != -1) return false;
-      const int u = model_.cell(cur[static_cast<std::size_t>(a)]);
+      const int u = model_.vertex(cur[static_cast<std::size_t>(a)]);
       const int there = occupied_now_[static_cast<std::size_t>(v)];
       if (there != -1 && there != a && next_[static_cast<std::size_t>(there)] >= 0 &&
-          model_.cell(next_[static_cast<std::size_t>(there)]) == u) {
+          model_.vertex(next_[static_cast<std::size_t>(there)]) == u) {
         return false;  // swap
       }
       reserve(a, s);
@@ -295,22 +296,22 @@ class Lacam {
 
   void reserve(int a, int s) {
     next_[static_cast<std::size_t>(a)] = s;
-    const int v = model_.cell(s);
+    const int v = model_.vertex(s);
     occupied_next_[static_cast<std::size_t>(v)] = a;
     touched_.push_back(v);
   }
 
-  int cell_now(int a, const Config& cur) const { return model_.cell(cur[static_cast<std::size_t>(a)]); }
+  int cell_now(int a, const Config& cur) const { return model_.vertex(cur[static_cast<std::size_t>(a)]); }
 
   bool pibt(int a, const Config& cur) {
     const int s_now = cur[static_cast<std::size_t>(a)];
-    const int u = model_.cell(s_now);
+    const int u = model_.vertex(s_now);
     std::vector<int> cand;
     model_.for_each_successor(s_now, [&](int s) { cand.push_back(s); });
-    for (int s : cand) tie_[static_cast<std::size_t>(model_.cell(s))] = static_cast<float>(rng_.uniform01());
+    for (int s : cand) tie_[static_cast<std::size_t>(model_.vertex(s))] = static_cast<float>(rng_.uniform01());
     std::sort(cand.begin(), cand.end(), [&](int x, int y) {
-      return static_cast<float>(distance(a, x)) + tie_[static_cast<std::size_t>(model_.cell(x))] <
-             static_cast<float>(distance(a, y)) + tie_[static_cast<std::size_t>(model_.cell(y))];
+      return static_cast<float>(distance(a, x)) + tie_[static_cast<std::size_t>(model_.vertex(x))] <
+             static_cast<float>(distance(a, y)) + tie_[static_cast<std::size_t>(model_.vertex(y))];
     });
     int swapper = -1;
     if (cfg_.swap && !paper_) {
@@ -319,11 +320,11 @@ class Lacam {
     }
     for (std::size_t k = 0; k < cand.size(); ++k) {
       const int s = cand[k];
-      const int v = model_.cell(s);
+      const int v = model_.vertex(s);
       if (occupied_next_[static_cast<std::size_t>(v)] != -1) continue;
       const int other = occupied_now_[static_cast<std::size_t>(v)];
       if (other != -1 && other != a && next_[static_cast<std::size_t>(other)] >= 0 &&
-          model_.cell(next_[static_cast<std::size_t>(other)]) == u) {
+          model_.vertex(next_[static_cast<std::size_t>(other)]) == u) {
         continue;  // would swap with `other`
       }
       reserve(a, s);
@@ -349,7 +350,7 @@ class Lacam {
   int wait_state(int s) const {
     int w = -1;
     model_.for_each_successor(s, [&](int s2) {
-      if (w < 0 && model_.cell(s2) == model_.cell(s)) w = s2;
+      if (w < 0 && model_.vertex(s2) == model_.vertex(s)) w = s2;
     });
     return w;
   }
@@ -357,20 +358,15 @@ class Lacam {
   // ---- PIBT's swap technique (LaCAM*, standard rules) -------------------------------------------
   int degree_excluding(int cell, int excluded, int& other) const {
     int n = 0;
-    for (int nb : model_.neighbours(cell)) {
-      if (nb < 0 || nb == excluded) continue;
+    for (const int nb : model_.neighbours(cell)) {
+      if (nb == excluded) continue;
       const int who = occupied_now_[static_cast<std::size_t>(nb)];
-      const bool parked_dead_end = who != -1 && goal_[static_cast<std::size_t>(who)] == nb && degree(nb) == 1;
+      const bool parked_dead_end = who != -1 && goal_[static_cast<std::size_t>(who)] == nb && model_.graph().degree(nb) == 1;
       if (parked_dead_end) continue;
       ++n;
       other = nb;
     }
     return n;
-  }
-  int degree(int cell) const {
-    int d = 0;
-    for (int nb : model_.neighbours(cell)) d += nb >= 0;
-    return d;
   }
   // Must the pusher and the puller trade places? (They are in a corridor with the puller in the
   // pusher's way, and the puller gains by moving behind the pusher.)
@@ -403,14 +399,13 @@ class Lacam {
   }
   int swap_partner(int a, const std::vector<int>& cand, const Config& cur) {
     const int u = cell_now(a, cur);
-    const int best = model_.cell(cand.front());
+    const int best = model_.vertex(cand.front());
     if (best == u) return -1;
     const int b = occupied_now_[static_cast<std::size_t>(best)];
     if (b != -1 && next_[static_cast<std::size_t>(b)] == kUndecided && swap_required(a, b, u, best) && swap_possible(best, u)) {
       return b;
     }
-    for (int nb : model_.neighbours(u)) {  // clearing: someone beside us must pass first
-      if (nb < 0) continue;
+    for (const int nb : model_.neighbours(u)) {  // clearing: someone beside us must pass first
       const int k = occupied_now_[static_cast<std::size_t>(nb)];
       if (k == -1 || nb == best) continue;
       if (swap_required(k, a, u, best) && swap_possible(best, u)) return k;
@@ -448,8 +443,8 @@ class Lacam {
       for (const Config* c : seq) {
         const int s = (*c)[static_cast<std::size_t>(a)];
         if (s == kGone) break;
-        p.push_back(in_.map.cell_of(model_.cell(s)));
-        if (vanish_ && model_.cell(s) == goal_[static_cast<std::size_t>(a)]) break;
+        p.push_back(graph_.cell(model_.vertex(s)));
+        if (vanish_ && model_.vertex(s) == goal_[static_cast<std::size_t>(a)]) break;
       }
       if (!vanish_) {  // drop the trailing waits on the goal
         while (p.size() >= 2 && p[p.size() - 2] == p.back()) p.pop_back();
@@ -485,7 +480,7 @@ class Lacam {
       std::vector<int> way;
       for (int s = reached; s >= 0 && s != from; s = parent.at(s)) way.push_back(s);
       Path& p = paths[static_cast<std::size_t>(a)];
-      for (auto it = way.rbegin(); it != way.rend(); ++it) p.push_back(in_.map.cell_of(model_.cell(*it)));
+      for (auto it = way.rbegin(); it != way.rend(); ++it) p.push_back(graph_.cell(model_.vertex(*it)));
     }
   }
 
@@ -493,6 +488,7 @@ class Lacam {
   const Instance& in_;
   LacamConfig cfg_;
   const StopCondition& stop_;
+  InstanceGraph graph_;
   AgentModel model_;
   int n_;
   bool vanish_;

@@ -29,18 +29,11 @@ struct FocalEntry {
   }
 };
 
-// Direction code of a 4-connected move (from -> to) for edge-constraint keys.
-int move_code(int from, int to, int width) {
-  const int d = to - from;
-  const int dir = d == 1 ? 0 : d == -1 ? 1 : d == width ? 2 : 3;
-  return from * 4 + dir;
-}
-
 }  // namespace
 
 LowLevel::LowLevel(const Instance& in, const AgentModel& model, const PathTable* reserved)
-    : in_(in), model_(model), reserved_(reserved), vanish_(in.rules.at_goal == GoalRule::Vanish) {
-  reserved_last_.assign(in.map.size(), -1);
+    : model_(model), reserved_(reserved), vanish_(in.rules.at_goal == GoalRule::Vanish) {
+  reserved_last_.assign(static_cast<std::size_t>(model.graph().vertices()), -1);
   if (reserved_ == nullptr) return;
   for (int r = 0;; ++r) {
     const CellPath* p = reserved_->path(r);
@@ -57,7 +50,7 @@ int LowLevel::reserved_last_use(int cell) const { return reserved_last_[static_c
 
 LowLevelResult LowLevel::search(const LowLevelQuery& q, const std::function<bool()>& should_stop) {
   LowLevelResult out;
-  const int width = in_.map.width();
+  const Graph& graph = model_.graph();
   FlatMap vertex_c(8), edge_c(8);
   int max_constraint_t = -1;
   int goal_last = -1;
@@ -69,7 +62,7 @@ LowLevelResult LowLevel::search(const LowLevelQuery& q, const std::function<bool
         vertex_c.get_or_insert(FlatMap::key(c.cell, c.time), 1, inserted);
         if (c.cell == q.goal_cell) goal_last = std::max(goal_last, c.time);
       } else {
-        edge_c.get_or_insert(FlatMap::key(c.time, move_code(c.cell, c.cell2, width)), 1, inserted);
+        edge_c.get_or_insert(FlatMap::key(c.time, graph.arc(c.cell, c.cell2)), 1, inserted);
       }
     }
   }
@@ -91,7 +84,7 @@ LowLevelResult LowLevel::search(const LowLevelQuery& q, const std::function<bool
   };
   const auto blocked = [&](int u, int v, int t1) {
     if (vertex_c.size() > 0 && vertex_c.find(FlatMap::key(v, t1)) != nullptr) return true;
-    if (u != v && edge_c.size() > 0 && edge_c.find(FlatMap::key(t1, move_code(u, v, width))) != nullptr) return true;
+    if (u != v && edge_c.size() > 0 && edge_c.find(FlatMap::key(t1, graph.arc(u, v))) != nullptr) return true;
     if (reserved_ != nullptr) {
       if (reserved_->count_at(v, t1, -1) > 0) return true;
       if (u != v && reserved_->count_swap(u, v, t1, -1) > 0) return true;
@@ -138,7 +131,7 @@ LowLevelResult LowLevel::search(const LowLevelQuery& q, const std::function<bool
     return true;
   };
 
-  const int start_cell = model_.cell(q.start_state);
+  const int start_cell = model_.vertex(q.start_state);
   {
     const int h0 = h_of(start_cell, 0);
     if (h0 >= DistanceTable::kUnreachable) return out;
@@ -163,7 +156,7 @@ LowLevelResult LowLevel::search(const LowLevelQuery& q, const std::function<bool
     n.closed = true;
     const int lb_now = fmin;
     --open_count[static_cast<std::size_t>(n.f)];
-    const int u = model_.cell(n.state);
+    const int u = model_.vertex(n.state);
     if (u == q.goal_cell && (vanish_ || n.t >= min_goal_time)) {
       goal_id = top.id;
       out.lower_bound = lb_now;
@@ -174,7 +167,7 @@ LowLevelResult LowLevel::search(const LowLevelQuery& q, const std::function<bool
     const int parent_conflicts = n.conflicts;
     const int parent_state = n.state;
     model_.for_each_successor(parent_state, [&](int s) {
-      const int v = model_.cell(s);
+      const int v = model_.vertex(s);
       if (blocked(u, v, t1)) return;
       const int h = h_of(v, t1);
       if (h >= DistanceTable::kUnreachable) return;
@@ -204,7 +197,7 @@ LowLevelResult LowLevel::search(const LowLevelQuery& q, const std::function<bool
   if (goal_id < 0) return out;
   out.found = true;
   for (int id = goal_id; id != -1; id = nodes[static_cast<std::size_t>(id)].parent) {
-    out.cells.push_back(model_.cell(nodes[static_cast<std::size_t>(id)].state));
+    out.cells.push_back(model_.vertex(nodes[static_cast<std::size_t>(id)].state));
   }
   std::reverse(out.cells.begin(), out.cells.end());
   // A path that waited on its goal before the end stops at its last arrival.

@@ -1,9 +1,9 @@
 // The single-agent search under the solvers: space-time A* (w = 1) or focal search (w > 1,
 // Barer et al., "Suboptimal variants of the conflict-based search algorithm", SoCS 2014) over
 // (agent state, time step), with
-//   - the agent's constraints from the CBS tree (vertex: not on cell c at time t; edge: not the
+//   - the agent's constraints from the CBS tree (vertex: not on vertex c at time t; edge: not the
 //     move u -> v ending at time t),
-//   - reserved robots (hard: never share a cell or swap with one),
+//   - reserved robots (hard: never share a vertex or swap with one),
 //   - a conflict-avoidance table of the other agents' paths (soft: among equally good nodes, the
 //     fewest conflicts first; with w > 1 it is FOCAL's order),
 //   - the exact distance to the goal as heuristic (BFS, instance.hpp).
@@ -23,8 +23,8 @@ namespace swarm::planner::mapf::detail {
 struct Constraint {
   enum Kind : int { Vertex = 0, Edge = 1 } kind = Vertex;
   int agent = 0;
-  int cell = 0;   // Vertex: the cell; Edge: the cell moved from
-  int cell2 = 0;  // Edge: the cell moved to
+  int cell = 0;   // Vertex: the vertex; Edge: the vertex moved from
+  int cell2 = 0;  // Edge: the vertex moved to
   int time = 0;   // Vertex: the time step; Edge: the step's end
 };
 
@@ -41,7 +41,7 @@ struct LowLevelQuery {
 struct LowLevelResult {
   bool found = false;
   bool stopped = false;      // the stop predicate fired
-  CellPath cells;            // cell index per time step
+  CellPath cells;            // vertex per time step
   int cost = 0;              // path_cost of the result
   int lower_bound = 0;       // min f in OPEN when the goal was taken (<= optimal cost)
   int conflicts = 0;         // with `avoid`, along the path
@@ -59,10 +59,9 @@ class LowLevel {
   [[nodiscard]] int reserved_last_use(int cell) const;
 
  private:
-  const Instance& in_;
   const AgentModel& model_;
   const PathTable* reserved_;
-  std::vector<int> reserved_last_;  // per cell: last time step a reserved robot is there (-1 none)
+  std::vector<int> reserved_last_;  // per vertex: last time step a reserved robot is there (-1 none)
   bool vanish_;
 };
 

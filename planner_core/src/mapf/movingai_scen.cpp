@@ -1,34 +1,23 @@
 #include "swarm/planner/mapf/movingai_scen.hpp"
 
-#include <charconv>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 
+#include "file_fields.hpp"
 #include "swarm/planner/astar.hpp"
 
 namespace swarm::planner::mapf {
 namespace {
 
-[[noreturn]] void fail(const std::string& file, int line, const std::string& what) {
-  throw MapFileError(file + (line > 0 ? ":" + std::to_string(line) : "") + ": " + what);
-}
-
-bool parse_int(const std::string& s, int& out) {
-  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-  return ec == std::errc() && p == s.data() + s.size() && !s.empty();
-}
-
-bool parse_double(const std::string& s, double& out) {
-  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-  return ec == std::errc() && p == s.data() + s.size() && !s.empty() && std::isfinite(out);
-}
+using detail::fail;
+using detail::parse_double;
+using detail::parse_int;
 
 std::string file_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
-std::string xy(int x, int y) { return "(" + std::to_string(x) + ", " + std::to_string(y) + ")"; }
+std::string xy(int x, int y) { return planner::to_string(Cell{x, y}); }
 
 }  // namespace
 

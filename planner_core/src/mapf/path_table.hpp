@@ -1,8 +1,9 @@
-// Who is where when: the timed paths of a set of agents, indexed by (cell, time step), for the
+// Who is where when: the timed paths of a set of agents, indexed by (vertex, time step), for the
 // solvers' conflict checks, conflict-avoidance tie-breaking and reservation lookups. An agent that
-// "parks" stays on its last cell for ever after its path (GoalRule::Stay, reserved robots); one
-// that does not leaves the table when its path ends (GoalRule::Vanish). Paths are cell indices
-// (OccupancyGrid::index) per time step and must outlive the table. Not thread-safe to build.
+// "parks" stays on its last vertex for ever after its path (GoalRule::Stay, reserved robots); one
+// that does not leaves the table when its path ends (GoalRule::Vanish). Paths are vertices of the
+// instance's graph (InstanceGraph, instance.hpp) per time step and must outlive the table. Not
+// thread-safe to build.
 #pragma once
 
 #include <algorithm>
@@ -12,7 +13,7 @@
 
 namespace swarm::planner::mapf::detail {
 
-using CellPath = std::vector<int>;  // cell index per time step
+using CellPath = std::vector<int>;  // vertex (InstanceGraph, instance.hpp) per time step
 
 class PathTable {
  public:

@@ -7,14 +7,13 @@
 namespace swarm::planner::mapf {
 namespace {
 
-std::string text(Cell c) { return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")"; }
-
 std::string entity_name(int e) {
   return e >= 0 ? "agent " + std::to_string(e) : "reserved path " + std::to_string(-1 - e);
 }
 
-// The path's own legality: endpoints, moves (motion.hpp) and, under the paper's rules, where and
-// how long it waits and that it never turns back inside a passage.
+// The path's own legality: endpoints, moves (step_problem: motion.hpp on a grid, edges on a graph)
+// and, under the paper's rules, where and how long it waits and that it never turns back inside a
+// passage.
 void check_path(const Instance& in, int a, const Path& p, std::vector<PathProblem>& out) {
   const auto problem = [&](int t, std::string what) { out.push_back({a, t, std::move(what)}); };
   if (p.empty()) {
@@ -23,14 +22,14 @@ void check_path(const Instance& in, int a, const Path& p, std::vector<PathProble
   }
   const Cell start = in.starts[static_cast<std::size_t>(a)];
   const Cell goal = in.goals[static_cast<std::size_t>(a)];
-  if (p.front() != start) problem(0, "starts at " + text(p.front()) + ", not at its start " + text(start));
+  const auto name = [&](Cell c) { return cell_name(in, c); };
+  if (p.front() != start) problem(0, "starts at " + name(p.front()) + ", not at its start " + name(start));
   if (p.back() != goal) {
-    problem(static_cast<int>(p.size()) - 1, "ends at " + text(p.back()) + ", not at its goal " + text(goal));
+    problem(static_cast<int>(p.size()) - 1, "ends at " + name(p.back()) + ", not at its goal " + name(goal));
   }
   for (std::size_t t = 1; t < p.size(); ++t) {
-    const MoveCheck m = in.motion.check(in.map, p[t - 1], p[t]);
-    if (m != MoveCheck::Ok && m != MoveCheck::Wait) {
-      problem(static_cast<int>(t), "step " + text(p[t - 1]) + " -> " + text(p[t]) + ": " + to_string(m));
+    if (const std::string why = step_problem(in, p[t - 1], p[t]); !why.empty()) {
+      problem(static_cast<int>(t), "step " + name(p[t - 1]) + " -> " + name(p[t]) + ": " + why);
     }
   }
   if (in.rules.at_goal == GoalRule::Vanish) {
@@ -52,15 +51,15 @@ void check_path(const Instance& in, int a, const Path& p, std::vector<PathProble
     const bool middle = is_passage_middle(in.map, p[begin]);
     if (waits > 0 && !(last_run && p[begin] == goal && in.rules.at_goal == GoalRule::Stay)) {
       if (!middle && moved) {
-        problem(static_cast<int>(begin) + 1, "waits at intersection " + text(p[begin]) +
+        problem(static_cast<int>(begin) + 1, "waits at intersection " + planner::to_string(p[begin]) +
                                                  " after it has moved (stops only in passage middles)");
       } else if (waits % 2 != 0) {
-        problem(static_cast<int>(begin) + 1, "stops " + std::to_string(waits) + " steps at " + text(p[begin]) +
+        problem(static_cast<int>(begin) + 1, "stops " + std::to_string(waits) + " steps at " + planner::to_string(p[begin]) +
                                                  " (stops last 2 steps each)");
       }
     }
     if (middle && begin > 0 && !last_run && p[begin - 1] == p[end]) {
-      problem(static_cast<int>(end), "turns back inside the passage at " + text(p[begin]));
+      problem(static_cast<int>(end), "turns back inside the passage at " + planner::to_string(p[begin]));
     }
     moved = moved || end < p.size();
     begin = end;
@@ -72,9 +71,9 @@ void check_path(const Instance& in, int a, const Path& p, std::vector<PathProble
 std::string describe(const Conflict& c) {
   const std::string who = entity_name(c.a) + " and " + entity_name(c.b);
   if (c.kind == ConflictKind::Vertex) {
-    return "vertex conflict of " + who + " at " + text(c.cell) + ", time " + std::to_string(c.time);
+    return "vertex conflict of " + who + " at " + planner::to_string(c.cell) + ", time " + std::to_string(c.time);
   }
-  return "swap conflict of " + who + " between " + text(c.cell) + " and " + text(c.other) + ", step " +
+  return "swap conflict of " + who + " between " + planner::to_string(c.cell) + " and " + planner::to_string(c.other) + ", step " +
          std::to_string(c.time - 1) + " -> " + std::to_string(c.time);
 }
 
@@ -122,6 +121,8 @@ ValidationReport validate(const Instance& in, const std::vector<Path>& paths) {
     }
     r.conflicts.push_back({kind, name(e), name(f), cell, other, t});
   };
+  // Places outside the map (a graph: cells naming no vertex) are path problems above, not conflicts.
+  const auto placed = [&](Cell c) { return in.graph ? cell_vertex(*in.graph, c) >= 0 : in.map.in_bounds(c); };
   std::vector<int> present;  // entity ids present at t (and so at t - 1: agents only vanish)
   std::vector<Cell> from, to;
   for (int t = 0; t < static_cast<int>(horizon); ++t) {
@@ -130,9 +131,9 @@ ValidationReport validate(const Instance& in, const std::vector<Path>& paths) {
     to.clear();
     for (int e = 0; e < total; ++e) {
       Cell now, before;
-      if (!position_at(path_of(e), t, vanish && e < n, now) || !in.map.in_bounds(now)) continue;
+      if (!position_at(path_of(e), t, vanish && e < n, now) || !placed(now)) continue;
       // At t = 0 (and for an entity that was not there before) the step is a wait: no swap.
-      if (t == 0 || !position_at(path_of(e), t - 1, vanish && e < n, before) || !in.map.in_bounds(before)) before = now;
+      if (t == 0 || !position_at(path_of(e), t - 1, vanish && e < n, before) || !placed(before)) before = now;
       present.push_back(e);
       from.push_back(before);
       to.push_back(now);

@@ -2,7 +2,8 @@
 //
 // Park & Hwang, "Multi-robot Path Planning Based on Two-stage Genetic Algorithm Using Direction
 // Ordering Chromosome", 2025 (PAPERS.md section 3; shared/seeds/002_3978f293b65c7987.txt). On the
-// warehouse world only (warehouse.hpp: intersections joined by 2-step passages, the paper's rules).
+// warehouse world only (warehouse.hpp: intersections joined by 2-step passages, the paper's rules;
+// anything else, a graph instance included, is Status::Unsupported).
 //   - Chromosome, per robot: a DIRECTION part, a permutation of the moves of a shortest path
 //     between its start and goal intersections (a columns and b rows apart: a + b genes, 1 up,
 //     2 down, 3 right, 4 left; every order is a shortest path, so no detours), and an IDLE part of

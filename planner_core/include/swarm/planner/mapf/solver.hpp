@@ -1,4 +1,5 @@
-// One interface to every MAPF solver: an instance and a stop condition in, a status and a plan out.
+// One interface to every MAPF solver: an instance (a grid or a graph, instance.hpp) and a stop
+// condition in, a status and a plan out.
 //
 //   SolverConfig cfg;                                   // CBS by default
 //   cfg.kind = SolverKind::Ecbs;  cfg.ecbs.w = 1.2;
@@ -24,7 +25,9 @@
 //   cbs.hpp   ECBS: bounded-suboptimal, sum of costs <= w * optimum.
 //   lacam.hpp LaCAM* with PIBT (swap variant): hundreds to thousands of agents, complete; the
 //             first solution by default, refined for the rest of the time on request.
-//   ga.hpp    the paper's direction-ordering GA, two-stage and single-stage, paper world only.
+//   ga.hpp    the paper's direction-ordering GA, two-stage and single-stage, paper world only
+//             (Unsupported on any other grid and on a graph).
+// CBS, ECBS and LaCAM* run on grid and graph instances alike.
 #pragma once
 
 #include <chrono>

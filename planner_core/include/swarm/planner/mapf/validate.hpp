@@ -1,8 +1,9 @@
 // The independent check of a MAPF plan: every solver's output and every test goes through it.
 //
 // It knows nothing of how plans are made. For each agent it checks the path itself: it starts on
-// the agent's start, ends on its goal, and every step is a legal action of the motion model
-// (motion.hpp: a wait, or a move to an adjacent free cell); under the paper's rules
+// the agent's start, ends on its goal, and every step is a legal action (step_problem,
+// instance.hpp: on a grid the motion model's, motion.hpp: a wait, or a move to an adjacent free
+// cell; on a graph a wait on a vertex or a move along an edge); under the paper's rules
 // (WaitRule::PassageMiddles) also that waits happen only in passage middles or at the start before
 // the first move, in blocks of 2 steps, and that no agent turns back inside a passage. Then it
 // counts conflicts over time: at every time step, one VERTEX conflict per pair of agents on one
@@ -11,7 +12,8 @@
 // paths end (GoalRule::Stay) or leave the check once they arrive (Vanish: an agent is still
 // checked at its arrival step). Reserved robots (Instance::reserved) follow their paths and then
 // stay for ever; a conflict with one names it as agent -1 - r. Past the longest path nothing
-// moves, so a lasting overlap there is counted once, at the last time step.
+// moves, so a lasting overlap there is counted once, at the last time step. On a graph instance
+// cells are vertex_cell(v): a conflict "at (3, 0)" is on vertex 3 (path problems say "vertex 3").
 //
 // Thread-safe (pure function).
 //
@@ -41,7 +43,7 @@ struct Conflict {
 struct PathProblem {
   int agent = 0;
   int time = 0;        // the time step where it happens (0 for start/empty problems)
-  std::string what;    // e.g. "step (3, 4) -> (5, 4) is not adjacent"
+  std::string what;    // e.g. "step (3, 4) -> (5, 4): not adjacent", "step vertex 2 -> vertex 5: not adjacent"
 };
 
 struct ValidationReport {
