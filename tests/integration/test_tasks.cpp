@@ -184,5 +184,31 @@ TEST(Tasks, CollectWithALeaderKilledMidwayStillDeliversEveryObject) {
   EXPECT_EQ(p["task"]["resumes"], 1);
 }
 
+// The GCS's process killed mid-task and started again 2 s later (gcs/gcs_node.hpp "Restart"): it
+// replays its journal, the leaders re-send what it missed (GroupTask::gcs_back: covered cells,
+// robots' progress, what is known of each object), and every task still ends complete with the
+// simulator's ground truth whole.
+TEST(Tasks, EveryTaskCompletesAcrossARestartOfTheGcs) {
+  {
+    const auto m = run_task("cover_gcs_restart", "cover-given.pbtxt", "", "--kill gcs@40+2");
+    EXPECT_EQ(m["faults"]["gcs_restarts"].size(), 1u);
+    EXPECT_DOUBLE_EQ(phase_named(m, "cover")["task"]["covered_fraction"].get<double>(), 1.0);
+  }
+  {
+    const auto m = run_task("mapf_gcs_restart", "mapf-small.pbtxt", "", "--kill gcs@10+2");
+    EXPECT_EQ(m["faults"]["gcs_restarts"].size(), 1u);
+    const auto& p = phase_named(m, "mapf");
+    EXPECT_EQ(p["task"]["robots_at_goal"], 6);
+    EXPECT_EQ(p["task"]["conflicts"], 0);
+  }
+  {
+    const auto m = run_task("collect_gcs_restart", "small.pbtxt", "", "--mission collect --max-ticks 3000 --kill gcs@30+2");
+    EXPECT_EQ(m["faults"]["gcs_restarts"].size(), 1u);
+    const auto& p = phase_named(m, "collect");
+    EXPECT_EQ(p["task"]["delivered"], p["task"]["objects"]);
+    EXPECT_EQ(p["task"]["wrong_drops"], 0);
+  }
+}
+
 }  // namespace
 }  // namespace swarm::test
