@@ -10,6 +10,8 @@
 #   SWARM_DOMAIN     DDS domain id, 0..232                            (default 0)
 #   SWARM_PARTITION  DDS partition                                    (default swarm)
 #   SWARM_PROGRESS   bar | plain | none                               (gcs; default plain)
+#   SWARM_RESUME     auto | never (gcs; default auto: a GCS container started again mid-run
+#                    resumes from SWARM_RUN_DIR/gcs.journal, see below)
 #   SWARM_DISCOVERY_SERVER  HOST:PORT of the run's Fast DDS discovery server (the compose files:
 #                    discovery:11811): the role is its client (--discovery-server). Unset: simple
 #                    discovery (SPDP multicast, TTL 1, on the container's network).
@@ -98,6 +100,19 @@ case $ROLE in
       *) fail "SWARM_PROGRESS='$progress' is not bar, plain or none" ;;
     esac
     role_flags="--progress $progress"
+    # A GCS container started again mid-run (docker start / restart after a crash) resumes from
+    # its journal (gcs/gcs_node.hpp "Restart"): the results volume holds this run's journal and no
+    # metrics.json written after it. SWARM_RESUME=never starts afresh regardless.
+    resume=${SWARM_RESUME:-auto}
+    case $resume in
+      auto | never) ;;
+      *) fail "SWARM_RESUME='$resume' is not auto or never" ;;
+    esac
+    if [ "$resume" = auto ] && [ -s "$run_dir/gcs.journal" ] &&
+      [ -z "$(find "$run_dir" -maxdepth 1 -name metrics.json -newer "$run_dir/gcs.journal" 2>/dev/null)" ]; then
+      echo "swarm-entrypoint: $run_dir/gcs.journal is a running mission's: the GCS resumes it"
+      role_flags="$role_flags --resume"
+    fi
     ;;
   leader)
     need_id SWARM_GROUP "${SWARM_GROUP:-}" "group id (0..groups-1)"

@@ -2,7 +2,9 @@
 // as over DDS, stepped in one thread.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <vector>
 
 #include "swarm/comm/fake_bus.hpp"
@@ -71,6 +73,103 @@ TEST(LockstepFake, ALateRejoinLeavesNoPerTickBookkeepingOverALongRun) {
   ASSERT_EQ(clock.losses().size(), 1u);
   EXPECT_EQ(clock.losses()[0].tick, kLost);
   EXPECT_EQ(clock.losses()[0].rejoined_tick, kBack);
+}
+
+// A restarted GCS (lockstep.hpp "Restart"): the first process journals what its handlers got; it
+// dies at tick 10 and the run goes on without it; a new process replays the journal (its handler
+// sees exactly what the dead one saw, its sends muted), announces itself, is admitted at the next
+// clock (counted_from) and counts only what is stamped from then on, so the barrier never waits for
+// what the dead process had heard; ten more ticks run, and the loss is recorded as a restart.
+TEST(LockstepFake, ARestartedAgentReplaysItsJournalAndRejoinsAtTheNextClock) {
+  ::setenv("SWARM_STALL_TIMEOUT", "2", 0);
+  const Topology t(1, 1);  // robot 0, the GCS 1, the simulator 2
+  LinkTable links;
+  FakeNetwork net;
+  FakeBus sim_bus(net), robot_bus(net), gcs_bus(net), restarted_bus(net);
+  LockstepClock clock(sim_bus, t, links);
+  LockstepAgent robot(robot_bus, t, links, 0);
+  auto& to_gcs = robot.advertise<msgs::Heartbeat>(topic::kHeartbeat, LinkClass::LeaderGcs, {t.gcs()});
+  std::vector<std::uint32_t> heard;  // the stamp ticks of what the first GCS process handled
+  auto gcs = std::make_unique<LockstepAgent>(gcs_bus, t, links, t.gcs());
+  gcs->subscribe<msgs::Heartbeat>(topic::kHeartbeat, LinkClass::LeaderGcs,
+                                  [&](const msgs::Heartbeat& h) { heard.push_back(h.header().tick()); });
+  auto& from_gcs = gcs->advertise<msgs::Heartbeat>("gcs_out", LinkClass::LeaderGcs, {0});
+  robot.subscribe<msgs::Heartbeat>("gcs_out", LinkClass::LeaderGcs, [](const msgs::Heartbeat&) {});
+  const std::string journal = ::testing::TempDir() + "/restart_test.journal";
+  std::remove(journal.c_str());
+  gcs->journal_to(journal);
+  robot.announce_ready();
+  gcs->announce_ready();
+  clock.wait_ready();
+
+  auto robot_tick = [&] {
+    ASSERT_NE(robot.begin_tick(), nullptr);
+    msgs::Heartbeat h;
+    to_gcs.send(h);
+    robot.end_tick();
+  };
+  for (std::uint32_t k = 0; k < 10; ++k) {
+    clock.begin_tick(k);
+    clock.publish_clock(k, one_robot(), false);
+    robot_tick();
+    ASSERT_NE(gcs->begin_tick(), nullptr);
+    msgs::Heartbeat h;
+    from_gcs.send(h);
+    gcs->end_tick();
+    ASSERT_FALSE(clock.wait_done(k));
+  }
+  net.disconnect(gcs_bus);  // the process dies at tick 10
+  ASSERT_TRUE(clock.is_lost(t.gcs()));
+  for (std::uint32_t k = 10; k < 20; ++k) {
+    clock.begin_tick(k);
+    clock.publish_clock(k, one_robot(), false);
+    robot_tick();
+    ASSERT_FALSE(clock.wait_done(k));
+  }
+  const std::vector<std::uint32_t> before = heard;
+  ASSERT_EQ(before.size(), 9u);  // stamped 0..8: each is handled the tick after it was sent
+
+  // The new process: the same subscriptions, then the journal, then the run.
+  std::vector<std::uint32_t> replayed;
+  LockstepAgent again(restarted_bus, t, links, t.gcs());
+  again.subscribe<msgs::Heartbeat>(topic::kHeartbeat, LinkClass::LeaderGcs,
+                                   [&](const msgs::Heartbeat& h) { replayed.push_back(h.header().tick()); });
+  auto& from_again = again.advertise<msgs::Heartbeat>("gcs_out", LinkClass::LeaderGcs, {0});
+  int steps = 0;
+  const JournalRestart r = again.replay_journal(journal, [&](const msgs::Clock&) {
+    ++steps;
+    msgs::Heartbeat h;
+    from_again.send(h);  // muted: the robot must not receive it twice
+  });
+  EXPECT_EQ(r.replayed_ticks, 10u);
+  EXPECT_EQ(steps, 10);
+  EXPECT_EQ(replayed, before);
+  EXPECT_EQ(again.traffic().snapshot().size(), 2u);  // the replayed sends and receipts are counted
+  again.rejoin();
+  again.announce_ready();
+  for (std::uint32_t k = 20; k < 30; ++k) {
+    clock.begin_tick(k);
+    clock.publish_clock(k, one_robot(), false);
+    robot_tick();
+    const msgs::Clock* c = again.begin_tick();
+    ASSERT_NE(c, nullptr);
+    EXPECT_EQ(c->tick(), k);
+    EXPECT_EQ(c->counted_from().at(t.gcs()), 20u);
+    again.end_tick();
+    ASSERT_FALSE(clock.wait_done(k));
+  }
+  // From tick 21 on it handles the robot's messages stamped from 20 on: none from its outage.
+  EXPECT_EQ(replayed.size(), before.size() + 9);
+  EXPECT_EQ(replayed.back(), 28u);
+  ASSERT_EQ(clock.losses().size(), 1u);
+  EXPECT_EQ(clock.losses()[0].tick, 10u);
+  EXPECT_EQ(clock.losses()[0].rejoined_tick, 20u);
+  EXPECT_TRUE(clock.losses()[0].restarted);
+  // The journal now holds the replayed ticks, the restart and the new ticks.
+  const JournalContents j = read_journal(journal);
+  EXPECT_EQ(j.ticks.size(), 20u);
+  ASSERT_EQ(j.restarts.size(), 1u);
+  EXPECT_EQ(j.restarts[0].replayed_ticks, 10u);
 }
 
 }  // namespace
