@@ -101,14 +101,16 @@ case $ROLE in
     esac
     role_flags="--progress $progress"
     # A GCS container started again mid-run (docker start / restart after a crash) resumes from
-    # its journal (gcs/gcs_node.hpp "Restart"): the results volume holds this run's journal and no
-    # metrics.json written after it. SWARM_RESUME=never starts afresh regardless.
+    # its journal (gcs/gcs_node.hpp "Restart"): the results volume holds a journal written in the
+    # last 2 minutes (a running mission's: it grows every tick; an older one is a past run's left
+    # in a reused volume) and no metrics.json written after it. SWARM_RESUME=never starts afresh.
     resume=${SWARM_RESUME:-auto}
     case $resume in
       auto | never) ;;
       *) fail "SWARM_RESUME='$resume' is not auto or never" ;;
     esac
     if [ "$resume" = auto ] && [ -s "$run_dir/gcs.journal" ] &&
+      [ -n "$(find "$run_dir" -maxdepth 1 -name gcs.journal -mmin -2 2>/dev/null)" ] &&
       [ -z "$(find "$run_dir" -maxdepth 1 -name metrics.json -newer "$run_dir/gcs.journal" 2>/dev/null)" ]; then
       echo "swarm-entrypoint: $run_dir/gcs.journal is a running mission's: the GCS resumes it"
       role_flags="$role_flags --resume"

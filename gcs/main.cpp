@@ -17,8 +17,7 @@ int main(int argc, char** argv) {
     const std::string journal = gcs::journal_path(options.run_dir);
     if (options.resume) {
       // A restart (gcs_node.hpp "Restart"): the old process's inputs again, then back into the run.
-      (void)agent.replay_journal(journal, [&](const msgs::Clock& clock) { node.step(clock); });
-      node.resumed(comm::read_journal(journal).restarts);
+      node.resumed(agent.replay_journal(journal, [&](const msgs::Clock& clock) { node.step(clock); }));
       agent.rejoin();
     } else {
       agent.journal_to(journal);

@@ -367,7 +367,8 @@ class Supervisor {
       if (r < 0 && errno == EINTR) continue;
       c.running = false;
       if (r < 0) continue;  // someone else reaped it; nothing to report
-      const bool planned = (c.spec->killed_on_purpose && WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) ||
+      // A process started again is not killed on purpose a second time.
+      const bool planned = (c.spec->killed_on_purpose && !c.restarted && WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) ||
                            (c.spec->service && retiring_);
       // A service ends only when told to: ending by itself (even with status 0) is a failure.
       const bool failed = (!(WIFEXITED(status) && WEXITSTATUS(status) == 0) || (c.spec->service && !retiring_)) &&

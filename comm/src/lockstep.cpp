@@ -77,7 +77,9 @@ void Mailbox::arrive(const msgs::Stamp& stamp, std::uint32_t deliver_tick, doubl
     std::lock_guard<std::mutex> lock(mutex_);
     // Real time waits for nobody, so nothing is counted (the counts would only grow).
     if (!links_.realtime) (stamp.sender() == topology_.sim() ? sim_arrivals_ : agent_arrivals_).add(stamp.tick());
-    if (keep) held_.push_back({deliver_tick, due, order, stamp.sender(), stamp.seq(), std::move(run), std::move(bytes)});
+    if (keep) {
+      held_.push_back({deliver_tick, due, order, stamp.sender(), stamp.seq(), std::move(run), std::move(bytes), stamp.tick()});
+    }
   }
   arrived_.notify_all();
 }
@@ -103,6 +105,9 @@ void Mailbox::count_from(std::uint32_t k) {
   std::lock_guard<std::mutex> lock(mutex_);
   agent_arrivals_.count_from(k);
   sim_arrivals_.count_from(k);
+  // What came before k is the dead process's business (its journal replayed it), and whether it
+  // reached this one depended on timing: dropped, so the inputs from k on are those counted.
+  std::erase_if(held_, [k](const Held& h) { return h.stamp_tick < k; });
 }
 
 void Mailbox::journal_to(const std::string& path, std::uint64_t keep_bytes) {
@@ -287,15 +292,18 @@ void LockstepAgent::say_ready() {
 
 void LockstepAgent::wait_for_join() {
   std::unique_lock<std::mutex> lock(mutex_);
-  // The first clock heard is older than the one that admits this process: any earlier admission
-  // (counted_from) was a dead process's.
-  std::optional<std::uint32_t> first_heard;
+  // Admitted: a clock names a tick to count from after the ticks the journal held (an earlier one
+  // was a dead process's). It may name a clock this process never heard (DDS had not matched it
+  // yet): then it starts at the first one it has.
+  std::uint32_t count_from_tick = 0;
   auto admitted = [&]() -> std::optional<std::uint32_t> {
     for (const auto& [tick, c] : clocks_) {
-      if (!first_heard) first_heard = tick;
       if (c.stop()) return tick;
-      if (c.counted_from().size() > self_ && c.counted_from()[self_] > 0 && c.counted_from()[self_] >= *first_heard) {
-        return c.counted_from()[self_];
+      if (c.counted_from().size() <= self_) continue;
+      const std::uint32_t from = c.counted_from()[self_];
+      if (from > 0 && (!replayed_to_ || from > *replayed_to_)) {
+        count_from_tick = from;
+        return tick;
       }
     }
     return std::nullopt;
@@ -316,12 +324,13 @@ void LockstepAgent::wait_for_join() {
   next_tick_ = *join;
   rejoining_ = false;
   lock.unlock();
-  count_from(*join);
-  std::fprintf(stderr, "%s: joins the run again at tick %u\n", topology_.name_of(self_).c_str(), *join);
+  count_from(count_from_tick);
+  std::fprintf(stderr, "%s: joins the run again at tick %u (counting from tick %u)\n", topology_.name_of(self_).c_str(),
+               *join, count_from_tick);
 }
 
-JournalRestart LockstepAgent::replay_journal(const std::string& path,
-                                             const std::function<void(const msgs::Clock&)>& step) {
+std::vector<JournalRestart> LockstepAgent::replay_journal(const std::string& path,
+                                                          const std::function<void(const msgs::Clock&)>& step) {
   const auto t0 = std::chrono::steady_clock::now();
   const JournalContents j = read_journal(path);
   replaying_ = true;
@@ -335,9 +344,12 @@ JournalRestart LockstepAgent::replay_journal(const std::string& path,
   (void)take_sent_counts();
   JournalRestart r{static_cast<std::uint32_t>(j.ticks.size()),
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
+  if (!j.ticks.empty()) replayed_to_ = j.ticks.back().tick;
   journal_to(path, j.complete_bytes);
   journal_->restart(j.ticks.empty() ? 0 : j.ticks.back().tick, r);
-  return r;
+  std::vector<JournalRestart> all = j.restarts;
+  all.push_back(r);
+  return all;
 }
 
 const msgs::Clock* LockstepAgent::begin_tick() {
@@ -408,6 +420,7 @@ LockstepClock::LockstepClock(Bus& bus, const Topology& topology, const LinkTable
       next_undone_(topology.agents(), 0),
       leaders_(topology.leaders()),
       restarting_(topology.agents(), false),
+      restart_heard_(topology.agents()),
       counted_from_(topology.agents(), 0),
       base_(topology.agents(), 0) {
   ready_[topology.sim()] = true;
@@ -431,6 +444,7 @@ void LockstepClock::on_done(msgs::Done&& d, WriterId writer) {
       if (!lost_[a]) losses_.push_back({a, next_undone_[a], 0.0, std::nullopt, false});
       lost_[a] = true;
       restarting_[a] = true;
+      restart_heard_[a] = std::chrono::steady_clock::now();
       writer_of_[a] = writer;
       arrived_.notify_all();
       return;
@@ -460,7 +474,11 @@ void LockstepClock::on_done(msgs::Done&& d, WriterId writer) {
         seen[d.agent()] = true;
       }
       next_undone_[d.agent()] = std::max(next_undone_[d.agent()], d.tick() + 1);
-      for (std::size_t a = 0; a < d.sent().size() && a < from_agents_.size(); ++a) from_agents_[a] += d.sent()[a];
+      // A restarted receiver counts only messages stamped from its join tick on: a late Done of an
+      // earlier tick (an agent catching up after a cut) is not for it.
+      for (std::size_t a = 0; a < d.sent().size() && a < from_agents_.size(); ++a) {
+        if (d.tick() >= counted_from_[a]) from_agents_[a] += d.sent()[a];
+      }
       if (d.mission_complete()) complete_ = true;
     }
   }
@@ -551,17 +569,19 @@ void LockstepClock::publish_clock(std::uint32_t k, const std::vector<msgs::Robot
   {
     std::lock_guard<std::mutex> lock(mutex_);
     started_ = true;
+    const auto now = std::chrono::steady_clock::now();
     for (int a = 0; a < topology_.agents(); ++a) {
-      if (restarting_[a]) {
-        // A restarted process joins now: it counts the messages stamped from k on, and so do we
-        // (every Done of tick k - 1 is in: the agents' messages stamped before k are counted).
+      // A restarted process joins at the first clock a while after its hello (its peers' writers
+      // have matched its readers by then, as its readers matched theirs before it spoke). It
+      // counts the messages stamped from k on, and so do we (every Done of tick k - 1 is in: the
+      // agents' messages stamped before k are counted). It is waited for again from its first
+      // Done, as a cut-off agent is (it may have missed this very clock and start at a later one).
+      if (restarting_[a] && now - restart_heard_[a] >= kRestartSettle) {
         restarting_[a] = false;
-        lost_[a] = false;
         counted_from_[a] = k;
         base_[a] = from_agents_[a] + from_sim_[a];
         for (auto it = losses_.rbegin(); it != losses_.rend(); ++it) {
           if (it->agent != a) continue;
-          it->rejoined_tick = k;
           it->restarted = true;
           break;
         }

@@ -389,7 +389,7 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
   // new process replayed. The n-th of each is the n-th restart.
   std::size_t nth = 0;
   for (const auto& l : sim.agents_lost) {
-    if (l.agent != t.name_of(t.gcs())) continue;
+    if (l.agent != t.name_of(t.gcs()) || !l.restarted) continue;
     record::GcsRestart r{l.missed_tick, l.detection_seconds, l.rejoined_tick, 0, 0.0};
     if (nth < restarts_.size()) {
       r.replayed_ticks = restarts_[nth].replayed_ticks;

@@ -145,7 +145,14 @@ void CollectGroupTask::resume(GroupContext& ctx) {
   }
   std::fprintf(stderr, "leader-%d: resumes %zu objects (%zu lying)\n", group_, mine_.size(), lying.size());
   share(lying, ctx);
-  for (int i : living) plan(i, ctx);
+  for (int i : living) {
+    plan(i, ctx);
+    if (robots_[static_cast<std::size_t>(i)].busy) continue;
+    // No tour for it: it must not drive on along the old leader's, picking up what is now
+    // another's. An empty route stops it where it stands.
+    msgs::Route stop;
+    robots_[static_cast<std::size_t>(i)].route_id = ctx.out.route(i, stop);
+  }
 }
 
 void CollectGroupTask::share(const std::vector<int>& ids, GroupContext& ctx) {
@@ -309,7 +316,7 @@ void CollectGroupTask::reroute(int index, int waits, GroupContext& ctx) {
 
 void CollectGroupTask::on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) {
   Robot& r = robots_[static_cast<std::size_t>(index)];
-  if (p.id != r.route_id) return;
+  if (p.id != r.route_id || r.cells.empty()) return;  // (a stop has no cells)
   if (p.step > r.step) r.moved_tick = ctx.clock.tick();
   r.step = std::max(r.step, p.step);
   for (const auto& [id, step] : r.picks) {

@@ -146,10 +146,14 @@ void LeaderNode::enter_phase() {
   next_phase_.reset();
 }
 
-void LeaderNode::shadow(const msgs::Clock&) {
+void LeaderNode::shadow(const msgs::Clock& clock) {
   // The current phase's orders for this group stay (a take-over replays them); nothing else
-  // queued is this robot's business while another leads.
+  // queued is this robot's business while another leads. A restart of the GCS meanwhile is the
+  // leader's to answer.
   enter_phase();
+  if (const auto& from = clock.counted_from(); from.size() > topology_.gcs()) {
+    gcs_back_at_ = std::max(gcs_back_at_, from[topology_.gcs()]);
+  }
   std::erase_if(orders_, [this](const msgs::TaskOrder& o) { return o.phase() != phase_; });
   statuses_.clear();
   progress_.clear();

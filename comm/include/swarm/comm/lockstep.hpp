@@ -158,6 +158,7 @@ class Mailbox {
     std::uint32_t seq;
     std::function<void()> run;
     std::function<std::string()> bytes;  // the message's CDR, when journalling
+    std::uint32_t stamp_tick;
   };
   struct ReaderEntry {
     std::shared_ptr<void> reader;
@@ -343,15 +344,19 @@ class LockstepAgent : public Mailbox {
   // A restarted process (see Restart above), before announce_ready: runs `step` on every complete
   // tick of the journal at `path` with its messages handed to their handlers, sends muted; then
   // journals on after them (journal_to) and marks the restart. Returns what it replayed.
-  JournalRestart replay_journal(const std::string& path, const std::function<void(const msgs::Clock&)>& step);
-  // This process is a new one of an agent that was running: its first tick is the one the clock
-  // master names it back at (Clock.counted_from), and it counts only messages from then on.
+  // Returns every restart the journal records, this one last.
+  std::vector<JournalRestart> replay_journal(const std::string& path,
+                                             const std::function<void(const msgs::Clock&)>& step);
+  // This process is a new one of an agent that was running: it counts only messages stamped from
+  // the tick the clock master names it back at (Clock.counted_from, after the replayed ticks) and
+  // acts from the first clock it has from then on.
   void rejoin() { rejoining_ = true; }
 
  private:
   void say_ready();
   void wait_for_join();  // a rejoining process: until the clock that admits it is here
   bool rejoining_ = false;
+  std::optional<std::uint32_t> replayed_to_;  // the last tick the journal held
 
   std::unique_ptr<Writer<msgs::Done>> done_writer_;
   std::unique_ptr<Reader<msgs::Clock>> clock_reader_;
@@ -427,6 +432,8 @@ class LockstepClock : public Mailbox {
   // process waits to be admitted, and from which tick and which count on each one's counts run.
   std::map<AgentId, WriterId> writer_of_;
   std::vector<bool> restarting_;
+  std::vector<std::chrono::steady_clock::time_point> restart_heard_;  // its new process's first hello
+  static constexpr std::chrono::milliseconds kRestartSettle{500};
   std::vector<std::uint32_t> counted_from_;
   std::vector<std::uint64_t> base_;
   bool started_ = false;  // the first clock is out

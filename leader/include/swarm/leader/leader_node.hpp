@@ -62,9 +62,9 @@ class LeaderNode {
   std::vector<std::unique_ptr<GroupTask>> tasks_;
   std::uint32_t phase_ = 0;
   bool started_ = false;
-  bool taking_over_ = false;
+  bool taking_over_ = false;      // the next start() is a take-over's (GroupTask::took_over)
   std::uint32_t gcs_back_at_ = 0;  // the GCS's latest restart seen (Clock.counted_from)
-  std::optional<std::vector<std::uint32_t>> own_carrying_;  // what the own robot held, as last told the task  // the next start() is a take-over's (GroupTask::took_over)
+  std::optional<std::vector<std::uint32_t>> own_carrying_;  // what the own robot held, as last told the task
   std::optional<std::uint32_t> next_phase_;
   std::optional<std::uint32_t> round_;
   std::uint32_t last_round_ = 0;
