@@ -3,7 +3,8 @@
 #
 # Builds swarm with a sanitizer into its own folder (build-address: AddressSanitizer +
 # UndefinedBehaviorSanitizer; build-thread: ThreadSanitizer), then runs every unit test, one multi-process mission over real
-# DDS and one multi-process run with a killed member, and exits non-zero if any test fails or any
+# DDS, one multi-process run with a killed member and one whose GCS is killed and restarted (its
+# journal replayed), and exits non-zero if any test fails or any
 # process (tests, and every role process they start) reported anything. Reports go to files under
 # build-<kind>/sanitizer-reports/ (one per process), shown at the end. Suppressions
 # (scripts/sanitize/*.supp) may only name code wholly inside Fast DDS and its libraries, each with
@@ -59,7 +60,7 @@ cd "$build"
 # The unit tests, then one mission and one killed member over real DDS (multi-process).
 ctest --output-on-failure --timeout 900 -j "${SWARM_TEST_JOBS:-2}" -L unit "$@" || status=1
 ctest --output-on-failure --timeout 900 \
-  -R '^(IntegrationRun\.SmallMissionCompletesWithEveryOutput|Faults\.KilledMemberIsNoticedAndTheMissionCompletes)$' \
+  -R '^(IntegrationRun\.SmallMissionCompletesWithEveryOutput|Faults\.KilledMemberIsNoticedAndTheMissionCompletes|Faults\.KilledGcsIsRestartedAndTheMissionCompletesWithTheSameMap)$' \
   "$@" || status=1
 cd "$src"
 
