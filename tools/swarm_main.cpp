@@ -51,7 +51,9 @@ int main(int argc, char** argv) {
   auto* realtime_opt = run_cmd->add_flag("--realtime", realtime,
                                          "Real-time mode: ticks at a wall rate, link delays in ms (delay_ms)");
   auto* tick_ms_opt = run_cmd->add_option("--tick-ms", tick_ms, "Real-time tick length in milliseconds");
-  run_cmd->add_option("--kill", o.kills, "Crash a member at a tick, e.g. member-1-2@100 (repeatable)");
+  run_cmd->add_option("--kill", o.kills,
+                      "Crash a robot's process at a tick, e.g. member-1-2@100 or leader-1@100 (with a standby), or the "
+                      "GCS's with a restart S seconds later, gcs@40+2 (repeatable)");
   run_cmd->add_option("--cut", o.cuts, "Cut an agent's links for ticks A..B, e.g. leader-1@80-180 (repeatable)");
   run_cmd->add_option("--freeze", o.freezes,
                       "Stop a robot's process at a tick for S seconds (a real DDS outage), e.g. leader-1@80+10 "
