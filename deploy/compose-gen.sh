@@ -113,6 +113,8 @@ generate() {
 #   SWARM_DOMAIN         DDS domain id (default 0); the network is the run's own, so 0 is safe
 #   SWARM_STALL_TIMEOUT  seconds a role waits for discovery or a peer before failing (default $stall:
 #                        3 s per container, at least 60, since \`up\` starts them one by one)
+#   SWARM_DDS_LOG        "security": every role logs each DDS peer's discovery and authentication
+#                        as it happens, Fast DDS's warnings and its security log
 # Results: the GCS writes metrics.json and run.pb to the named volume "results" (/results).
 EOF
   if [[ -n $certs ]]; then
@@ -153,6 +155,7 @@ x-env: &env
   SWARM_DOMAIN: \${SWARM_DOMAIN:-0}
   SWARM_PARTITION: swarm
   SWARM_STALL_TIMEOUT: \${SWARM_STALL_TIMEOUT:-$stall}
+  SWARM_DDS_LOG: \${SWARM_DDS_LOG:-}
 EOF
   if [[ -n $certs ]]; then
     echo "  SWARM_SECURITY_DIR: /security"

@@ -10,7 +10,7 @@ int main(int argc, char** argv) {
   CLI::App app{"swarm-gcs: ground control station (map fusion, planning rounds, metrics)"};
   comm::add_role_flags(app, options, comm::RoleKind::Gcs);
   return comm::run_role(app, argc, argv, "gcs", [&]() -> int {
-    const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Gcs, "gcs");
+    const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Gcs);
     comm::Participant participant(setup.dds);
     comm::LockstepAgent agent(participant, setup.topology, setup.links, setup.topology.gcs());
     gcs::GcsNode node(agent, setup, options.run_dir, gcs::Progress::parse(options.progress));

@@ -10,7 +10,7 @@ int main(int argc, char** argv) {
   CLI::App app{"swarm-leader: a group leader (a robot plus its group's exploration planner)"};
   comm::add_role_flags(app, options, comm::RoleKind::Leader);
   return comm::run_role(app, argc, argv, "leader", [&]() -> int {
-    const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Leader, "leader");
+    const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Leader);
     comm::Participant participant(setup.dds);
     comm::LockstepAgent agent(participant, setup.topology, setup.links, setup.topology.leader(options.group));
     leader::CandidateNode node(agent, setup, options.group, 0);

@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
   CLI::App app{"swarm-member: group member robots of a swarm run (one per --index)"};
   comm::add_role_flags(app, options, comm::RoleKind::Member);
   return comm::run_role(app, argc, argv, "member", [&]() -> int {
-    const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Member, "member");
+    const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Member);
     std::vector<std::unique_ptr<comm::FaultInjector>> faults;
     std::string names;
     for (const int index : options.indices) {
@@ -67,10 +67,7 @@ int main(int argc, char** argv) {
       }
       names += (names.empty() ? "" : ",") + name;
     }
-    // The participant is named as the process is (load_role's identity: member-G-I, members-G-F-L).
-    comm::DdsOptions dds = setup.dds;
-    dds.name = dds.identity;
-    comm::Participant participant(dds);
+    comm::Participant participant(setup.dds);
     if (options.indices.size() == 1) {
       run_member(participant, setup, options.group, options.indices[0], *faults[0]);
       comm::exit_after_work(names);

@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
   CLI::App app{"swarm-sim: the simulator (ground truth, motion, LiDAR) and clock of a swarm run"};
   comm::add_role_flags(app, options, comm::RoleKind::Sim);
   return comm::run_role(app, argc, argv, "sim", [&]() -> int {
-    const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Sim, "sim");
+    const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Sim);
     comm::Participant participant(setup.dds);
     comm::LockstepClock clock(participant, setup.topology, setup.links);
     sim::SimNode node(clock, setup);

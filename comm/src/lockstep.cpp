@@ -229,19 +229,38 @@ bool Mailbox::outlets_matched(std::string* missing) const {
 
 namespace {
 
-// Polls `ready` until it holds or the stall timeout passes (discovery has no blocking wait).
-template <class Pred>
-void wait_for_discovery(const std::string& who, Pred ready) {
-  const auto deadline = std::chrono::steady_clock::now() + stall_timeout();
-  std::string missing;
-  while (!ready(&missing)) {
-    if (std::chrono::steady_clock::now() > deadline) {
-      throw std::runtime_error(who + ": DDS discovery did not complete in " +
-                               std::to_string(stall_timeout().count()) + " s; still waiting for " + missing);
+// A start-up wait that stalls says what it waits for and how far each DDS peer got (discovered,
+// authenticated: peers.hpp), every 10 s and in its final error, so a stuck secure handshake names
+// the peer and the step instead of only a topic.
+class StartupWait {
+ public:
+  StartupWait(const Bus& bus, std::string who) : bus_(bus), who_(std::move(who)) {}
+
+  // What to print while `missing` is still awaited; throws once the stall timeout has passed.
+  void check(const std::string& doing, const std::string& missing) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now > deadline_) {
+      throw std::runtime_error(who_ + ": " + doing + " did not complete in " + std::to_string(stall_timeout().count()) +
+                               " s; still waiting for " + missing + ". DDS peers: " + peers());
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    if (now >= next_note_) {
+      const auto waited = std::chrono::duration_cast<std::chrono::seconds>(now - start_).count();
+      std::fprintf(stderr, "%s: %s: still waiting for %s after %lld s. DDS peers: %s\n", who_.c_str(), doing.c_str(),
+                   missing.c_str(), static_cast<long long>(waited), peers().c_str());
+      next_note_ = now + kNoteEvery;
+    }
   }
-}
+
+ private:
+  static constexpr std::chrono::seconds kNoteEvery{10};
+  std::string peers() const { return describe_peers(bus_.peers(), bus_.secure()); }
+
+  const Bus& bus_;
+  const std::string who_;
+  const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  const std::chrono::steady_clock::time_point deadline_ = start_ + stall_timeout();
+  std::chrono::steady_clock::time_point next_note_ = start_ + kNoteEvery;
+};
 
 }  // namespace
 
@@ -273,13 +292,17 @@ LockstepAgent::~LockstepAgent() {
 }
 
 void LockstepAgent::announce_ready() {
-  wait_for_discovery(topology_.name_of(self_), [&](std::string* missing) {
+  StartupWait wait(bus_, topology_.name_of(self_));
+  std::string missing;
+  for (;;) {
     if (done_writer_->matched() < 1 || clock_reader_->matched() < 1) {
-      *missing = "the simulator (done, clock)";
-      return false;
+      missing = "the simulator (done, clock)";
+    } else if (outlets_matched(&missing)) {
+      break;
     }
-    return outlets_matched(missing);
-  });
+    wait.check("DDS discovery", missing);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
   say_ready();
 }
 
@@ -518,13 +541,14 @@ bool LockstepClock::is_lost(AgentId a) const {
 LockstepClock::~LockstepClock() { heartbeat_.reset(); }
 
 void LockstepClock::wait_ready() {
-  const auto deadline = std::chrono::steady_clock::now() + stall_timeout();
+  StartupWait wait(bus_, "sim");
   std::unique_lock<std::mutex> lock(mutex_);
   while (true) {
     std::string missing;
     for (int a = 0; a < topology_.agents(); ++a) {
       if (!ready_[a]) missing += (missing.empty() ? "" : ", ") + topology_.name_of(static_cast<AgentId>(a));
     }
+    if (!missing.empty()) missing = "these processes to be ready: " + missing;
     bool outlets_ok = true;
     if (missing.empty()) {
       lock.unlock();
@@ -534,10 +558,7 @@ void LockstepClock::wait_ready() {
       if (missing.empty()) missing = "clock readers";
       lock.lock();
     }
-    if (std::chrono::steady_clock::now() > deadline) {
-      throw std::runtime_error("sim: these processes never became ready in " +
-                               std::to_string(stall_timeout().count()) + " s: " + missing);
-    }
+    wait.check("start-up", missing);
     arrived_.wait_for(lock, std::chrono::milliseconds(5));
   }
 }

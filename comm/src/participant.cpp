@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
+#include <regex>
 #include <stdexcept>
 #include <vector>
 
@@ -24,6 +25,9 @@
 #include <fastdds/dds/topic/Topic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
 #include <fastdds/rtps/attributes/ServerAttributes.h>
+#include <fastdds/dds/log/Log.hpp>
+
+#include "peer_listener.hpp"
 
 namespace swarm::comm {
 
@@ -85,6 +89,17 @@ void use_security(DomainParticipantQos& qos, const std::string& dir, const std::
   p.emplace_back("dds.sec.access.builtin.Access-Permissions.governance", file("governance.p7s"));
   p.emplace_back("dds.sec.access.builtin.Access-Permissions.permissions", file("permissions.p7s"));
   p.emplace_back("dds.sec.crypto.plugin", "builtin.AES-GCM-GMAC");
+}
+
+// Fast DDS's own security log (the DDS_LogTopic plugin: failed validations, bad tokens, ...) to
+// this process's stderr, where its other lines go. Fast DDS 2.9's Debian build has no info-level
+// log, so the handshake's progress comes from PeerListener instead.
+void use_security_log(DomainParticipantQos& qos) {
+  auto& p = qos.properties().properties();
+  p.emplace_back("dds.sec.log.plugin", "builtin.DDS_LogTopic");
+  p.emplace_back("dds.sec.log.builtin.DDS_LogTopic.logging_level", "DEBUG_LEVEL");
+  p.emplace_back("dds.sec.log.builtin.DDS_LogTopic.log_file", "/dev/stderr");
+  p.emplace_back("dds.sec.log.builtin.DDS_LogTopic.distribute", "false");
 }
 
 const char* writer_profile(EndpointKind kind) {
@@ -193,10 +208,20 @@ Participant::Participant(const DdsOptions& options) : options_(options) {
   if (options.participant_id >= 0) qos.wire_protocol().participant_id = options.participant_id;
   if (!options.security_dir.empty()) {
     use_security(qos, options.security_dir, options.identity.empty() ? options.name : options.identity);
+    if (options.log_security) use_security_log(qos);
+  }
+  if (options.log_security) {
+    // Participant discovery and authentication only; info where Fast DDS was built with it
+    // (Debian's 2.9 is not). Not the crypto plugin's "No key material yet": a warning per sample
+    // sent before a peer's keys arrived (~8,000 lines per role and run), which drowns the rest and
+    // slows the very start-up it is meant to show.
+    Log::SetVerbosity(Log::Kind::Info);
+    Log::SetCategoryFilter(std::regex("^(SECURITY(?!_CRYPTO).*|RTPS_PDP.*)$"));
   }
   const std::string server = options.discovery_server.empty() ? default_discovery_server() : options.discovery_server;
   if (!server.empty()) use_discovery_server(qos, server);
-  participant_ = factory->create_participant(options.domain, qos);
+  listener_ = std::make_unique<PeerListener>(options.name, options.log_security);
+  participant_ = factory->create_participant(options.domain, qos, listener_.get(), StatusMask::none());
   if (participant_ == nullptr) {
     throw std::runtime_error("cannot create a DDS participant in domain " + std::to_string(options.domain));
   }
@@ -217,6 +242,8 @@ Participant::~Participant() {
   participant_->delete_contained_entities();
   DomainParticipantFactory::get_instance()->delete_participant(participant_);
 }
+
+std::vector<PeerState> Participant::peers() const { return listener_->peers(); }
 
 Topic* Participant::topic(const std::string& name, const MessageType& type) {
   std::lock_guard<std::mutex> lock(mutex_);

@@ -24,6 +24,11 @@ void add_role_flags(CLI::App& app, RoleOptions& o, RoleKind kind) {
   app.add_option("--security-dir", o.security_dir,
                  "DDS-Security: the folder scripts/make-certs.sh made (this process's certificate is "
                  "NAME.pem there, NAME = sim, gcs, leader-G, member-G-I or members-G-F-L)");
+  app.add_option("--dds-log", o.dds_log,
+                 "security: print every DDS peer's discovery and authentication, Fast DDS's warnings and "
+                 "its security log (default: $SWARM_DDS_LOG)")
+      ->envname("SWARM_DDS_LOG")
+      ->check(CLI::IsMember({"security"}));
   app.add_option("--discovery-server", o.discovery_server,
                  "HOST:PORT of a Fast DDS discovery server (default: $SWARM_DISCOVERY_SERVER, else simple discovery)");
   if (kind == RoleKind::Leader || kind == RoleKind::Member) {
@@ -78,7 +83,7 @@ LinkTable link_table(const swarm::scenario::Scenario& s, const Topology& topolog
   return t;
 }
 
-RoleSetup load_role(const RoleOptions& o, RoleKind kind, const std::string& name) {
+RoleSetup load_role(const RoleOptions& o, RoleKind kind) {
   RoleSetup setup;
   const auto scenario = config::load_scenario(o.scenario_path);
   const std::string dir = std::filesystem::path(o.scenario_path).parent_path().string();
@@ -104,11 +109,13 @@ RoleSetup load_role(const RoleOptions& o, RoleKind kind, const std::string& name
   setup.links = link_table(s, setup.topology);
   setup.dds.domain = o.domain;
   setup.dds.partition = o.partition;
-  setup.dds.name = name;
   setup.dds.profile_path = o.profile;
   setup.dds.discovery_server = o.discovery_server;
   setup.dds.security_dir = o.security_dir;
+  setup.dds.log_security = o.dds_log == "security";
   setup.dds.identity = process_name(kind, o.group, o.indices);
+  // The participant as its peers see it (their start-up logs name it): the process's name.
+  setup.dds.name = setup.dds.identity;
   // The agent id (a member process: its first robot's) as the participant id: unique in the run.
   switch (kind) {
     case RoleKind::Sim: setup.dds.participant_id = setup.topology.sim(); break;

@@ -178,5 +178,37 @@ TEST(LockstepFake, ARestartedAgentReplaysItsJournalAndRejoinsAtTheNextClock) {
   EXPECT_EQ(j.restarts[0].replayed_ticks, 10u);
 }
 
+// A bus whose DDS peers are as a stuck secure start-up left them: the simulator discovered but
+// never authenticated.
+class StuckSecureBus : public FakeBus {
+ public:
+  using FakeBus::FakeBus;
+  std::vector<PeerState> peers() const override {
+    return {{"gcs", PeerState::Step::Authenticated, 0.05, 0.10, 1.0},
+            {"sim", PeerState::Step::Discovered, 0.04, 0.04, 1.0}};
+  }
+  bool secure() const override { return true; }
+};
+
+// A role whose start-up stalls names the peer it could not authenticate and the step, not only
+// the topic that never matched.
+TEST(LockstepFake, AStalledStartUpNamesThePeerThatNeverAuthenticated) {
+  ::setenv("SWARM_STALL_TIMEOUT", "1", 1);
+  const Topology t(1, 1);
+  LinkTable links;
+  FakeNetwork net;
+  StuckSecureBus robot_bus(net);  // no simulator on the network at all
+  LockstepAgent robot(robot_bus, t, links, 0);
+  try {
+    robot.announce_ready();
+    FAIL() << "announce_ready returned without a simulator";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(),
+                 "leader-0: DDS discovery did not complete in 1 s; still waiting for the simulator (done, clock). "
+                 "DDS peers: gcs: authenticated at 0.10 s; sim: discovered at 0.04 s, not authenticated 0.96 s later");
+  }
+  ::setenv("SWARM_STALL_TIMEOUT", "2", 1);
+}
+
 }  // namespace
 }  // namespace swarm::comm

@@ -12,24 +12,40 @@ mkdir -p "$out"
 share=/opt/swarm/share/deploy
 
 # rogue_cmd EXPECTED_EXIT PROBE_FLAGS: the --after-up command. Once the mission is under way (the
-# GCS has printed a tick: tests/deploy/rogue.pbtxt runs ~70 ticks of 100 ms after the roles find
-# each other), the probe joins and listens for 15 s, and must end with EXPECTED_EXIT (0: it read
-# clock samples, 1: none). It joins a running swarm, as an intruder would: a rogue that joined
-# while the secure roles were still authenticating each other left a role that never became ready
-# in 2 of 4 runs (the sim: "never became ready in 60 s: leader-0"), likely Fast DDS 2.9 holding
-# handshake requests after the rogue's failed authentication (cf. eProsima/Fast-DDS#5934).
+# GCS has printed its first tick: tests/deploy/rogue.pbtxt runs ~70 ticks of 100 ms), the probe
+# joins and listens for 15 s, and must end with EXPECTED_EXIT (0: it read clock samples, 1: none).
+# It joins a running swarm, as an intruder would. A mission that never starts (the GCS or the
+# simulator exits, or 90 s pass without a tick) fails the test here, saying so: the probe does not
+# run, since "0 clock samples" beside a swarm that never ran would prove nothing.
 rogue_cmd() {
   local want=$1 flags=$2 report=$out/rogue-$1.txt
-  local gcs='$(docker ps -q --filter label=com.docker.compose.project=$COMPOSE_PROJECT_NAME --filter label=com.docker.compose.service=gcs)'
-  echo "for _ in \$(seq 240); do docker logs $gcs 2>&1 | grep -Eq '^tick +[0-9]+ ' && break; sleep 0.25; done;" \
-    "rc=0; docker run --rm --network \"\$SWARM_NETWORK\" \"\$SWARM_IMAGE\" swarm probe --domain 0 --partition swarm" \
-    "--seconds 15 $flags >'$report' 2>&1 || rc=\$?; cat '$report';" \
-    "[[ \$rc == $want ]] || { echo \"rogue: swarm probe ended with \$rc, expected $want\" >&2; exit 1; }"
+  local of='$(docker ps -aq --filter label=com.docker.compose.project=$COMPOSE_PROJECT_NAME --filter label=com.docker.compose.service='
+  cat <<EOF
+started=0
+for _ in \$(seq 360); do
+  if docker logs ${of}gcs) 2>&1 | grep -Eq '^tick +[0-9]+ '; then started=1; break; fi
+  for s in gcs sim; do
+    [[ \$(docker inspect -f '{{.State.Status}}' ${of}\$s) 2>/dev/null) != exited ]] && continue
+    echo "rogue: the mission never started: \$s exited before the first tick; the probe did not run" >&2
+    exit 1
+  done
+  sleep 0.25
+done
+((started)) || { echo "rogue: the mission never started: no tick from the GCS in 90 s; the probe did not run" >&2; exit 1; }
+rc=0
+docker run --rm --network "\$SWARM_NETWORK" "\$SWARM_IMAGE" swarm probe --domain 0 --partition swarm --seconds 15 $flags >'$report' 2>&1 || rc=\$?
+cat '$report'
+[[ \$rc == $want ]] || { echo "rogue: swarm probe ended with \$rc, expected $want" >&2; exit 1; }
+EOF
 }
+
+# BIN_DIR empty: the image swarm:ctest as it is (tests/deploy/start_study.sh repeats this test).
+build=(--prebuilt "$bin")
+[[ -n $bin ]] || build=(--no-build)
 
 rc=0
 echo "rogue: 1. a secure deployment; the rogue has no certificate (simple discovery, as the roles)"
-bash "$src/deploy/compose-test.sh" --prebuilt "$bin" --image swarm:ctest --secure \
+bash "$src/deploy/compose-test.sh" "${build[@]}" --image swarm:ctest --secure \
   --scenario "$src/tests/deploy/rogue.pbtxt" --out "$out/secure" \
   --after-up "$(rogue_cmd 1 "--profile $share/fastdds_container_simple.xml")" || rc=$?
 ((rc == 0)) || exit "$rc"

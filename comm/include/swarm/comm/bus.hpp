@@ -26,6 +26,9 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
+
+#include "swarm/comm/peers.hpp"
 
 namespace swarm::comm {
 
@@ -79,6 +82,11 @@ class Bus {
                                                  EndpointKind kind) = 0;
   virtual std::unique_ptr<RawReader> make_reader(const std::string& topic, const MessageType& type,
                                                  EndpointKind kind, ReaderCallbacks callbacks) = 0;
+  // The other participants this bus has seen and how far each got (peers.hpp): for the message of
+  // a start-up that stalls. A bus without DDS discovery (the fake) has none.
+  virtual std::vector<PeerState> peers() const { return {}; }
+  // Whether peers must authenticate (DDS-Security) before any endpoint matches.
+  virtual bool secure() const { return false; }
 };
 
 }  // namespace swarm::comm

@@ -26,6 +26,8 @@ class Topic;
 
 namespace swarm::comm {
 
+class PeerListener;
+
 struct DdsOptions {
   int domain = 0;
   std::string partition = "swarm";
@@ -47,6 +49,10 @@ struct DdsOptions {
   // Access-Permissions, AES-GCM-GMAC). Empty = no security.
   std::string security_dir;
   std::string identity;
+  // Prints every peer's discovery and authentication as it happens (peers.hpp), and turns on Fast
+  // DDS's warnings and, with security, its security log (DDS_LogTopic, to stderr): to find why a
+  // secure start-up stalls. Roles set it from $SWARM_DDS_LOG=security.
+  bool log_security = false;
 };
 
 // The discovery server a process uses when none is given (see DdsOptions::discovery_server).
@@ -67,12 +73,17 @@ class Participant : public Bus {
   std::unique_ptr<RawReader> make_reader(const std::string& topic, const MessageType& type, EndpointKind kind,
                                          ReaderCallbacks callbacks) override;
 
+  std::vector<PeerState> peers() const override;
+  bool secure() const override { return !options_.security_dir.empty(); }
+
   const DdsOptions& options() const { return options_; }
 
  private:
   eprosima::fastdds::dds::Topic* topic(const std::string& name, const MessageType& type);
 
   DdsOptions options_;
+  // Outlives participant_, which calls it (destroyed after it, in ~Participant's body).
+  std::unique_ptr<PeerListener> listener_;
   eprosima::fastdds::dds::DomainParticipant* participant_ = nullptr;
   eprosima::fastdds::dds::Publisher* publisher_ = nullptr;
   eprosima::fastdds::dds::Subscriber* subscriber_ = nullptr;

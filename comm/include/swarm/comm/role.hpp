@@ -36,6 +36,7 @@ struct RoleOptions {
   std::string profile;         // Fast DDS XML profile; empty = default_profile_path()
   std::string discovery_server;  // HOST:PORT; empty = default_discovery_server()
   std::string security_dir;      // DDS-Security files (scripts/make-certs.sh); empty = none
+  std::string dds_log;           // "security": DdsOptions::log_security
   int group = -1;              // leader, member
   std::vector<int> indices;    // member: the robots this process runs (1..robots_per_group-1)
   std::string progress = "plain";  // gcs: bar | plain | none
@@ -53,7 +54,7 @@ struct RoleSetup {
 };
 
 // Loads and resolves the scenario, checks the role's ids against it. Throws config::ConfigError.
-RoleSetup load_role(const RoleOptions& options, RoleKind kind, const std::string& name);
+RoleSetup load_role(const RoleOptions& options, RoleKind kind);
 
 // The process's name in a run, which its log, its certificate and `swarm run` use: "sim", "gcs",
 // "leader-G", "member-G-I", or "members-G-F-L" for a member process of robots F..L.
