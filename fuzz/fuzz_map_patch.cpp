@@ -1,4 +1,4 @@
-// Map patches as they arrive over DDS (patch_up, patch_down, patch_gcs; comm::decode_patch wraps
+// Map patches as they arrive over DDS (patch_up, patch_down, patch_gcs; app::decode_patch wraps
 // this): malformed bytes, or cells outside the receiver's map, give nullopt; a patch that decodes
 // re-encodes (RunLength) to one that decodes to the same changes.
 #include <cstdint>

@@ -1,16 +1,16 @@
 // swarm-gcs: the ground control station of a swarm run. See gcs_node.hpp.
-#include "swarm/comm/fault_injection.hpp"
+#include "swarm/app/fault_injection.hpp"
 #include "swarm/comm/lockstep.hpp"
-#include "swarm/comm/role.hpp"
+#include "swarm/app/role.hpp"
 #include "swarm/gcs/gcs_node.hpp"
 
 int main(int argc, char** argv) {
   using namespace swarm;
-  comm::RoleOptions options;
+  app::RoleOptions options;
   CLI::App app{"swarm-gcs: ground control station (map fusion, planning rounds, metrics)"};
-  comm::add_role_flags(app, options, comm::RoleKind::Gcs);
-  return comm::run_role(app, argc, argv, "gcs", [&]() -> int {
-    const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Gcs);
+  app::add_role_flags(app, options, app::RoleKind::Gcs);
+  return app::run_role(app, argc, argv, "gcs", [&]() -> int {
+    const app::RoleSetup setup = app::load_role(options, app::RoleKind::Gcs);
     comm::Participant participant(setup.dds);
     comm::LockstepAgent agent(participant, setup.topology, setup.links, setup.topology.gcs());
     gcs::GcsNode node(agent, setup, options.run_dir, gcs::Progress::parse(options.progress));
@@ -23,13 +23,13 @@ int main(int argc, char** argv) {
       agent.journal_to(journal);
     }
     // The scheduled kill is the first process's; a restarted one runs to the end.
-    std::optional<comm::FaultInjector> faults;
+    std::optional<app::FaultInjector> faults;
     if (!options.resume) faults.emplace(setup.world.scenario, "gcs");
     comm::run_lockstep(agent, [&](const msgs::Clock& clock) {
       if (faults) faults->at_tick(clock.tick());
       return node.step(clock);
     });
     node.finish();
-    comm::exit_after_work("gcs");
+    app::exit_after_work("gcs");
   });
 }

@@ -14,10 +14,10 @@
 #include <thread>
 #include <vector>
 
-#include "swarm/comm/fault_injection.hpp"
+#include "swarm/app/fault_injection.hpp"
 #include "swarm/comm/lockstep.hpp"
-#include "swarm/comm/role.hpp"
-#include "swarm/leader/candidate_node.hpp"
+#include "swarm/app/role.hpp"
+#include "swarm/app/candidate_node.hpp"
 #include "swarm/member/member_node.hpp"
 
 namespace {
@@ -25,8 +25,8 @@ namespace {
 using namespace swarm;
 
 // One robot's whole life on the shared participant: lockstep until the run stops, then its report.
-void run_member(comm::Participant& participant, const comm::RoleSetup& setup, int group, int index,
-                comm::FaultInjector& faults) {
+void run_member(comm::Participant& participant, const app::RoleSetup& setup, int group, int index,
+                app::FaultInjector& faults) {
   const comm::AgentId self = setup.topology.robot(group, index);
   comm::LockstepAgent agent(participant, setup.topology, setup.links, self);
   const auto run = [&](auto& node) {
@@ -39,7 +39,7 @@ void run_member(comm::Participant& participant, const comm::RoleSetup& setup, in
   };
   // A standby leader (comm/leadership.hpp) is a candidate: member until the clock names it leader.
   if (setup.topology.is_candidate(self)) {
-    leader::CandidateNode node(agent, setup, group, index);
+    app::CandidateNode node(agent, setup, group, index);
     run(node);
   } else {
     member::RobotAgent robot(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution());
@@ -51,16 +51,16 @@ void run_member(comm::Participant& participant, const comm::RoleSetup& setup, in
 }  // namespace
 
 int main(int argc, char** argv) {
-  comm::RoleOptions options;
+  app::RoleOptions options;
   CLI::App app{"swarm-member: group member robots of a swarm run (one per --index)"};
-  comm::add_role_flags(app, options, comm::RoleKind::Member);
-  return comm::run_role(app, argc, argv, "member", [&]() -> int {
-    const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Member);
-    std::vector<std::unique_ptr<comm::FaultInjector>> faults;
+  app::add_role_flags(app, options, app::RoleKind::Member);
+  return app::run_role(app, argc, argv, "member", [&]() -> int {
+    const app::RoleSetup setup = app::load_role(options, app::RoleKind::Member);
+    std::vector<std::unique_ptr<app::FaultInjector>> faults;
     std::string names;
     for (const int index : options.indices) {
       const std::string name = setup.topology.name_of(setup.topology.robot(options.group, index));
-      faults.push_back(std::make_unique<comm::FaultInjector>(setup.world.scenario, name));
+      faults.push_back(std::make_unique<app::FaultInjector>(setup.world.scenario, name));
       if (faults.back()->any() && options.indices.size() > 1) {
         throw config::ConfigError("a kill or freeze fault of " + name +
                                   " stops its whole process: run it alone (--agents-per-process 1)");
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
     comm::Participant participant(setup.dds);
     if (options.indices.size() == 1) {
       run_member(participant, setup, options.group, options.indices[0], *faults[0]);
-      comm::exit_after_work(names);
+      app::exit_after_work(names);
     }
     // A robot that fails ends the process at once with the role's exit code for a runtime
     // failure (its peers cannot finish the run without it anyway).
@@ -88,6 +88,6 @@ int main(int argc, char** argv) {
       });
     }
     for (std::thread& t : robots) t.join();
-    comm::exit_after_work(names);
+    app::exit_after_work(names);
   });
 }

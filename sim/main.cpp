@@ -3,16 +3,16 @@
 #include <cstdio>
 
 #include "swarm/comm/lockstep.hpp"
-#include "swarm/comm/role.hpp"
+#include "swarm/app/role.hpp"
 #include "swarm/sim/sim_node.hpp"
 
 int main(int argc, char** argv) {
   using namespace swarm;
-  comm::RoleOptions options;
+  app::RoleOptions options;
   CLI::App app{"swarm-sim: the simulator (ground truth, motion, LiDAR) and clock of a swarm run"};
-  comm::add_role_flags(app, options, comm::RoleKind::Sim);
-  return comm::run_role(app, argc, argv, "sim", [&]() -> int {
-    const comm::RoleSetup setup = comm::load_role(options, comm::RoleKind::Sim);
+  app::add_role_flags(app, options, app::RoleKind::Sim);
+  return app::run_role(app, argc, argv, "sim", [&]() -> int {
+    const app::RoleSetup setup = app::load_role(options, app::RoleKind::Sim);
     comm::Participant participant(setup.dds);
     comm::LockstepClock clock(participant, setup.topology, setup.links);
     sim::SimNode node(clock, setup);
@@ -29,6 +29,6 @@ int main(int argc, char** argv) {
     std::printf("sim: %u ticks; discovery + run %.2f s, report %.2f s\n", last + 1,
                 std::chrono::duration<double>(t1 - t0).count(),
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count());
-    comm::exit_after_work("sim");
+    app::exit_after_work("sim");
   });
 }

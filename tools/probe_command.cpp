@@ -11,6 +11,7 @@
 #include "swarm/comm/endpoint.hpp"
 #include "swarm/comm/participant.hpp"
 #include "swarm/comm/topology.hpp"
+#include "swarm/config/scenario.hpp"
 
 namespace swarm::tools {
 
@@ -48,7 +49,7 @@ int probe_command(const ProbeOptions& o, std::ostream& out, std::ostream& err) {
     dds.domain = o.domain;
     dds.partition = o.partition;
     dds.name = "swarm-probe";
-    dds.profile_path = o.profile;
+    dds.profile_path = o.profile.empty() ? config::dds_profile_path() : o.profile;
     dds.discovery_server = o.discovery_server;
     dds.participant_id = o.participant_id;
     dds.security_dir = o.security_dir;

@@ -59,6 +59,10 @@ std::uint32_t LinkSender::deliver_tick(LinkClass link, std::uint32_t tick, std::
   return ready + p.delay_ticks + jitter;
 }
 
+std::uint32_t last_arrival_tick(const LinkParams& p, std::uint32_t tick) {
+  return tick + 1 + p.delay_ticks + p.jitter_ticks;
+}
+
 bool link_drops(const LinkTable& table, LinkClass link, std::uint16_t sender, std::uint64_t topic_hash,
                 std::uint32_t seq, std::uint16_t receiver, std::uint32_t attempt) {
   const double loss = table[link].loss;

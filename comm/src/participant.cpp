@@ -1,7 +1,5 @@
 #include "swarm/comm/participant.hpp"
 
-#include "swarm/config/scenario.hpp"
-
 #include <netdb.h>
 #include <sys/socket.h>
 
@@ -33,8 +31,6 @@ namespace swarm::comm {
 
 using namespace eprosima::fastdds::dds;
 using eprosima::fastrtps::types::ReturnCode_t;
-
-std::string default_profile_path() { return config::dds_profile_path(); }
 
 std::string default_discovery_server() {
   const char* s = std::getenv("SWARM_DISCOVERY_SERVER");
@@ -192,7 +188,8 @@ class DdsReader : public RawReader, private DataReaderListener {
 }  // namespace
 
 Participant::Participant(const DdsOptions& options) : options_(options) {
-  const std::string profile = options.profile_path.empty() ? default_profile_path() : options.profile_path;
+  const std::string& profile = options.profile_path;
+  if (profile.empty()) throw std::runtime_error("no Fast DDS profile given (DdsOptions::profile_path)");
   if (!std::filesystem::exists(profile)) {
     throw std::runtime_error("Fast DDS profile " + profile + " does not exist (set --profile or SWARM_DDS_PROFILE)");
   }

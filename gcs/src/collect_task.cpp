@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "swarm/comm/link.hpp"
 #include "swarm/comm/task_codes.hpp"
 
 namespace swarm::gcs {
@@ -91,14 +92,14 @@ void CollectGcsTask::send_resume(int g, GcsContext& ctx) {
 }
 
 void CollectGcsTask::step(GcsContext& ctx) {
-  const auto& lg = ctx.setup.world.scenario.links().leader_gcs();
+  const comm::LinkParams& lg = ctx.setup.links[comm::LinkClass::LeaderGcs];
   for (int g = 0; g < static_cast<int>(done_.size()); ++g) {
     const auto gu = static_cast<std::size_t>(g);
     if (done_[gu]) continue;
     if (const int now = ctx.leader_of(g); now != leader_[gu] && ctx.alive(now)) {
-      // Every report the old leader sent is here after the link's delay and jitter: then resume.
+      // Resume the tick after every report the old leader sent by now has arrived.
       leader_[gu] = now;
-      resume_at_[gu] = ctx.tick() + 2 + lg.delay_ticks() + lg.jitter_ticks();
+      resume_at_[gu] = comm::last_arrival_tick(lg, ctx.tick()) + 1;
     }
     if (resume_at_[gu] && ctx.tick() >= *resume_at_[gu]) {
       resume_at_[gu].reset();

@@ -3,7 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 #include "swarm/comm/task_codes.hpp"
 #include "swarm/config/task_config.hpp"
 #include "swarm/planner/frontier.hpp"
@@ -108,7 +108,7 @@ void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cell
     }
   }
   const planner::PatchEncoding encoding = map_encoding(ctx.setup);
-  const auto known_bytes = comm::encode_map(known_, encoding);
+  const auto known_bytes = app::encode_map(known_, encoding);
   for (int g : groups) {
     msgs::TaskOrder o;
     o.group(static_cast<std::uint16_t>(g));
@@ -117,12 +117,12 @@ void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cell
     o.height(static_cast<std::uint16_t>(known_.height()));
     o.map_encoding(static_cast<std::uint8_t>(encoding));
     o.known_map(known_bytes);
-    o.cells(comm::encode_mask(share[static_cast<std::size_t>(g)], known_.width(), known_.height()));
+    o.cells(app::encode_mask(share[static_cast<std::size_t>(g)], known_.width(), known_.height()));
     if (!config_.hierarchical()) {
       for (std::size_t a = 0; a < robot_ids.size(); ++a) {
         if (t.group_of(static_cast<comm::AgentId>(robot_ids[a])) != g) continue;
         o.route_robots().push_back(static_cast<std::uint16_t>(robot_ids[a]));
-        o.routes_xy().push_back(comm::to_xy(plan.routes[a]));
+        o.routes_xy().push_back(app::to_xy(plan.routes[a]));
       }
     }
     ctx.out.order(o);
@@ -154,7 +154,7 @@ void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cell
 void CoverGcsTask::on_report(const msgs::TaskReport& r, GcsContext&) {
   if (r.group() < group_done_.size() && r.state() == comm::task::kDone) group_done_[r.group()] = true;
   // Cells a leader knows covered (after a restart of the GCS, which missed the clocks meanwhile).
-  for (const planner::Cell c : comm::from_xy(r.xy())) tracker_.mark(c);
+  for (const planner::Cell c : app::from_xy(r.xy())) tracker_.mark(c);
 }
 
 void CoverGcsTask::step(GcsContext& ctx) {

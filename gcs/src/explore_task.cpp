@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 
 namespace swarm::gcs {
 
@@ -27,7 +27,7 @@ void ExploreGcsTask::step(GcsContext& ctx) {
     rs.width(static_cast<std::uint16_t>(d.map->width()));
     rs.height(static_cast<std::uint16_t>(d.map->height()));
     rs.encoding(static_cast<std::uint8_t>(encoding));
-    rs.map_rle(comm::encode_map(*d.map, encoding));
+    rs.map_rle(app::encode_map(*d.map, encoding));
     ctx.out.round(rs);
     record::Frame version = map_frame(ctx.tick(), *d.start_round, phase_, ctx.mission.fused());
     version.mutable_map()->set_planning_map_tick(d.map_tick);  // names the map rs carries

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/planner/map_patch.hpp"
 #include "swarm/record/metrics.hpp"
@@ -21,7 +21,7 @@ namespace topic = comm::topic;
 
 namespace {
 
-MissionConfig mission_config(const comm::RoleSetup& setup) {
+MissionConfig mission_config(const app::RoleSetup& setup) {
   const auto& s = setup.world.scenario;
   MissionConfig c;
   c.groups = setup.topology.groups();
@@ -33,17 +33,17 @@ MissionConfig mission_config(const comm::RoleSetup& setup) {
 }
 
 // How many ticks of silence make a leader unreachable. In lockstep a heartbeat sent at t is seen
-// at t + 1 + delay (+ jitter): two ticks of slack. In real time a busy machine delays a process by
+// by its last arrival tick, plus two ticks of slack. In real time a busy machine delays a process by
 // a few ticks of 40 ms now and then, which is not a cut link: half a second of slack.
 std::uint32_t unreachable_after_ticks(const comm::LinkTable& links) {
   const comm::LinkParams& p = links[LinkClass::LeaderGcs];
-  if (!links.realtime) return 3 + p.delay_ticks + p.jitter_ticks;
+  if (!links.realtime) return comm::last_arrival_tick(p, 0) + 2;
   return 1 + static_cast<std::uint32_t>(std::ceil((p.delay_ms + 500.0) / links.tick_ms));
 }
 
 }  // namespace
 
-GcsNode::GcsNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, const std::string& run_dir,
+GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const std::string& run_dir,
                  Progress::Style progress)
     : agent_(agent),
       setup_(setup),
@@ -66,7 +66,7 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, const
     if (h.group() < last_heard_.size() && from_leader(h.header())) last_heard_[h.group()] = agent_.tick();
   }, comm::Delivery::Reliable, writers);
   agent.subscribe<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, [this](const msgs::MapPatch& p) {
-    mission_.fuse(p.group(), comm::decode_patch(p.data(), setup_.world.truth.size()));
+    mission_.fuse(p.group(), app::decode_patch(p.data(), setup_.world.truth.size()));
   }, comm::Delivery::Reliable, writers);
   agent.subscribe<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs, [this](const msgs::GroupStatus& s) {
     if (from_leader(s.header())) statuses_.push_back(s);

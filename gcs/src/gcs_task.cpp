@@ -1,6 +1,6 @@
 #include "swarm/gcs/gcs_task.hpp"
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/config/task_config.hpp"
 #include "swarm/gcs/collect_task.hpp"
@@ -38,13 +38,13 @@ record::Frame route_frame(std::uint32_t tick, std::uint32_t phase, int robot, co
   return f;
 }
 
-planner::PatchEncoding map_encoding(const comm::RoleSetup& setup) {
-  return comm::patch_encoding(setup.world.scenario.map_encoding()) == planner::PatchEncoding::ZstdRunLength
+planner::PatchEncoding map_encoding(const app::RoleSetup& setup) {
+  return app::patch_encoding(setup.world.scenario.map_encoding()) == planner::PatchEncoding::ZstdRunLength
              ? planner::PatchEncoding::ZstdRunLength
              : planner::PatchEncoding::RunLength;
 }
 
-std::unique_ptr<GcsTask> make_gcs_task(const swarm::scenario::Phase& phase, const comm::RoleSetup& setup,
+std::unique_ptr<GcsTask> make_gcs_task(const swarm::scenario::Phase& phase, const app::RoleSetup& setup,
                                        std::uint32_t index) {
   // The robots are given the map (as DARP assumes) when no exploration comes before.
   const auto phases = config::mission_phases(setup.world.scenario);

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
+#include "swarm/comm/link.hpp"
 #include "swarm/comm/task_codes.hpp"
 #include "swarm/config/task_config.hpp"
 #include "swarm/planner/frontier.hpp"
@@ -137,17 +138,17 @@ void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res) {
   }
   for (std::size_t k = 0; k < planned_.size(); ++k) {
     o.route_robots().push_back(static_cast<std::uint16_t>(planned_[k]));
-    o.routes_xy().push_back(comm::to_xy(res.paths[k]));
+    o.routes_xy().push_back(app::to_xy(res.paths[k]));
     ctx.record.append(route_frame(ctx.tick(), phase_, planned_[k], res.paths[k]));
   }
   ctx.out.order(o);
 }
 
 std::uint32_t MapfGcsTask::start_tick(const GcsContext& ctx) const {
-  const auto& links = ctx.setup.world.scenario.links();
-  const std::uint32_t margin = 2 + links.leader_gcs().delay_ticks() + links.leader_gcs().jitter_ticks() +
-                               links.member_leader().delay_ticks() + links.member_leader().jitter_ticks();
-  return ctx.tick() + margin;
+  // The order reaches the last leader by then, and the routes it forwards at once the last member.
+  const comm::LinkTable& links = ctx.setup.links;
+  const std::uint32_t at_leaders = comm::last_arrival_tick(links[comm::LinkClass::LeaderGcs], ctx.tick());
+  return comm::last_arrival_tick(links[comm::LinkClass::MemberLeader], at_leaders);
 }
 
 void MapfGcsTask::order_rotations(GcsContext& ctx) {

@@ -5,7 +5,8 @@
 #include <cstdio>
 #include <limits>
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
+#include "swarm/comm/link.hpp"
 #include "swarm/comm/task_codes.hpp"
 #include "swarm/planner/astar.hpp"
 #include "swarm/planner/cover_routes.hpp"
@@ -21,7 +22,7 @@ namespace {
 constexpr std::uint32_t kStallTicks = 6;
 }  // namespace
 
-CollectGroupTask::CollectGroupTask(const swarm::scenario::Collect& config, const comm::RoleSetup& setup, int group,
+CollectGroupTask::CollectGroupTask(const swarm::scenario::Collect& config, const app::RoleSetup& setup, int group,
                                    bool map_given)
     : group_(group),
       map_given_(map_given),
@@ -52,10 +53,9 @@ void CollectGroupTask::took_over(GroupContext& ctx) {
   for (int i = 0; i < static_cast<int>(robots_.size()); ++i) {
     if (!ctx.alive[static_cast<std::size_t>(i)]) member_lost(i, ctx);
   }
-  // Every living member sends what it holds to a new leader at once: heard within the link's
-  // delay and jitter.
-  const auto& ml = ctx.setup.world.scenario.links().member_leader();
-  grippers_heard_by_ = ctx.clock.tick() + 2 + ml.delay_ticks() + ml.jitter_ticks();
+  // Every living member sends what it holds to a new leader at once: all heard the tick after its
+  // last arrival.
+  grippers_heard_by_ = comm::last_arrival_tick(ctx.setup.links[comm::LinkClass::MemberLeader], ctx.clock.tick()) + 1;
 }
 
 void CollectGroupTask::on_carrying(int index, const std::vector<std::uint32_t>& objects, GroupContext&) {
@@ -235,7 +235,7 @@ void CollectGroupTask::plan(int index, GroupContext& ctx) {
 void CollectGroupTask::send(int index, GroupContext& ctx, std::vector<Cell> cells) {
   Robot& r = robots_[static_cast<std::size_t>(index)];
   msgs::Route m;
-  m.path_xy(comm::to_xy(cells));
+  m.path_xy(app::to_xy(cells));
   m.release(static_cast<std::uint32_t>(cells.size() - 1));
   for (const auto& [id, step] : r.picks) {
     if (step != kDone) m.pick_steps().push_back(step);

@@ -3,7 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 #include "swarm/comm/task_codes.hpp"
 #include "swarm/config/task_config.hpp"
 
@@ -15,7 +15,7 @@ using planner::RouteState;
 namespace {
 }  // namespace
 
-CoverGroupTask::CoverGroupTask(const swarm::scenario::Cover& config, const comm::RoleSetup& setup, int group)
+CoverGroupTask::CoverGroupTask(const swarm::scenario::Cover& config, const app::RoleSetup& setup, int group)
     : config_(config),
       seed_(setup.world.scenario.seed()),
       group_(group),
@@ -31,7 +31,7 @@ void CoverGroupTask::start(GroupContext&) {
 void CoverGroupTask::send(GroupContext& ctx, int index, std::vector<Cell> route) {
   Robot& r = robots_[static_cast<std::size_t>(index)];
   msgs::Route m;
-  m.path_xy(comm::to_xy(route));
+  m.path_xy(app::to_xy(route));
   m.release(static_cast<std::uint32_t>(route.size() - 1));
   r.route_id = ctx.out.route(index, m);
   r.step = 0;
@@ -51,8 +51,8 @@ void CoverGroupTask::on_order(const msgs::TaskOrder& o, GroupContext& ctx) {
   order_seq_ = o.seq();
   tick_ = ctx.clock.tick();
   known_ = planner::OccupancyGrid(o.width(), o.height(), ctx.map.group().resolution());
-  comm::decode_map(o.known_map(), static_cast<planner::PatchEncoding>(o.map_encoding()), known_);
-  share_ = comm::decode_mask(o.cells(), o.width(), o.height());
+  app::decode_map(o.known_map(), static_cast<planner::PatchEncoding>(o.map_encoding()), known_);
+  share_ = app::decode_mask(o.cells(), o.width(), o.height());
   tracker_ = planner::CoverageTracker(known_, share_, footprint_);
   const comm::Topology& t = ctx.topology();
   for (int r = 0; r < t.robots(); ++r) {
@@ -68,7 +68,7 @@ void CoverGroupTask::on_order(const msgs::TaskOrder& o, GroupContext& ctx) {
   // Flat: the GCS planned every robot's route.
   for (std::size_t k = 0; k < o.route_robots().size(); ++k) {
     const int index = t.index_of(o.route_robots()[k]);
-    if (ctx.alive[static_cast<std::size_t>(index)]) send(ctx, index, comm::from_xy(o.routes_xy()[k]));
+    if (ctx.alive[static_cast<std::size_t>(index)]) send(ctx, index, app::from_xy(o.routes_xy()[k]));
   }
 }
 
@@ -132,7 +132,7 @@ void CoverGroupTask::gcs_back(GroupContext& ctx) {
   }
   msgs::TaskReport report;
   report.state(comm::task::kWorking);
-  report.xy(comm::to_xy(covered));
+  report.xy(app::to_xy(covered));
   ctx.out.report(report);
   reported_done_ = false;
 }

@@ -2,7 +2,7 @@
 
 #include <chrono>
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 
 namespace swarm::leader {
 
@@ -69,15 +69,15 @@ void ExploreGroupTask::plan(std::uint32_t round, GroupContext& ctx) {
   ctx.own.assign(round, plan.waypoints[static_cast<std::size_t>(ctx.self)]);
   msgs::Assignment a;
   a.round(round);
-  a.waypoints_xy(comm::to_xy(plan.waypoints));
+  a.waypoints_xy(app::to_xy(plan.waypoints));
   ctx.out.assignment(a);
   msgs::PlanReport report;
   report.group(static_cast<std::uint16_t>(ctx.group));
   report.round(round);
   report.plan_case(static_cast<std::uint8_t>(plan.plan_case));
-  report.waypoints_xy(comm::to_xy(plan.waypoints));
-  report.group_frontiers_xy(comm::to_xy(plan.group_frontiers));
-  for (const auto& seg : plan.global_segments) report.global_segments_xy().push_back(comm::to_xy(seg));
+  report.waypoints_xy(app::to_xy(plan.waypoints));
+  report.group_frontiers_xy(app::to_xy(plan.group_frontiers));
+  for (const auto& seg : plan.global_segments) report.global_segments_xy().push_back(app::to_xy(seg));
   report.chosen_segment(plan.chosen_segment);
   ctx.out.plan_report(report);
 }

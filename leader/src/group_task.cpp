@@ -9,7 +9,7 @@
 
 namespace swarm::leader {
 
-std::unique_ptr<GroupTask> make_group_task(const swarm::scenario::Phase& phase, const comm::RoleSetup& setup,
+std::unique_ptr<GroupTask> make_group_task(const swarm::scenario::Phase& phase, const app::RoleSetup& setup,
                                            int group) {
   const auto& s = setup.world.scenario;
   switch (config::task_of(phase)) {

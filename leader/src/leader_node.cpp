@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 #include "swarm/comm/leadership.hpp"
 #include "swarm/comm/task_codes.hpp"
 #include "swarm/config/scenario.hpp"
@@ -31,7 +31,7 @@ std::vector<int> GroupContext::living() const {
   return out;
 }
 
-LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index,
+LeaderNode::LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, int group, int index,
                        member::RobotAgent& robot, bool leading)
     : agent_(agent),
       setup_(setup),
@@ -39,7 +39,7 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
       group_(group),
       self_index_(index),
       leading_(leading),
-      encoding_(comm::patch_encoding(setup.world.scenario.map_encoding())),
+      encoding_(app::patch_encoding(setup.world.scenario.map_encoding())),
       map_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution()),
       robot_(robot),
       alive_(setup.topology.robots_per_group(), true),
@@ -104,7 +104,7 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
   // round and orders for its group: what it needs to take the group over.
   if (!others.empty()) {
     agent.subscribe<msgs::MapPatch>(topic::patch_up(group), LinkClass::MemberLeader, [this](const msgs::MapPatch& p) {
-      const auto changes = comm::decode_patch(p.data(), robot_.map().size());
+      const auto changes = app::decode_patch(p.data(), robot_.map().size());
       if (leading_) {
         learn(map_.observe(changes), true);
       } else {
@@ -120,7 +120,7 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
   }
   agent.subscribe<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, [this](const msgs::RoundStart& r) {
     planner::OccupancyGrid global(r.width(), r.height(), map_.group().resolution());
-    comm::decode_map(r.map_rle(), static_cast<planner::PatchEncoding>(r.encoding()), global);
+    app::decode_map(r.map_rle(), static_cast<planner::PatchEncoding>(r.encoding()), global);
     if (leading_) {
       learn(map_.adopt_global(global), false);
     } else {
@@ -304,7 +304,7 @@ void LeaderNode::step(const msgs::Clock& clock) {
   if (!to_gcs_.empty()) {
     msgs::MapPatch patch;
     patch.group(static_cast<std::uint16_t>(group_));
-    patch.data(comm::encode_patch(to_gcs_, encoding_));
+    patch.data(app::encode_patch(to_gcs_, encoding_));
     patch_gcs_.send(patch);
     to_gcs_.clear();
   }
@@ -312,7 +312,7 @@ void LeaderNode::step(const msgs::Clock& clock) {
     if (patch_down_ != nullptr) {
       msgs::MapPatch patch;
       patch.group(static_cast<std::uint16_t>(group_));
-      patch.data(comm::encode_patch(to_members_, encoding_));
+      patch.data(app::encode_patch(to_members_, encoding_));
       patch_down_->send(patch);
     }
     to_members_.clear();

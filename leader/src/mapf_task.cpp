@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 #include "swarm/comm/task_codes.hpp"
 
 namespace swarm::leader {
@@ -27,7 +27,7 @@ void MapfGroupTask::note(int k) {
 
 void MapfGroupTask::take_plan(const msgs::TaskOrder& o, GroupContext& ctx) {
   std::vector<planner::mapf::Path> paths;
-  for (const auto& xy : o.routes_xy()) paths.push_back(comm::from_xy(xy));
+  for (const auto& xy : o.routes_xy()) paths.push_back(app::from_xy(xy));
   try {
     adg_ = planner::mapf::dependencies(paths);
   } catch (const std::invalid_argument& e) {
@@ -66,7 +66,7 @@ void MapfGroupTask::take_plan(const msgs::TaskOrder& o, GroupContext& ctx) {
     released_[ku] = timed_ ? static_cast<std::uint32_t>(routes_[ku].size() - 1)
                            : planner::mapf::releasable(adg_, k, progress_, planner::mapf::Rotations::Held);
     msgs::Route m;
-    m.path_xy(comm::to_xy(routes_[ku]));
+    m.path_xy(app::to_xy(routes_[ku]));
     m.release(released_[ku]);
     if (timed_ && !o.values().empty()) m.start_tick(static_cast<std::uint32_t>(o.values()[0]));
     route_id_[ku] = ctx.out.route(index_of_[ku], m);
@@ -164,7 +164,7 @@ void MapfGroupTask::rotate(int q, std::uint32_t tick, GroupContext& ctx) {
     // every member's simulator command then leaves in one tick.
     const std::uint32_t from = m.step - 1;
     msgs::Route r;
-    r.path_xy(comm::to_xy(std::vector<planner::Cell>(routes_[ku].begin() + from, routes_[ku].end())));
+    r.path_xy(app::to_xy(std::vector<planner::Cell>(routes_[ku].begin() + from, routes_[ku].end())));
     r.release(1);
     r.start_tick(tick);
     base_[ku] = from;

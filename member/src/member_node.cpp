@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 
 namespace swarm::member {
 
@@ -15,7 +15,7 @@ void publish_motion(comm::Mailbox::Outlet<msgs::MotionCommand>& motion, comm::Ag
   msgs::MotionCommand cmd;
   cmd.robot(robot);
   cmd.route_id(step.route_id);
-  cmd.path_xy(comm::to_xy(step.path));
+  cmd.path_xy(app::to_xy(step.path));
   cmd.pick_steps(step.pick_steps);
   cmd.drop_steps(step.drop_steps);
   motion.send(cmd);
@@ -30,10 +30,10 @@ std::vector<comm::AgentId> leaders_except_self(const comm::Topology& t, int grou
 }
 
 void follow_route(RobotAgent& robot, const msgs::Route& r) {
-  robot.follow(r.route_id(), comm::from_xy(r.path_xy()), r.release(), r.pick_steps(), r.drop_steps(), r.start_tick());
+  robot.follow(r.route_id(), app::from_xy(r.path_xy()), r.release(), r.pick_steps(), r.drop_steps(), r.start_tick());
 }
 
-MemberNode::MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index,
+MemberNode::MemberNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, int group, int index,
                        RobotAgent& robot)
     : agent_(agent),
       group_(group),
@@ -47,13 +47,13 @@ MemberNode::MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
       motion_(agent.advertise<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, {setup.topology.sim()})),
       progress_(agent.advertise<msgs::RouteProgress>(topic::progress(group), LinkClass::MemberLeader,
                                                      leaders_except_self(setup.topology, group, agent.self()))),
-      encoding_(comm::patch_encoding(setup.world.scenario.map_encoding())) {
+      encoding_(app::patch_encoding(setup.world.scenario.map_encoding())) {
   // Every other candidate of the group writes the leader's topics (only the leader of the moment
   // sends). Readiness waits for those; whether DDS also matches this process's own writers does
   // not matter.
   const int leaders = static_cast<int>(leaders_except_self(setup.topology, group, agent.self()).size());
   agent.subscribe<msgs::Sense>(topic::sense(agent.self()), LinkClass::SimRobot, [this](const msgs::Sense& s) {
-    auto changes = robot_.sense({s.x(), s.y()}, s.ranges(), s.max_range(), comm::route_progress(s));
+    auto changes = robot_.sense({s.x(), s.y()}, s.ranges(), s.max_range(), app::route_progress(s));
     robot_.sense_gripper(s.carrying());
     if (to_leader_) {
       to_leader_(changes);
@@ -62,11 +62,11 @@ MemberNode::MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup,
     }
   }, comm::Delivery::BestEffort, 1);  // a lost scan is not repeated; the next one is newer
   agent.subscribe<msgs::MapPatch>(topic::patch_down(group), LinkClass::MemberLeader, [this](const msgs::MapPatch& p) {
-    if (from_leader(p.header())) robot_.learn(comm::decode_patch(p.data(), robot_.map().size()));
+    if (from_leader(p.header())) robot_.learn(app::decode_patch(p.data(), robot_.map().size()));
   }, comm::Delivery::Reliable, leaders);
   agent.subscribe<msgs::Assignment>(topic::assign(group), LinkClass::MemberLeader, [this](const msgs::Assignment& a) {
     if (!from_leader(a.header())) return;
-    const auto waypoints = comm::optional_cells_from_xy(a.waypoints_xy());
+    const auto waypoints = app::optional_cells_from_xy(a.waypoints_xy());
     ++assignments_;
     robot_.assign(a.round(), index_ < static_cast<int>(waypoints.size()) ? waypoints[index_] : std::nullopt);
   }, comm::Delivery::Reliable, leaders);
@@ -106,7 +106,7 @@ void MemberNode::step(const msgs::Clock& clock) {
   if (!pending_up_.empty()) {
     msgs::MapPatch patch;
     patch.group(static_cast<std::uint16_t>(group_));
-    patch.data(comm::encode_patch(pending_up_, encoding_));
+    patch.data(app::encode_patch(pending_up_, encoding_));
     patch_up_.send(patch);
     pending_up_.clear();
   }

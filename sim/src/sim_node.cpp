@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/config/task_config.hpp"
 #include "swarm/record/metrics.hpp"
@@ -24,14 +24,14 @@ planner::MotionModel motion_for(config::TaskKind task) {
                                                                            : planner::MotionModel::eight();
 }
 
-LidarConfig lidar_of(const comm::RoleSetup& setup) {
+LidarConfig lidar_of(const app::RoleSetup& setup) {
   const auto& s = setup.world.scenario;
   return {static_cast<int>(s.lidar_beams()),
           static_cast<float>(s.sensing_range_m() / setup.world.truth.resolution())};
 }
 }  // namespace
 
-SimNode::SimNode(comm::LockstepClock& clock, const comm::RoleSetup& setup)
+SimNode::SimNode(comm::LockstepClock& clock, const app::RoleSetup& setup)
     : clock_(clock),
       world_(setup.world.truth, setup.world.robot_cells, lidar_of(setup),
              static_cast<int>(setup.world.scenario.footprint_radius())),
@@ -52,7 +52,7 @@ SimNode::SimNode(comm::LockstepClock& clock, const comm::RoleSetup& setup)
     sense_.push_back(&clock.advertise<msgs::Sense>(topic::sense(r), LinkClass::SimRobot, {r}));
   }
   clock.subscribe<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, [this, &t](const msgs::MotionCommand& m) {
-    if (t.is_robot(m.robot()) && alive_[m.robot()]) world_.command(m.robot(), m.route_id(), comm::from_xy(m.path_xy()), m.pick_steps(), m.drop_steps());
+    if (t.is_robot(m.robot()) && alive_[m.robot()]) world_.command(m.robot(), m.route_id(), app::from_xy(m.path_xy()), m.pick_steps(), m.drop_steps());
   }, comm::Delivery::Reliable, t.robots());
   clock.subscribe<msgs::PhaseStart>(topic::kPhase, LinkClass::LeaderGcs,
                                     [this](const msgs::PhaseStart& p) { next_phase_ = p.phase(); },

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <set>
 #include <vector>
@@ -74,6 +75,20 @@ TEST(Link, JitterStaysWithinItsRangeAndIsReproducible) {
     same += c.deliver_tick(LinkClass::LeaderGcs, 5, 64, kTopic, seq, false) - 8 == extra[seq];
   }
   EXPECT_LT(same, 400);  // independent draws agree about 1 in 4 times
+}
+
+TEST(Link, LastArrivalTickIsTheLatestTickAnyDrawDelivers) {
+  LinkTable table;
+  table[LinkClass::MemberLeader].delay_ticks = 2;
+  table[LinkClass::MemberLeader].jitter_ticks = 3;
+  EXPECT_EQ(last_arrival_tick(table[LinkClass::MemberLeader], 5), 11u);  // 5 + 1 + 2 + 3
+  EXPECT_EQ(last_arrival_tick(LinkParams{}, 5), 6u);                     // an ideal link: next tick
+  LinkSender sender(table);
+  std::uint32_t latest = 0;
+  for (std::uint32_t seq = 0; seq < 200; ++seq) {
+    latest = std::max(latest, sender.deliver_tick(LinkClass::MemberLeader, 5, 64, kTopic, seq, false));
+  }
+  EXPECT_EQ(latest, last_arrival_tick(table[LinkClass::MemberLeader], 5));
 }
 
 TEST(Link, BandwidthQueuesMessagesBehindEachOther) {

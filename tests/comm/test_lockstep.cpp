@@ -30,6 +30,7 @@
 #include <fastrtps/xmlparser/XMLProfileManager.h>
 
 #include "swarm/comm/participant.hpp"
+#include "swarm/config/scenario.hpp"
 
 namespace swarm::comm {
 namespace {
@@ -82,8 +83,8 @@ std::string unique_partition() {
 class DerivedProfile {
  public:
   DerivedProfile() {
-    std::ifstream in(default_profile_path());
-    if (!in) throw std::runtime_error("cannot read the Fast DDS profile " + default_profile_path());
+    std::ifstream in(config::dds_profile_path());
+    if (!in) throw std::runtime_error("cannot read the Fast DDS profile " + config::dds_profile_path());
     std::stringstream text;
     text << in.rdbuf();
     std::string xml = text.str();
@@ -518,9 +519,9 @@ TEST(Lockstep, ASampleWrittenOnceBothSidesHaveMatchedReachesTheReader) {
   reserve_participants(2);
   const std::string partition = unique_partition();
   Participant sender_side(
-      DdsOptions{.domain = kDomain, .partition = partition, .name = "sender", .profile_path = ""});
+      DdsOptions{.domain = kDomain, .partition = partition, .name = "sender", .profile_path = config::dds_profile_path()});
   Participant receiver_side(
-      DdsOptions{.domain = kDomain, .partition = partition, .name = "receiver", .profile_path = ""});
+      DdsOptions{.domain = kDomain, .partition = partition, .name = "receiver", .profile_path = config::dds_profile_path()});
   // A new reader and writer per iteration, on a new topic: endpoint discovery is what races.
   constexpr int kIterations = 20;
   int missed = 0;

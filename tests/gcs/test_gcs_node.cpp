@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 #include "swarm_test/ascii_grid.hpp"
 #include "swarm_test/fake_swarm.hpp"
 
@@ -71,7 +71,7 @@ TEST(GcsNode, StartsRoundsFromTheGroupsMapsAndDeclaresCompletionWhenNoFrontierIs
       if (changes.empty()) return;
       msgs::MapPatch p;
       p.group(static_cast<std::uint16_t>(g));
-      p.data(comm::encode_patch(changes, planner::PatchEncoding::RunLength));
+      p.data(app::encode_patch(changes, planner::PatchEncoding::RunLength));
       patch.send(p);
     });
   }
@@ -83,7 +83,7 @@ TEST(GcsNode, StartsRoundsFromTheGroupsMapsAndDeclaresCompletionWhenNoFrontierIs
   EXPECT_EQ(rounds[0].round(), 1u);
   EXPECT_EQ(rounds[0].fused_tick(), 2u);
   planner::OccupancyGrid sent(art.grid.width(), art.grid.height());
-  comm::decode_map(rounds[0].map_rle(), static_cast<planner::PatchEncoding>(rounds[0].encoding()), sent);
+  app::decode_map(rounds[0].map_rle(), static_cast<planner::PatchEncoding>(rounds[0].encoding()), sent);
   EXPECT_EQ(sent.at(Cell{3, 1}), CellState::Free);
   EXPECT_EQ(sent.at(Cell{4, 1}), CellState::Unknown);
   // The east half is fused at tick 7: no frontier, complete; the simulator stops the run.

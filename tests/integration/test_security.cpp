@@ -17,6 +17,7 @@
 #include "run_swarm.hpp"
 #include "swarm/comm/endpoint.hpp"
 #include "swarm/comm/participant.hpp"
+#include "swarm/config/scenario.hpp"
 
 namespace swarm::test {
 namespace {
@@ -42,7 +43,8 @@ RogueView run_with_a_rogue(const std::string& name, const std::string& flags, in
   {
     // Participant id 200: far above the run's (its agent ids 0..3), so no port is shared.
     comm::Participant rogue(
-        comm::DdsOptions{.domain = domain, .partition = partition, .name = "rogue", .participant_id = 200});
+        comm::DdsOptions{.domain = domain, .partition = partition, .name = "rogue",
+                         .profile_path = config::dds_profile_path(), .participant_id = 200});
     std::atomic<int> samples{0};
     comm::Reader<msgs::Clock> clock(rogue, "clock", [&](msgs::Clock&&) { ++samples; });
     comm::Writer<msgs::Done> done(rogue, "done");

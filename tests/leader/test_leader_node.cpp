@@ -17,7 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 #include "swarm/planner/explore.hpp"
 #include "swarm/planner/frontier.hpp"
 #include "swarm_test/ascii_grid.hpp"
@@ -74,7 +74,7 @@ TEST(LeaderNode, PlansCaseBOnTheGlobalMapAndAssignsEachRobotAFrontierCellOfTheRe
     r.width(static_cast<std::uint16_t>(global.width()));
     r.height(static_cast<std::uint16_t>(global.height()));
     r.encoding(static_cast<std::uint8_t>(planner::PatchEncoding::RunLength));
-    r.map_rle(comm::encode_map(global, planner::PatchEncoding::RunLength));
+    r.map_rle(app::encode_map(global, planner::PatchEncoding::RunLength));
     round.send(r);
   });
   // A spy on the group's assignments.
@@ -89,7 +89,7 @@ TEST(LeaderNode, PlansCaseBOnTheGlobalMapAndAssignsEachRobotAFrontierCellOfTheRe
   EXPECT_EQ(plans[0].plan_case(), static_cast<std::uint8_t>(planner::PlanCase::GlobalAssignment));
 
   // Every waypoint is a distinct frontier cell of the global map: the column x = 19, y = 1..5.
-  const auto waypoints = comm::optional_cells_from_xy(assignments[0].waypoints_xy());
+  const auto waypoints = app::optional_cells_from_xy(assignments[0].waypoints_xy());
   ASSERT_EQ(waypoints.size(), 3u);
   std::vector<Cell> cells;
   for (const auto& w : waypoints) {
@@ -134,7 +134,7 @@ TEST(LeaderNode, ALostMemberIsNoticedPlannedWithoutAndTheMissionStillCompletes) 
   // The clock marks it lost at once on the fake (its writers are gone): from the next round on
   // it gets no waypoint.
   for (std::size_t i = before + 1; i < assignments.size(); ++i) {
-    const auto w = comm::optional_cells_from_xy(assignments[i].waypoints_xy());
+    const auto w = app::optional_cells_from_xy(assignments[i].waypoints_xy());
     EXPECT_FALSE(w[2].has_value()) << "round " << assignments[i].round();
   }
   s.finish();
@@ -179,7 +179,7 @@ TEST(LeaderNode, AStandbyTakesOverALostLeaderAndTheMissionCompletes) {
   for (const auto& a : assignments) {
     if (a.header().sender() != t.robot(1, 1)) continue;
     ++after;
-    const auto w = comm::optional_cells_from_xy(a.waypoints_xy());
+    const auto w = app::optional_cells_from_xy(a.waypoints_xy());
     EXPECT_FALSE(w[0].has_value()) << "round " << a.round();
   }
   EXPECT_GT(after, 0u);
@@ -223,7 +223,7 @@ TEST(LeaderNode, DropsMalformedMessagesAndGoesOn) {
     o.width(static_cast<std::uint16_t>(truth.width()));
     o.height(static_cast<std::uint16_t>(truth.height()));
     o.map_encoding(static_cast<std::uint8_t>(planner::PatchEncoding::RunLength));
-    o.known_map(comm::encode_map(truth, planner::PatchEncoding::RunLength));
+    o.known_map(app::encode_map(truth, planner::PatchEncoding::RunLength));
     o.cells(std::move(cells));
     order.send(o);
   };
@@ -241,7 +241,7 @@ TEST(LeaderNode, DropsMalformedMessagesAndGoesOn) {
     if (c.tick() == 3) {
       std::vector<std::uint8_t> all(truth.size(), 0);
       for (std::size_t i = 0; i < all.size(); ++i) all[i] = truth.is_free(truth.cell_of(static_cast<int>(i)));
-      cover_order(2, comm::encode_mask(all, truth.width(), truth.height()));
+      cover_order(2, app::encode_mask(all, truth.width(), truth.height()));
     }
   });
   comm::FakeBus spy(s.network());

@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 #include "swarm_test/ascii_grid.hpp"
 #include "swarm_test/fake_swarm.hpp"
 
@@ -19,7 +19,7 @@ using planner::Cell;
 namespace topic = comm::topic;
 
 // A leader and one member (robot 1 starts at (2, 1)) in a 5 x 2 room.
-comm::RoleSetup two_robots_in_a_room() {
+app::RoleSetup two_robots_in_a_room() {
   const auto art = swarm::test::ascii_map({
       "#######",
       "#.....#",
@@ -45,7 +45,7 @@ TEST(MemberNode, DrivesToItsWaypointAndReportsArrivalForThatRound) {
   leader.subscribe<msgs::Sense>(topic::sense(t.leader(0)), LinkClass::SimRobot, [](const msgs::Sense&) {},
                                 comm::Delivery::BestEffort, 1);
   leader.subscribe<msgs::MapPatch>(topic::patch_up(0), LinkClass::MemberLeader,
-                                   [&](const msgs::MapPatch& p) { patches += !comm::decode_patch(p.data(), 1u << 20).empty(); },
+                                   [&](const msgs::MapPatch& p) { patches += !app::decode_patch(p.data(), 1u << 20).empty(); },
                                    comm::Delivery::Reliable, 1);
   leader.subscribe<msgs::MemberStatus>(topic::status(0), LinkClass::MemberLeader,
                                        [&](const msgs::MemberStatus& m) { statuses.push_back(m); },
@@ -57,7 +57,7 @@ TEST(MemberNode, DrivesToItsWaypointAndReportsArrivalForThatRound) {
     if (c.tick() != 2) return;
     msgs::Assignment a;
     a.round(3);
-    a.waypoints_xy(comm::to_xy(std::vector<std::optional<Cell>>{std::nullopt, Cell{5, 2}}));
+    a.waypoints_xy(app::to_xy(std::vector<std::optional<Cell>>{std::nullopt, Cell{5, 2}}));
     assign.send(a);
   });
 
@@ -106,7 +106,7 @@ TEST(MemberNode, FollowsARouteWithAWaitAndARevisitAndReportsItsProgress) {
     msgs::Route r;
     r.robot(t.robot(0, 1));
     r.route_id(7);
-    r.path_xy(comm::to_xy(route));
+    r.path_xy(app::to_xy(route));
     r.release(static_cast<std::uint32_t>(route.size() - 1));
     routes.send(r);
   });

@@ -7,7 +7,7 @@
 #include <map>
 #include <vector>
 
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 #include "swarm_test/ascii_grid.hpp"
 #include "swarm_test/fake_swarm.hpp"
 
@@ -43,7 +43,7 @@ struct Robots {
         msgs::MotionCommand m;
         m.robot(r);
         m.route_id(it->second.first);
-        m.path_xy(comm::to_xy(it->second.second));
+        m.path_xy(app::to_xy(it->second.second));
         motion[r]->send(m);
       });
     }

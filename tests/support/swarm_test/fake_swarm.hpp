@@ -32,10 +32,10 @@
 
 #include "swarm/comm/fake_bus.hpp"
 #include "swarm/comm/lockstep.hpp"
-#include "swarm/comm/role.hpp"
+#include "swarm/app/role.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/gcs/gcs_node.hpp"
-#include "swarm/leader/candidate_node.hpp"
+#include "swarm/app/candidate_node.hpp"
 #include "swarm/member/member_node.hpp"
 #include "swarm/planner/start_cells.hpp"
 #include "swarm/sim/sim_node.hpp"
@@ -45,9 +45,9 @@
 namespace swarm::test {
 
 // A RoleSetup on a map drawn in a test (no files): robots start around `start`.
-inline comm::RoleSetup setup_for(const planner::OccupancyGrid& truth, planner::Cell start,
+inline app::RoleSetup setup_for(const planner::OccupancyGrid& truth, planner::Cell start,
                                  swarm::scenario::Scenario scenario) {
-  comm::RoleSetup setup;
+  app::RoleSetup setup;
   setup.world.scenario = std::move(scenario);
   setup.world.truth = truth;
   setup.world.start = start;
@@ -58,20 +58,20 @@ inline comm::RoleSetup setup_for(const planner::OccupancyGrid& truth, planner::C
   }
   setup.topology = comm::Topology(static_cast<int>(s.groups()), static_cast<int>(s.robots_per_group()),
                                   config::leader_standbys(s));
-  setup.links = comm::link_table(s, setup.topology);
+  setup.links = app::link_table(s, setup.topology);
   return setup;
 }
 
 // A RoleSetup from scenario text (built-in maps are found through config::data_dir()).
-inline comm::RoleSetup setup_from_text(const std::string& scenario_text) {
+inline app::RoleSetup setup_from_text(const std::string& scenario_text) {
   auto s = config::parse_scenario_text(scenario_text, "test scenario");
   config::validate(s, "test scenario");
-  comm::RoleSetup setup;
+  app::RoleSetup setup;
   setup.world = config::resolve_world(s, "");
   setup.topology = comm::Topology(static_cast<int>(setup.world.scenario.groups()),
                                   static_cast<int>(setup.world.scenario.robots_per_group()),
                                   config::leader_standbys(setup.world.scenario));
-  setup.links = comm::link_table(setup.world.scenario, setup.topology);
+  setup.links = app::link_table(setup.world.scenario, setup.topology);
   return setup;
 }
 
@@ -82,7 +82,7 @@ struct Tag {
 
 class FakeSwarm {
  public:
-  explicit FakeSwarm(comm::RoleSetup setup, std::set<comm::AgentId> scripted = {})
+  explicit FakeSwarm(app::RoleSetup setup, std::set<comm::AgentId> scripted = {})
       : setup_(std::move(setup)), scripted_(std::move(scripted)) {
     const comm::Topology& t = setup_.topology;
     for (int a = 0; a < t.agents(); ++a) buses_.push_back(std::make_unique<comm::FakeBus>(net_));
@@ -107,7 +107,7 @@ class FakeSwarm {
         if (!node(id)) {
           agent(id);
         } else if (t.is_candidate(id)) {
-          candidates_[id] = std::make_unique<leader::CandidateNode>(agent(id), setup_, g, i);
+          candidates_[id] = std::make_unique<app::CandidateNode>(agent(id), setup_, g, i);
         } else {
           bodies_[id] = std::make_unique<member::RobotAgent>(setup_.world.truth.width(), setup_.world.truth.height(),
                                                              setup_.world.truth.resolution());
@@ -119,7 +119,7 @@ class FakeSwarm {
   }
 
   const comm::Topology& topology() const { return setup_.topology; }
-  const comm::RoleSetup& setup() const { return setup_; }
+  const app::RoleSetup& setup() const { return setup_; }
   comm::FakeNetwork& network() { return net_; }
   comm::FakeBus& bus(comm::AgentId a) { return *buses_.at(a); }
   comm::LockstepAgent& agent(comm::AgentId a) { return *agents_.at(a); }
@@ -133,7 +133,7 @@ class FakeSwarm {
     const auto c = candidates_.find(robot);
     return c != candidates_.end() ? c->second->member() : *members_.at(robot);
   }
-  leader::CandidateNode& candidate(comm::AgentId robot) { return *candidates_.at(robot); }
+  app::CandidateNode& candidate(comm::AgentId robot) { return *candidates_.at(robot); }
   std::uint32_t tick() const { return tick_; }
   bool complete() const { return complete_; }
   bool stopped() const { return stopped_; }
@@ -289,7 +289,7 @@ class FakeSwarm {
   }
 
  private:
-  comm::RoleSetup setup_;
+  app::RoleSetup setup_;
   std::set<comm::AgentId> scripted_;
   std::map<comm::AgentId, std::function<void(const msgs::Clock&)>> scripts_;
   TempDir dir_;
@@ -299,7 +299,7 @@ class FakeSwarm {
   std::unique_ptr<sim::SimNode> sim_;
   std::vector<std::unique_ptr<comm::LockstepAgent>> agents_;
   std::unique_ptr<gcs::GcsNode> gcs_;
-  std::map<comm::AgentId, std::unique_ptr<leader::CandidateNode>> candidates_;
+  std::map<comm::AgentId, std::unique_ptr<app::CandidateNode>> candidates_;
   std::map<comm::AgentId, std::unique_ptr<member::RobotAgent>> bodies_;
   std::map<comm::AgentId, std::unique_ptr<member::MemberNode>> members_;
   std::vector<bool> alive_;

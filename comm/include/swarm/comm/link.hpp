@@ -86,6 +86,11 @@ bool link_drops(const LinkTable& table, LinkClass link, std::uint16_t sender, st
 std::uint32_t after_cuts(const LinkTable& table, LinkClass link, std::uint16_t sender, std::uint16_t receiver,
                          std::uint32_t tick, std::uint32_t deliver_tick);
 
+// The last tick at which a message sent at `tick` on a link with these parameters can be acted on
+// in lockstep, with no loss, bandwidth limit or cut: tick + 1 + delay + jitter. Tasks that wait
+// for everything already sent to arrive (a hand-over, a common start tick) wait until then.
+std::uint32_t last_arrival_tick(const LinkParams& p, std::uint32_t tick);
+
 // How many transmissions of the message are lost before one gets through (at most 64).
 std::uint32_t lost_transmissions(const LinkTable& table, LinkClass link, std::uint16_t sender,
                                  std::uint64_t topic_hash, std::uint32_t seq, std::uint16_t receiver);

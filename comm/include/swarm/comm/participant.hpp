@@ -1,9 +1,9 @@
 // The Fast DDS implementation of the Bus (bus.hpp): one DDS participant per process, with the run's
 // isolation applied: its own domain id and a partition unique to the run, so parallel runs on one
-// machine never see each other's samples. QoS comes from the XML profile
-// (deploy/fastdds_loopback.xml by default), not from code.
+// machine never see each other's samples. QoS comes from the XML profile (roles pass
+// deploy/fastdds_loopback.xml by default, config::dds_profile_path()), not from code.
 //
-//   Participant p({.domain = 7, .partition = "swarm-123", .name = "gcs"});
+//   Participant p({.domain = 7, .partition = "swarm-123", .name = "gcs", .profile_path = profile});
 //   Writer<msgs::Clock> w(p, "clock");
 //   Reader<msgs::Done> r(p, "done", [](msgs::Done&& d) { ... });
 //
@@ -32,7 +32,8 @@ struct DdsOptions {
   int domain = 0;
   std::string partition = "swarm";
   std::string name = "swarm";
-  // Fast DDS XML profile file; empty = $SWARM_DDS_PROFILE, else DATA/deploy/fastdds_loopback.xml.
+  // The Fast DDS XML profile file (required; roles take config::dds_profile_path(): $SWARM_DDS_PROFILE,
+  // else DATA/deploy/fastdds_loopback.xml).
   std::string profile_path;
   // "HOST:PORT" of a Fast DDS Discovery Server (fast-discovery-server, id 0): the participant is
   // its CLIENT instead of finding its peers by simple discovery. Empty = $SWARM_DISCOVERY_SERVER,
@@ -57,9 +58,6 @@ struct DdsOptions {
 
 // The discovery server a process uses when none is given (see DdsOptions::discovery_server).
 std::string default_discovery_server();
-
-// The profile file a process uses when none is given (see DdsOptions::profile_path).
-std::string default_profile_path();
 
 class Participant : public Bus {
  public:

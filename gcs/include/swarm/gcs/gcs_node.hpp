@@ -24,7 +24,7 @@
 
 #include "swarm/comm/leadership.hpp"
 #include "swarm/comm/lockstep.hpp"
-#include "swarm/comm/role.hpp"
+#include "swarm/app/role.hpp"
 #include "swarm/gcs/gcs_task.hpp"
 #include "swarm/gcs/mission.hpp"
 #include "swarm/gcs/outages.hpp"
@@ -36,7 +36,7 @@ namespace swarm::gcs {
 
 class GcsNode {
  public:
-  GcsNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, const std::string& run_dir,
+  GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const std::string& run_dir,
           Progress::Style progress);
   // One tick; returns true once the mission is over: complete, or a phase given up.
   bool step(const msgs::Clock& clock);
@@ -53,7 +53,7 @@ class GcsNode {
   void record_phase(std::uint32_t tick, bool ended, bool complete);
 
   comm::LockstepAgent& agent_;
-  const comm::RoleSetup& setup_;
+  const app::RoleSetup& setup_;
   std::string run_dir_;
   Mission mission_;  // the fused map, and exploration's planning rounds
   std::vector<swarm::scenario::Phase> phases_;

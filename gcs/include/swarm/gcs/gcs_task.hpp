@@ -26,7 +26,7 @@
 #include <nlohmann/json.hpp>
 
 #include "swarm/comm/leadership.hpp"
-#include "swarm/comm/role.hpp"
+#include "swarm/app/role.hpp"
 #include "swarm/gcs/mission.hpp"
 #include "swarm/planner/map_patch.hpp"
 #include "swarm/record/record.hpp"
@@ -40,7 +40,7 @@ struct GcsOutlets {
 };
 
 struct GcsContext {
-  const comm::RoleSetup& setup;
+  const app::RoleSetup& setup;
   std::uint32_t phase = 0;
   const msgs::Clock& clock;
   Mission& mission;  // the fused map (and exploration's planning rounds)
@@ -78,7 +78,7 @@ class GcsTask {
 
 // The task of one phase of the mission (config: the phase's settings from config::mission_phases).
 [[nodiscard]] std::unique_ptr<GcsTask> make_gcs_task(const swarm::scenario::Phase& phase,
-                                                     const comm::RoleSetup& setup, std::uint32_t index);
+                                                     const app::RoleSetup& setup, std::uint32_t index);
 
 }  // namespace swarm::gcs
 
@@ -93,6 +93,6 @@ namespace swarm::gcs {
                                         const std::vector<planner::Cell>& route, std::uint32_t region_cells = 0);
 // The encoding whole maps travel in for the run's map_encoding: run-length, zstd-compressed when
 // the run's encoding is ZstdRunLength.
-[[nodiscard]] planner::PatchEncoding map_encoding(const comm::RoleSetup& setup);
+[[nodiscard]] planner::PatchEncoding map_encoding(const app::RoleSetup& setup);
 
 }  // namespace swarm::gcs

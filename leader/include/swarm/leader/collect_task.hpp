@@ -34,7 +34,7 @@ namespace swarm::leader {
 
 class CollectGroupTask : public GroupTask {
  public:
-  CollectGroupTask(const swarm::scenario::Collect& config, const comm::RoleSetup& setup, int group, bool map_given);
+  CollectGroupTask(const swarm::scenario::Collect& config, const app::RoleSetup& setup, int group, bool map_given);
   void start(GroupContext& ctx) override;
   void step(GroupContext& ctx) override;
   void on_order(const msgs::TaskOrder& order, GroupContext& ctx) override;

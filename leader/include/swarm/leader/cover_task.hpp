@@ -23,7 +23,7 @@ namespace swarm::leader {
 
 class CoverGroupTask : public GroupTask {
  public:
-  CoverGroupTask(const swarm::scenario::Cover& config, const comm::RoleSetup& setup, int group);
+  CoverGroupTask(const swarm::scenario::Cover& config, const app::RoleSetup& setup, int group);
   void start(GroupContext& ctx) override;
   void step(GroupContext& ctx) override;
   void on_order(const msgs::TaskOrder& order, GroupContext& ctx) override;

@@ -37,7 +37,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "swarm/comm/role.hpp"
+#include "swarm/app/role.hpp"
 #include "swarm/leader/group_map.hpp"
 #include "swarm/member/robot_agent.hpp"
 #include "swarm/planner/grid.hpp"
@@ -57,7 +57,7 @@ struct GroupOutlets {
 };
 
 struct GroupContext {
-  const comm::RoleSetup& setup;
+  const app::RoleSetup& setup;
   int group = 0;
   int self = 0;  // the leader's own index in the group (0 unless a standby took over)
   std::uint32_t phase = 0;
@@ -104,6 +104,6 @@ class GroupTask {
 
 // The task of one phase of the mission (config: the phase's settings from config::mission_phases).
 [[nodiscard]] std::unique_ptr<GroupTask> make_group_task(const swarm::scenario::Phase& phase,
-                                                         const comm::RoleSetup& setup, int group);
+                                                         const app::RoleSetup& setup, int group);
 
 }  // namespace swarm::leader

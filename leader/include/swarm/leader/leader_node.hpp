@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "swarm/comm/lockstep.hpp"
-#include "swarm/comm/role.hpp"
+#include "swarm/app/role.hpp"
 #include "swarm/leader/group_map.hpp"
 #include "swarm/leader/group_task.hpp"
 #include "swarm/member/robot_agent.hpp"
@@ -27,7 +27,7 @@ namespace swarm::leader {
 class LeaderNode {
  public:
   // `robot` is the leader's own body, owned by the caller; `index` its index in the group.
-  LeaderNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index,
+  LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, int group, int index,
              member::RobotAgent& robot, bool leading);
   void step(const msgs::Clock& clock);    // every tick while leading
   void shadow(const msgs::Clock& clock);  // every tick while another leads
@@ -46,7 +46,7 @@ class LeaderNode {
   void enter_phase();  // a PhaseStart that came makes its phase current
 
   comm::LockstepAgent& agent_;
-  const comm::RoleSetup& setup_;
+  const app::RoleSetup& setup_;
   const comm::Topology topology_;
   int group_;
   int self_index_;

@@ -5,7 +5,7 @@
 //
 // It obeys only its group's leader of the moment (comm/leadership.hpp): orders from a robot that
 // did not lead the group at the tick they were sent are dropped and counted. A standby leader's
-// member side (leader/candidate_node.hpp) is switched off while that robot leads: its scans then
+// member side (app/candidate_node.hpp) is switched off while that robot leads: its scans then
 // go to the leader side (lead()), and it takes no orders.
 #pragma once
 
@@ -16,7 +16,7 @@
 #include "swarm/comm/leadership.hpp"
 
 #include "swarm/comm/lockstep.hpp"
-#include "swarm/comm/role.hpp"
+#include "swarm/app/role.hpp"
 #include "swarm/member/robot_agent.hpp"
 #include "swarm/planner/map_patch.hpp"
 
@@ -25,7 +25,7 @@ namespace swarm::member {
 class MemberNode {
  public:
   // `robot`: the robot's body and map, owned by the caller (a standby shares it with its leader side).
-  MemberNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index, RobotAgent& robot);
+  MemberNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, int group, int index, RobotAgent& robot);
   // Every tick: step() while a member (it observes the clock's leaders too), observe() alone while
   // this robot leads.
   void observe(const msgs::Clock& clock) { leaders_.observe(clock); }

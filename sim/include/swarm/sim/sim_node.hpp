@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "swarm/comm/lockstep.hpp"
-#include "swarm/comm/role.hpp"
+#include "swarm/app/role.hpp"
 #include "swarm/record/metrics.hpp"
 #include "swarm/sim/world.hpp"
 
@@ -26,7 +26,7 @@ namespace swarm::sim {
 
 class SimNode {
  public:
-  SimNode(comm::LockstepClock& clock, const comm::RoleSetup& setup);
+  SimNode(comm::LockstepClock& clock, const app::RoleSetup& setup);
   // The whole run; returns the last tick.
   std::uint32_t run();
   // Tick k up to the clock: motion, scans, Clock(k).

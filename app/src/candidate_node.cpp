@@ -1,12 +1,12 @@
-#include "swarm/leader/candidate_node.hpp"
+#include "swarm/app/candidate_node.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include "swarm/comm/leadership.hpp"
 
-namespace swarm::leader {
+namespace swarm::app {
 
-CandidateNode::CandidateNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index)
+CandidateNode::CandidateNode(comm::LockstepAgent& agent, const RoleSetup& setup, int group, int index)
     : self_(agent.self()),
       topology_(setup.topology),
       group_(group),
@@ -45,4 +45,4 @@ std::string CandidateNode::report_json() const {
   return out.dump();
 }
 
-}  // namespace swarm::leader
+}  // namespace swarm::app

@@ -1,4 +1,4 @@
-#include "swarm/comm/fault_injection.hpp"
+#include "swarm/app/fault_injection.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,7 +10,7 @@
 #include <ctime>
 #include <iostream>
 
-namespace swarm::comm {
+namespace swarm::app {
 
 FaultInjector::FaultInjector(const swarm::scenario::Scenario& scenario, const std::string& agent) : agent_(agent) {
   for (const auto& f : scenario.faults()) {
@@ -61,4 +61,4 @@ void freeze_now(const std::string& who, std::uint32_t tick, double seconds) {
   std::cerr << who << ": resumed after the freeze" << std::endl;
 }
 
-}  // namespace swarm::comm
+}  // namespace swarm::app

@@ -13,7 +13,7 @@
 
 #include "swarm/config/scenario.hpp"
 
-namespace swarm::comm {
+namespace swarm::app {
 
 class FaultInjector {
  public:
@@ -37,4 +37,4 @@ class FaultInjector {
 // The process stops (SIGSTOP, every thread) and a forked waker resumes it after `seconds`.
 void freeze_now(const std::string& who, std::uint32_t tick, double seconds);
 
-}  // namespace swarm::comm
+}  // namespace swarm::app

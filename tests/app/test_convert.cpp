@@ -1,12 +1,12 @@
-// The converters of wire bytes (comm/convert.hpp) on bad input: each throws std::runtime_error
+// The converters of wire bytes (app/convert.hpp) on bad input: each throws std::runtime_error
 // naming what is wrong (the mailbox then drops the message), and good input round-trips.
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 
-namespace swarm::comm {
+namespace swarm::app {
 namespace {
 
 using planner::Cell;
@@ -48,4 +48,4 @@ TEST(Convert, MasksAndMapsMustHaveTheReceiversSize) {
 }
 
 }  // namespace
-}  // namespace swarm::comm
+}  // namespace swarm::app

@@ -1,8 +1,8 @@
-#include "swarm/comm/convert.hpp"
+#include "swarm/app/convert.hpp"
 
 #include <stdexcept>
 
-namespace swarm::comm {
+namespace swarm::app {
 
 std::vector<std::int16_t> to_xy(const std::vector<planner::Cell>& cells) { return planner::cells_to_xy(cells); }
 
@@ -83,4 +83,4 @@ std::vector<std::uint8_t> decode_mask(const std::vector<std::uint8_t>& data, int
   return *mask;
 }
 
-}  // namespace swarm::comm
+}  // namespace swarm::app

@@ -1,4 +1,4 @@
-#include "swarm/comm/role.hpp"
+#include "swarm/app/role.hpp"
 
 #include <unistd.h>
 
@@ -13,7 +13,7 @@
 #include <iostream>
 #include <thread>
 
-namespace swarm::comm {
+namespace swarm::app {
 
 void add_role_flags(CLI::App& app, RoleOptions& o, RoleKind kind) {
   app.add_option("--scenario", o.scenario_path, "scenario file (protobuf text format)")->required();
@@ -59,11 +59,11 @@ std::string process_name(RoleKind kind, int group, const std::vector<int>& indic
   return config::member_process_name(group, indices.front(), indices.back());
 }
 
-LinkTable link_table(const swarm::scenario::Scenario& s, const Topology& topology) {
-  LinkTable t;
+comm::LinkTable link_table(const swarm::scenario::Scenario& s, const comm::Topology& topology) {
+  comm::LinkTable t;
   t.tick_seconds = s.tick_seconds();
   t.seed = s.seed();
-  auto fill = [](LinkParams& p, const swarm::scenario::Link& l) {
+  auto fill = [](comm::LinkParams& p, const swarm::scenario::Link& l) {
     p.delay_ticks = l.delay_ticks();
     p.jitter_ticks = l.jitter_ticks();
     p.loss = l.loss();
@@ -77,9 +77,9 @@ LinkTable link_table(const swarm::scenario::Scenario& s, const Topology& topolog
     const auto agent = topology.agent_named(f.agent());
     if (agent && f.has_cut_from_tick() && f.has_cut_to_tick()) t.cuts.push_back({*agent, f.cut_from_tick(), f.cut_to_tick()});
   }
-  fill(t[LinkClass::SimRobot], s.links().sim_robot());
-  fill(t[LinkClass::MemberLeader], s.links().member_leader());
-  fill(t[LinkClass::LeaderGcs], s.links().leader_gcs());
+  fill(t[comm::LinkClass::SimRobot], s.links().sim_robot());
+  fill(t[comm::LinkClass::MemberLeader], s.links().member_leader());
+  fill(t[comm::LinkClass::LeaderGcs], s.links().leader_gcs());
   return t;
 }
 
@@ -89,7 +89,7 @@ RoleSetup load_role(const RoleOptions& o, RoleKind kind) {
   const std::string dir = std::filesystem::path(o.scenario_path).parent_path().string();
   setup.world = config::resolve_world(scenario, dir.empty() ? "." : dir);
   const auto& s = setup.world.scenario;
-  setup.topology = Topology(static_cast<int>(s.groups()), static_cast<int>(s.robots_per_group()),
+  setup.topology = comm::Topology(static_cast<int>(s.groups()), static_cast<int>(s.robots_per_group()),
                             config::leader_standbys(s));
   if ((kind == RoleKind::Leader || kind == RoleKind::Member) &&
       (o.group < 0 || o.group >= setup.topology.groups())) {
@@ -109,7 +109,7 @@ RoleSetup load_role(const RoleOptions& o, RoleKind kind) {
   setup.links = link_table(s, setup.topology);
   setup.dds.domain = o.domain;
   setup.dds.partition = o.partition;
-  setup.dds.profile_path = o.profile;
+  setup.dds.profile_path = o.profile.empty() ? config::dds_profile_path() : o.profile;
   setup.dds.discovery_server = o.discovery_server;
   setup.dds.security_dir = o.security_dir;
   setup.dds.log_security = o.dds_log == "security";
@@ -159,4 +159,4 @@ int run_role(CLI::App& app, int argc, char** argv, const std::string& role, cons
   }
 }
 
-}  // namespace swarm::comm
+}  // namespace swarm::app

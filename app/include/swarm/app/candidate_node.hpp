@@ -12,20 +12,20 @@
 #include <string>
 
 #include "swarm/comm/lockstep.hpp"
-#include "swarm/comm/role.hpp"
+#include "swarm/app/role.hpp"
 #include "swarm/leader/leader_node.hpp"
 #include "swarm/member/member_node.hpp"
 #include "swarm/member/robot_agent.hpp"
 
-namespace swarm::leader {
+namespace swarm::app {
 
 class CandidateNode {
  public:
-  CandidateNode(comm::LockstepAgent& agent, const comm::RoleSetup& setup, int group, int index);
+  CandidateNode(comm::LockstepAgent& agent, const RoleSetup& setup, int group, int index);
   void step(const msgs::Clock& clock);
   // The leader side's numbers (with its terms as leader, "led"), and the member side's under "member".
   std::string report_json() const;
-  LeaderNode& leader() { return leader_; }
+  leader::LeaderNode& leader() { return leader_; }
   member::MemberNode& member() { return member_; }
 
  private:
@@ -36,7 +36,7 @@ class CandidateNode {
   int group_;
   member::RobotAgent robot_;
   member::MemberNode member_;  // first: it owns the sense topic, the first subscription
-  LeaderNode leader_;
+  leader::LeaderNode leader_;
 };
 
-}  // namespace swarm::leader
+}  // namespace swarm::app

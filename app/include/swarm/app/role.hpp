@@ -24,7 +24,7 @@
 #include "swarm/comm/topology.hpp"
 #include "swarm/config/scenario.hpp"
 
-namespace swarm::comm {
+namespace swarm::app {
 
 enum class RoleKind { Sim, Gcs, Leader, Member };
 
@@ -33,10 +33,10 @@ struct RoleOptions {
   std::string run_dir = ".";
   int domain = 0;
   std::string partition = "swarm";
-  std::string profile;         // Fast DDS XML profile; empty = default_profile_path()
-  std::string discovery_server;  // HOST:PORT; empty = default_discovery_server()
+  std::string profile;         // Fast DDS XML profile; empty = config::dds_profile_path()
+  std::string discovery_server;  // HOST:PORT; empty = comm::default_discovery_server()
   std::string security_dir;      // DDS-Security files (scripts/make-certs.sh); empty = none
-  std::string dds_log;           // "security": DdsOptions::log_security
+  std::string dds_log;           // "security": comm::DdsOptions::log_security
   int group = -1;              // leader, member
   std::vector<int> indices;    // member: the robots this process runs (1..robots_per_group-1)
   std::string progress = "plain";  // gcs: bar | plain | none
@@ -48,9 +48,9 @@ void add_role_flags(CLI::App& app, RoleOptions& options, RoleKind kind);
 // Everything a role derives from its flags and the scenario.
 struct RoleSetup {
   config::World world;
-  Topology topology{1, 1};
-  LinkTable links;
-  DdsOptions dds;
+  comm::Topology topology{1, 1};
+  comm::LinkTable links;
+  comm::DdsOptions dds;
 };
 
 // Loads and resolves the scenario, checks the role's ids against it. Throws config::ConfigError.
@@ -60,7 +60,7 @@ RoleSetup load_role(const RoleOptions& options, RoleKind kind);
 // "leader-G", "member-G-I", or "members-G-F-L" for a member process of robots F..L.
 std::string process_name(RoleKind kind, int group, const std::vector<int>& indices);
 
-LinkTable link_table(const swarm::scenario::Scenario& scenario, const Topology& topology);
+comm::LinkTable link_table(const swarm::scenario::Scenario& scenario, const comm::Topology& topology);
 
 // Ends the process once its work is done and acknowledged (its report sent, its outputs written),
 // with exit status 0 and WITHOUT tearing down Fast DDS: Fast DDS 2.9.1 can abort in its
@@ -79,4 +79,4 @@ LinkTable link_table(const swarm::scenario::Scenario& scenario, const Topology& 
 // Parses argv, runs body, and maps exceptions to the exit codes above.
 int run_role(CLI::App& app, int argc, char** argv, const std::string& role, const std::function<int()>& body);
 
-}  // namespace swarm::comm
+}  // namespace swarm::app

@@ -10,7 +10,7 @@
 #include "swarm/planner/route.hpp"
 #include "swarm_msgs.h"
 
-namespace swarm::comm {
+namespace swarm::app {
 
 // Decoders of bytes from other processes throw std::runtime_error on malformed input (never read
 // or write out of bounds, never allocate more than the run's map allows); the mailbox drops such
@@ -43,4 +43,4 @@ std::vector<std::uint8_t> encode_map(const planner::OccupancyGrid& map, planner:
 // Throws std::runtime_error when the bytes do not decode to a map of into's size.
 void decode_map(const std::vector<std::uint8_t>& data, planner::PatchEncoding encoding, planner::OccupancyGrid& into);
 
-}  // namespace swarm::comm
+}  // namespace swarm::app
