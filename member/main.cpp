@@ -42,7 +42,7 @@ void run_member(comm::Participant& participant, const app::RoleSetup& setup, int
     app::CandidateNode node(agent, setup, group, index);
     run(node);
   } else {
-    member::RobotAgent robot(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution());
+    member::RobotAgent robot(setup.world.frame.width, setup.world.frame.height, setup.world.frame.resolution);
     member::MemberNode node(agent, setup, group, index, robot);
     run(node);
   }

@@ -10,7 +10,7 @@ CandidateNode::CandidateNode(comm::LockstepAgent& agent, const RoleSetup& setup,
     : self_(agent.self()),
       topology_(setup.topology),
       group_(group),
-      robot_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution()),
+      robot_(setup.world.frame.width, setup.world.frame.height, setup.world.frame.resolution),
       member_(agent, setup, group, index, robot_),
       leader_(agent, setup, group, index, robot_, agent.self() == setup.topology.leader(group)) {
   // The first leader leads from tick 0: its first scans are the leader side's already.

@@ -123,7 +123,14 @@ RoleSetup load_role(const RoleOptions& o, RoleKind kind) {
     case RoleKind::Leader: setup.dds.participant_id = setup.topology.leader(o.group); break;
     case RoleKind::Member: setup.dds.participant_id = setup.topology.robot(o.group, o.indices.front()); break;
   }
+  keep_what_the_role_knows(setup, kind);
   return setup;
+}
+
+void keep_what_the_role_knows(RoleSetup& setup, RoleKind kind) {
+  if (kind == RoleKind::Sim) return;
+  if (config::any_map_given(setup.world.scenario)) setup.given_map = setup.world.truth;
+  setup.world.truth = planner::OccupancyGrid();
 }
 
 void exit_after_work(const std::string& agent) {

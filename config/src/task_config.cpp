@@ -40,6 +40,22 @@ bool delivery_ticks_bounded(const swarm::scenario::Scenario& s) {
          bounded(s.links().leader_gcs());
 }
 
+bool map_given(const swarm::scenario::Scenario& s, std::size_t index) {
+  const auto phases = mission_phases(s);
+  for (std::size_t i = 0; i <= index && i < phases.size(); ++i) {
+    if (task_of(phases[i]) == TaskKind::Explore) return false;
+  }
+  return index < phases.size();
+}
+
+bool any_map_given(const swarm::scenario::Scenario& s) {
+  const std::size_t phases = mission_phases(s).size();
+  for (std::size_t i = 0; i < phases; ++i) {
+    if (map_given(s, i)) return true;
+  }
+  return false;
+}
+
 swarm::scenario::Mapf resolved_mapf(const swarm::scenario::Mapf& mapf, const swarm::scenario::Scenario& s) {
   swarm::scenario::Mapf m = mapf;
   if (m.execution() != swarm::scenario::MAPF_EXECUTE_AUTO) return m;

@@ -154,6 +154,23 @@ std::string resolve_map_path(const std::string& map, const std::string& scenario
   return p.lexically_normal().string();
 }
 
+void resolve_phases(World& w, const std::string& source) {
+  const OccupancyGrid& g = w.truth;
+  w.frame = {g.width(), g.height(), g.resolution(), g.origin_x(), g.origin_y()};
+  // Checked now, so that a bad goal or object stops the run before it starts.
+  const auto phases = mission_phases(w.scenario);
+  const int robots = static_cast<int>(w.robot_cells.size());
+  w.mapf_goals.assign(phases.size(), {});
+  w.collect.assign(phases.size(), {});
+  for (std::size_t i = 0; i < phases.size(); ++i) {
+    const std::string field = source + ": mission.phase[" + std::to_string(i) + "]";
+    if (task_of(phases[i]) == TaskKind::Mapf) w.mapf_goals[i] = mapf_goals(phases[i].mapf(), g, robots, field + ".mapf");
+    if (task_of(phases[i]) == TaskKind::Collect) {
+      w.collect[i] = collect_world(phases[i].collect(), g, w.robot_cells, w.scenario.seed(), field + ".collect");
+    }
+  }
+}
+
 World resolve_world(const swarm::scenario::Scenario& scenario, const std::string& scenario_dir,
                     const std::string& source) {
   const std::string src = source.empty() ? "scenario '" + scenario.name() + "'" : source;
@@ -248,16 +265,7 @@ World resolve_world(const swarm::scenario::Scenario& scenario, const std::string
                       std::to_string(w.robot_cells.size()) + " of " + std::to_string(robots) +
                       " robots around " + start_text + " in " + w.map_path);
   }
-  // Each mapf phase's goals and collect phase's objects, checked now so that a bad one stops the
-  // run before it starts.
-  const auto phases = mission_phases(scenario);
-  for (std::size_t i = 0; i < phases.size(); ++i) {
-    const std::string field = src + ": mission.phase[" + std::to_string(i) + "]";
-    if (task_of(phases[i]) == TaskKind::Mapf) (void)mapf_goals(phases[i].mapf(), g, robots, field + ".mapf");
-    if (task_of(phases[i]) == TaskKind::Collect) {
-      (void)collect_world(phases[i].collect(), g, w.robot_cells, scenario.seed(), field + ".collect");
-    }
-  }
+  resolve_phases(w, src);
   return w;
 }
 

@@ -16,8 +16,7 @@ CollectGcsTask::CollectGcsTask(const swarm::scenario::Collect& config, std::uint
 
 void CollectGcsTask::start(GcsContext& ctx) {
   const comm::Topology& t = ctx.setup.topology;
-  world_ = config::collect_world(config_, ctx.setup.world.truth, ctx.setup.world.robot_cells,
-                                 ctx.setup.world.scenario.seed(), "collect");
+  world_ = ctx.setup.world.collect.at(phase_);
   std::vector<int> groups;
   for (int g = 0; g < t.groups(); ++g) {
     if (ctx.alive(ctx.leader_of(g))) groups.push_back(g);

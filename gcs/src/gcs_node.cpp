@@ -48,7 +48,7 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const 
     : agent_(agent),
       setup_(setup),
       run_dir_(run_dir),
-      mission_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution(),
+      mission_(setup.world.frame.width, setup.world.frame.height, setup.world.frame.resolution,
                mission_config(setup)),
       phases_(config::mission_phases(setup.world.scenario)),
       progress_(progress, setup.world.scenario.max_ticks()),
@@ -66,7 +66,7 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const 
     if (h.group() < last_heard_.size() && from_leader(h.header())) last_heard_[h.group()] = agent_.tick();
   }, comm::Delivery::Reliable, writers);
   agent.subscribe<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, [this](const msgs::MapPatch& p) {
-    mission_.fuse(p.group(), app::decode_patch(p.data(), setup_.world.truth.size()));
+    mission_.fuse(p.group(), app::decode_patch(p.data(), setup_.world.frame.cells()));
   }, comm::Delivery::Reliable, writers);
   agent.subscribe<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs, [this](const msgs::GroupStatus& s) {
     if (from_leader(s.header())) statuses_.push_back(s);
@@ -108,12 +108,12 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const 
   record::Frame header;
   auto* h = header.mutable_header();
   *h->mutable_scenario() = setup.world.scenario;
-  const auto& truth = setup.world.truth;
-  h->set_width(truth.width());
-  h->set_height(truth.height());
-  h->set_resolution(truth.resolution());
-  h->set_origin_x(truth.origin_x());
-  h->set_origin_y(truth.origin_y());
+  const config::MapFrame& frame = setup.world.frame;
+  h->set_width(frame.width);
+  h->set_height(frame.height);
+  h->set_resolution(frame.resolution);
+  h->set_origin_x(frame.origin_x);
+  h->set_origin_y(frame.origin_y);
   h->set_start_x(setup.world.start.x);
   h->set_start_y(setup.world.start.y);
   h->set_groups(setup.topology.groups());

@@ -46,19 +46,14 @@ planner::PatchEncoding map_encoding(const app::RoleSetup& setup) {
 
 std::unique_ptr<GcsTask> make_gcs_task(const swarm::scenario::Phase& phase, const app::RoleSetup& setup,
                                        std::uint32_t index) {
-  // The robots are given the map (as DARP assumes) when no exploration comes before.
-  const auto phases = config::mission_phases(setup.world.scenario);
-  bool explored = false;
-  for (std::uint32_t i = 0; i < index && i < phases.size(); ++i) {
-    explored = explored || config::task_of(phases[i]) == config::TaskKind::Explore;
-  }
+  const bool map_given = config::map_given(setup.world.scenario, index);
   switch (config::task_of(phase)) {
     case config::TaskKind::Explore:
       return std::make_unique<ExploreGcsTask>(index);
     case config::TaskKind::Cover:
-      return std::make_unique<CoverGcsTask>(phase.cover(), index, !explored);
+      return std::make_unique<CoverGcsTask>(phase.cover(), index, map_given);
     case config::TaskKind::Mapf:
-      return std::make_unique<MapfGcsTask>(config::resolved_mapf(phase.mapf(), setup.world.scenario), index, !explored);
+      return std::make_unique<MapfGcsTask>(config::resolved_mapf(phase.mapf(), setup.world.scenario), index, map_given);
     case config::TaskKind::Collect:
       return std::make_unique<CollectGcsTask>(phase.collect(), index);
     default:

@@ -42,9 +42,9 @@ std::vector<Cell> MapfGcsTask::random_goals(const GcsContext& ctx) const {
 }
 
 void MapfGcsTask::start(GcsContext& ctx) {
-  known_ = map_given_ ? ctx.setup.world.truth : ctx.mission.fused();
+  known_ = map_given_ ? ctx.setup.given_map : ctx.mission.fused();
   start_tick_ = ctx.tick();
-  goals_ = config::mapf_goals(config_, ctx.setup.world.truth, ctx.setup.topology.robots(), "mapf");
+  goals_ = ctx.setup.world.mapf_goals.at(phase_);
   if (goals_.empty()) goals_ = random_goals(ctx);
   const auto groups = static_cast<std::size_t>(ctx.setup.topology.groups());
   group_in_plan_.assign(groups, false);

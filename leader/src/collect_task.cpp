@@ -23,11 +23,10 @@ constexpr std::uint32_t kStallTicks = 6;
 }  // namespace
 
 CollectGroupTask::CollectGroupTask(const swarm::scenario::Collect& config, const app::RoleSetup& setup, int group,
-                                   bool map_given)
+                                   std::uint32_t index)
     : group_(group),
-      map_given_(map_given),
-      world_(config::collect_world(config, setup.world.truth, setup.world.robot_cells, setup.world.scenario.seed(),
-                                   "collect")),
+      map_given_(config::map_given(setup.world.scenario, index)),
+      world_(setup.world.collect.at(index)),
       robots_(static_cast<std::size_t>(setup.topology.robots_per_group())) {}
 
 void CollectGroupTask::start(GroupContext&) {
@@ -175,10 +174,14 @@ void CollectGroupTask::share(const std::vector<int>& ids, GroupContext& ctx) {
   }
 }
 
+const planner::OccupancyGrid& CollectGroupTask::known_map(const GroupContext& ctx) const {
+  return map_given_ ? ctx.setup.given_map : ctx.map.group();
+}
+
 planner::OccupancyGrid CollectGroupTask::planning_map(const GroupContext& ctx) const {
   // A lost robot stands where it stopped for good (the clock says who is lost, in every group):
   // tours and detours go round it.
-  planner::OccupancyGrid map = map_given_ ? ctx.setup.world.truth : ctx.map.group();
+  planner::OccupancyGrid map = known_map(ctx);
   for (const auto& r : ctx.clock.robots()) {
     if (!r.alive()) map.set({r.x(), r.y()}, planner::CellState::Occupied);
   }
@@ -352,10 +355,11 @@ void CollectGroupTask::on_progress(int index, const planner::RouteProgress& p, G
 
 void CollectGroupTask::member_lost(int index, GroupContext& ctx) {
   Robot& lost = robots_[static_cast<std::size_t>(index)];
-  // Where the simulator put down what it carried (the same rule, from the same robot cells).
+  // Where the simulator put down what it carried: the same rule, from the same robot cells, on the
+  // map the group knows (the cells around a robot are in its scans, so they agree with the truth).
   std::vector<Cell> robots;
   for (const auto& s : ctx.clock.robots()) robots.push_back({s.x(), s.y()});
-  const Cell at = planner::put_down_cell(ctx.setup.world.truth, ctx.cell_of(index), robots);
+  const Cell at = planner::put_down_cell(known_map(ctx), ctx.cell_of(index), robots);
   put_down_[static_cast<std::size_t>(index)] = at;
   if (resuming_) return;  // what it held is judged with the resume order
   std::vector<int> orphans = lost.pending;

@@ -42,11 +42,11 @@ void CoverGroupTask::send(GroupContext& ctx, int index, std::vector<Cell> route)
 
 void CoverGroupTask::on_order(const msgs::TaskOrder& o, GroupContext& ctx) {
   if (o.seq() <= order_seq_ && have_share_) return;  // an older order
-  const auto& map = ctx.setup.world.truth;
-  if (o.width() != map.width() || o.height() != map.height()) {
+  const config::MapFrame& map = ctx.setup.world.frame;
+  if (static_cast<int>(o.width()) != map.width || static_cast<int>(o.height()) != map.height) {
     throw std::runtime_error("a cover order for a " + std::to_string(o.width()) + " x " + std::to_string(o.height()) +
-                             " map; the run's map is " + std::to_string(map.width()) + " x " +
-                             std::to_string(map.height()));
+                             " map; the run's map is " + std::to_string(map.width) + " x " +
+                             std::to_string(map.height));
   }
   order_seq_ = o.seq();
   tick_ = ctx.clock.tick();

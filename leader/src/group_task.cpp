@@ -10,7 +10,7 @@
 namespace swarm::leader {
 
 std::unique_ptr<GroupTask> make_group_task(const swarm::scenario::Phase& phase, const app::RoleSetup& setup,
-                                           int group) {
+                                           int group, std::uint32_t index) {
   const auto& s = setup.world.scenario;
   switch (config::task_of(phase)) {
     case config::TaskKind::Explore:
@@ -19,15 +19,8 @@ std::unique_ptr<GroupTask> make_group_task(const swarm::scenario::Phase& phase, 
       return std::make_unique<CoverGroupTask>(phase.cover(), setup, group);
     case config::TaskKind::Mapf:
       return std::make_unique<MapfGroupTask>(config::resolved_mapf(phase.mapf(), s), group);
-    case config::TaskKind::Collect: {
-      // The robots are given the map (the map file) when no exploration comes before.
-      bool explored = false;
-      for (const auto& p : config::mission_phases(s)) {
-        if (config::task_of(p) == config::TaskKind::Collect) break;  // the first collect phase
-        explored = explored || config::task_of(p) == config::TaskKind::Explore;
-      }
-      return std::make_unique<CollectGroupTask>(phase.collect(), setup, group, !explored);
-    }
+    case config::TaskKind::Collect:
+      return std::make_unique<CollectGroupTask>(phase.collect(), setup, group, index);
     default:
       break;
   }

@@ -40,7 +40,7 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, 
       self_index_(index),
       leading_(leading),
       encoding_(app::patch_encoding(setup.world.scenario.map_encoding())),
-      map_(setup.world.truth.width(), setup.world.truth.height(), setup.world.truth.resolution()),
+      map_(setup.world.frame.width, setup.world.frame.height, setup.world.frame.resolution),
       robot_(robot),
       alive_(setup.topology.robots_per_group(), true),
       // Route ids never repeat in a run: each candidate numbers its routes in a range of its own.
@@ -49,9 +49,8 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, 
       heartbeat_(agent.advertise<msgs::Heartbeat>(topic::kHeartbeat, LinkClass::LeaderGcs, {topology_.gcs()})),
       motion_(agent.advertise<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, {topology_.sim()})) {
   if (leading_) led_.push_back({0, std::nullopt});
-  for (const auto& phase : config::mission_phases(setup.world.scenario)) {
-    tasks_.push_back(make_group_task(phase, setup, group));
-  }
+  const auto phases = config::mission_phases(setup.world.scenario);
+  for (std::uint32_t i = 0; i < phases.size(); ++i) tasks_.push_back(make_group_task(phases[i], setup, group, i));
   const auto others = topology_.group_except(group, agent.self());
   // Every other robot of the group writes its member topics (the candidates too, while members).
   const int writers = static_cast<int>(others.size());

@@ -37,8 +37,7 @@ SimNode::SimNode(comm::LockstepClock& clock, const app::RoleSetup& setup)
              static_cast<int>(setup.world.scenario.footprint_radius())),
       max_ticks_(setup.world.scenario.max_ticks()),
       alive_(setup.world.robot_cells.size(), true),
-      robot_cells_(setup.world.robot_cells),
-      seed_(setup.world.scenario.seed()) {
+      collect_(setup.world.collect) {
   const comm::Topology& t = setup.topology;
   // Lockstep has no wall time, but a GCS that is down comes back after wall seconds: while it is
   // lost, mission time passes at the real-time rate (tick_ms), so its outage lasts as many ticks
@@ -77,8 +76,7 @@ void SimNode::start_phase(std::uint32_t index, std::uint32_t tick) {
     log.curve.emplace_back(tick, world_.covered_fraction());
   }
   if (task == config::TaskKind::Collect) {
-    const config::CollectWorld cw = config::collect_world(mission_[index].collect(), world_.truth(), robot_cells_,
-                                                          seed_, "collect");
+    const config::CollectWorld& cw = collect_.at(index);
     world_.set_objects(cw.objects, cw.destinations);
     log.curve.emplace_back(tick, 0.0);
   }

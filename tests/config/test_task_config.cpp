@@ -87,3 +87,49 @@ TEST(CollectWorld, BadObjectsAndDestinationsAreNamed) {
 
 }  // namespace
 }  // namespace swarm::config
+
+namespace swarm::config {
+namespace {
+
+TEST(MapGiven, OnlyPhasesThatNoExplorationPrecedesAreGivenTheMap) {
+  const auto mission = [](const std::string& phases) { return parse_scenario_text("mission { " + phases + " }", "t"); };
+  const auto explore_first = mission("phase { explore {} } phase { cover {} } phase { mapf {} }");
+  EXPECT_FALSE(map_given(explore_first, 0));  // exploration never is
+  EXPECT_FALSE(map_given(explore_first, 1));
+  EXPECT_FALSE(map_given(explore_first, 2));
+  EXPECT_FALSE(any_map_given(explore_first));
+  const auto cover_first = mission("phase { cover {} } phase { collect {} } phase { explore {} } phase { mapf {} }");
+  EXPECT_TRUE(map_given(cover_first, 0));
+  EXPECT_TRUE(map_given(cover_first, 1));
+  EXPECT_FALSE(map_given(cover_first, 2));
+  EXPECT_FALSE(map_given(cover_first, 3));
+  EXPECT_FALSE(map_given(cover_first, 4));  // past the mission
+  EXPECT_TRUE(any_map_given(cover_first));
+}
+
+TEST(ResolvePhases, EachPhaseGetsItsGoalsOrObjectsAndTheFrame) {
+  World w;
+  w.scenario = parse_scenario_text(
+      "mission { phase { explore {} } phase { mapf { goals { x: 0.1 y: 0.1 } goals { x: 1.1 y: 0.5 } } }"
+      " phase { collect { objects { at { x: 0.3 y: 0.1 } type: 0 } destinations { x: 0.1 y: 0.5 } } } }",
+      "t");
+  w.truth = room();
+  w.robot_cells = {{0, 1}, {1, 1}};
+  resolve_phases(w, "t");
+  EXPECT_EQ(w.frame.width, 6);
+  EXPECT_EQ(w.frame.height, 3);
+  EXPECT_EQ(w.frame.cells(), 18u);
+  ASSERT_EQ(w.mapf_goals.size(), 3u);
+  EXPECT_TRUE(w.mapf_goals[0].empty());
+  EXPECT_EQ(w.mapf_goals[1], (std::vector<Cell>{{0, 0}, {5, 2}}));
+  ASSERT_EQ(w.collect.size(), 3u);
+  ASSERT_EQ(w.collect[2].objects.size(), 1u);
+  EXPECT_EQ(w.collect[2].objects[0].cell, (Cell{1, 0}));
+  EXPECT_EQ(w.collect[2].destinations, (std::vector<Cell>{{0, 2}}));
+  // A bad goal is named by its phase.
+  w.scenario = parse_scenario_text("mission { phase { mapf { goals { x: 0.7 y: 0.3 } goals { x: 0.1 y: 0.1 } } } }", "t");
+  EXPECT_NE(error_of([&] { resolve_phases(w, "s"); }).find("s: mission.phase[0].mapf"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace swarm::config

@@ -56,9 +56,13 @@ inline app::RoleSetup setup_for(const planner::OccupancyGrid& truth, planner::Ce
   if (setup.world.robot_cells.size() != s.groups() * s.robots_per_group()) {
     throw std::invalid_argument("setup_for: not enough free cells around the start for every robot");
   }
+  config::resolve_phases(setup.world, "test scenario");
   setup.topology = comm::Topology(static_cast<int>(s.groups()), static_cast<int>(s.robots_per_group()),
                                   config::leader_standbys(s));
   setup.links = app::link_table(s, setup.topology);
+  // One setup serves the fake simulator and the roles: it keeps the truth, and gives the roles the
+  // map as load_role would.
+  if (config::any_map_given(s)) setup.given_map = setup.world.truth;
   return setup;
 }
 
@@ -72,6 +76,7 @@ inline app::RoleSetup setup_from_text(const std::string& scenario_text) {
                                   static_cast<int>(setup.world.scenario.robots_per_group()),
                                   config::leader_standbys(setup.world.scenario));
   setup.links = app::link_table(setup.world.scenario, setup.topology);
+  if (config::any_map_given(setup.world.scenario)) setup.given_map = setup.world.truth;
   return setup;
 }
 

@@ -47,7 +47,11 @@ void add_role_flags(CLI::App& app, RoleOptions& options, RoleKind kind);
 
 // Everything a role derives from its flags and the scenario.
 struct RoleSetup {
+  // The simulator's world.truth is the map file's cells; every other role's is empty (a deployed
+  // robot has no map file): it knows world.frame and learns the rest from its scans.
   config::World world;
+  // The map file's cells when some phase gives the robots the map (config::map_given), else empty.
+  planner::OccupancyGrid given_map;
   comm::Topology topology{1, 1};
   comm::LinkTable links;
   comm::DdsOptions dds;
@@ -55,6 +59,10 @@ struct RoleSetup {
 
 // Loads and resolves the scenario, checks the role's ids against it. Throws config::ConfigError.
 RoleSetup load_role(const RoleOptions& options, RoleKind kind);
+
+// Leaves a role other than the simulator only what it may know of the map: the frame always, the
+// cells as given_map when the scenario gives the robots the map. load_role applies it.
+void keep_what_the_role_knows(RoleSetup& setup, RoleKind kind);
 
 // The process's name in a run, which its log, its certificate and `swarm run` use: "sim", "gcs",
 // "leader-G", "member-G-I", or "members-G-F-L" for a member process of robots F..L.

@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "swarm/config/task_config.hpp"
 #include "swarm/planner/grid.hpp"
 #include "swarm/proto/scenario.pb.h"
 
@@ -119,17 +120,41 @@ void set_mission(swarm::scenario::Scenario& scenario, const std::vector<std::str
 // The largest map side a run accepts: cells travel as 16-bit signed coordinates.
 inline constexpr int kMaxMapSide = 32767;
 
+// The map's extent and placement: the area to work in, which every role knows. Its cells only the
+// simulator holds, and a role only when the scenario gives the robots the map (map_given).
+struct MapFrame {
+  int width = 0;
+  int height = 0;
+  double resolution = 0.2;
+  double origin_x = 0.0;
+  double origin_y = 0.0;
+  std::size_t cells() const { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
+  // A grid of this frame with every cell Unknown: where a role's own map starts.
+  swarm::planner::OccupancyGrid unknown() const { return {width, height, resolution, origin_x, origin_y}; }
+};
+
 // Everything a run needs that follows from the scenario and its map. Only the simulator (and
 // offline tools) may hold `truth`: agents learn the world from their scans.
 struct World {
   swarm::scenario::Scenario scenario;  // validated; `start` set to the start actually used
   swarm::planner::OccupancyGrid truth;  // the map file's cells
+  MapFrame frame;                       // truth's extent
   swarm::planner::Cell start;           // the drop-off cell every robot starts around
   // groups * robots_per_group distinct Free cells around `start`; robot id = group *
   // robots_per_group + index, index 0 being the group's leader.
   std::vector<swarm::planner::Cell> robot_cells;
   std::string map_path;  // the YAML file read
+  // Per phase of mission_phases(scenario), resolved and checked at load from the scenario and the
+  // map, so that every process agrees without reading the map itself: a mapf phase's goals (empty:
+  // random goals, chosen when the phase starts) and a collect phase's objects and destinations.
+  std::vector<std::vector<swarm::planner::Cell>> mapf_goals;
+  std::vector<CollectWorld> collect;
 };
+
+// Fills w.frame and the per-phase goals and objects from w.scenario, w.truth and w.robot_cells
+// (resolve_world calls it; a test that builds a World by hand calls it too). Throws ConfigError
+// naming `source`'s field for a bad goal or object.
+void resolve_phases(World& w, const std::string& source);
 
 // validate()s `scenario`, loads its map, picks the start and the robots' cells (see World).
 // `source` names the scenario in messages (default: "scenario 'NAME'"). Throws ConfigError when

@@ -19,6 +19,13 @@ namespace swarm::config {
 [[nodiscard]] planner::CoverRoutesConfig cover_routes_config(const swarm::scenario::Cover& cover, std::uint64_t seed,
                                                              std::uint64_t salt);
 
+// Are the robots given the map (the map file's cells) for phase `index` of mission_phases(s)? Yes
+// when no explore phase comes before it (DARP, MAPF and the tour planners assume a known map);
+// never for an explore phase. The one rule the GCS, the leaders and the role set-up follow.
+[[nodiscard]] bool map_given(const swarm::scenario::Scenario& s, std::size_t index);
+// Does any phase give the robots the map? Only then may a role other than the simulator hold it.
+[[nodiscard]] bool any_map_given(const swarm::scenario::Scenario& s);
+
 // Does every message of the run arrive within a number of ticks known in advance (its link's
 // delay + jitter)? Not with loss (a re-sent message comes later), a bandwidth cap (it queues) or
 // in real time. A plan driven by its own timing (MAPF_EXECUTE_TIMED) needs this: its start tick

@@ -34,7 +34,9 @@ namespace swarm::leader {
 
 class CollectGroupTask : public GroupTask {
  public:
-  CollectGroupTask(const swarm::scenario::Collect& config, const app::RoleSetup& setup, int group, bool map_given);
+  // Phase `index` of the mission: its objects and destinations are setup.world.collect[index].
+  CollectGroupTask(const swarm::scenario::Collect& config, const app::RoleSetup& setup, int group,
+                   std::uint32_t index);
   void start(GroupContext& ctx) override;
   void step(GroupContext& ctx) override;
   void on_order(const msgs::TaskOrder& order, GroupContext& ctx) override;
@@ -46,7 +48,9 @@ class CollectGroupTask : public GroupTask {
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:
-  // The map tours are planned on: the map file or the group map, lost robots' cells blocked.
+  // What the group knows of the map: the given map (config::map_given) or the group map.
+  [[nodiscard]] const planner::OccupancyGrid& known_map(const GroupContext& ctx) const;
+  // The map tours are planned on: known_map with lost robots' cells blocked.
   [[nodiscard]] planner::OccupancyGrid planning_map(const GroupContext& ctx) const;
   // A tour for robot `index` over its pending objects, from where it stands.
   void plan(int index, GroupContext& ctx);

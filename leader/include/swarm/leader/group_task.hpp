@@ -102,8 +102,10 @@ class GroupTask {
   [[nodiscard]] virtual nlohmann::json numbers() const = 0;
 };
 
-// The task of one phase of the mission (config: the phase's settings from config::mission_phases).
+// The task of phase `index` of the mission (config: the phase's settings from
+// config::mission_phases).
 [[nodiscard]] std::unique_ptr<GroupTask> make_group_task(const swarm::scenario::Phase& phase,
-                                                         const app::RoleSetup& setup, int group);
+                                                         const app::RoleSetup& setup, int group,
+                                                         std::uint32_t index);
 
 }  // namespace swarm::leader

@@ -55,8 +55,7 @@ class SimNode {
   std::optional<std::uint32_t> steps_to_99_;
   std::vector<std::pair<std::uint32_t, double>> curve_;  // (tick, explored fraction)
   std::vector<bool> alive_;
-  std::vector<planner::Cell> robot_cells_;  // at the start (the collect world is drawn from them)
-  std::uint64_t seed_;
+  std::vector<config::CollectWorld> collect_;  // per mission phase: its objects and destinations
   std::vector<float> ranges_;
 
   // The mission's phases as the GCS announces them, and what the simulator judged in each.
