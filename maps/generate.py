@@ -22,7 +22,7 @@ first and last lines are the outer wall. Walls are one cell thick. `obstacles` a
 blocks, in metres of the map frame: (x0, y0, x1, y1), lower-left corner to upper-right corner.
 `resolution` (metres per cell) is RESOLUTION unless a map sets its own.
 
-A warehouse map (the MAPF paper's world, PAPERS.md section 3) is given as `warehouse=(R, C)`
+A warehouse map (the MAPF paper's world, docs/papers.md section 3) is given as `warehouse=(R, C)`
 instead: R x C intersections at cells (2j + 1, 2i + 1) joined by one-cell passages, with a block
 of wall between every four intersections and a one-cell outer wall; (2C + 1) x (2R + 1) cells,
 the same cells as the built-in `swarm mapf --map warehouse-RxC` (planner/mapf/warehouse.hpp).

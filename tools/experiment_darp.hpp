@@ -1,4 +1,4 @@
-// `swarm experiment darp`: the DARP paper's comparisons (../shared/PAPERS.md section 2), offline,
+// `swarm experiment darp`: the DARP paper's comparisons (docs/papers.md section 2), offline,
 // on our own maps: the airport-terminal-like map and the near-empty rectangle (maps/README.md).
 //
 // 1. Initialisations (the paper's Tables 6-11, Fig. 8/9). For every map, start condition

@@ -1,4 +1,4 @@
-// `swarm experiment explore`: the paper's Table 2 (shared/PAPERS.md section 1): steps and planning
+// `swarm experiment explore`: the paper's Table 2 (docs/papers.md section 1): steps and planning
 // rounds of group-frontier, baseline and ideal on each map, mean ± std over seeds, the percent
 // change against the baseline, and the checks the paper's results imply.
 #include <algorithm>

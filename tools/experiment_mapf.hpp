@@ -1,6 +1,6 @@
 // `swarm experiment mapf`: the MAPF solvers side by side, offline (no swarm is started).
 //
-//   (a) the paper's Tables 1 and 2 (PAPERS.md section 3) on its warehouse world (warehouse-5x8):
+//   (a) the paper's Tables 1 and 2 (docs/papers.md section 3) on its warehouse world (warehouse-5x8):
 //       5, 10, 15, 20, 25 robots x --runs random instances; collisions, work time and stop time
 //       per robot, compute time, for CBS (the paper's rule: a timed-out CBS returns its last
 //       constraint-tree node), the two-stage GA, the single-stage GA, ECBS and LaCAM*; a table,

@@ -18,7 +18,7 @@ void expect_valid(const OccupancyGrid& map, const DarpRequest& req, const DarpRe
   for (const std::string& p : check_division(map, req, r, given)) ADD_FAILURE() << p;
 }
 
-// ../shared/PAPERS.md section 2, Table 1: cells per robot after one DARP iteration -> alpha.
+// docs/papers.md section 2, Table 1: cells per robot after one DARP iteration -> alpha.
 TEST(Imbalance, MatchesThePapersTableOne) {
   EXPECT_NEAR(imbalance({249, 542, 381, 1010, 1552, 786}), 0.2512, 5e-5);
   EXPECT_NEAR(imbalance({280, 316, 934, 958, 1637, 395}), 0.2912, 5e-5);

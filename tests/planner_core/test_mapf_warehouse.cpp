@@ -41,7 +41,7 @@ TEST(MapfWarehouse, FiveByEightHasItsCells) {
   EXPECT_FALSE(parse_warehouse_name("random-32-32-20").has_value());
 }
 
-// PAPERS.md section 3: 2 x the mean Manhattan distance between random distinct intersections of
+// docs/papers.md section 3: 2 x the mean Manhattan distance between random distinct intersections of
 // the 5 x 8 world is 8.66 steps (the paper's reported work times agree).
 TEST(MapfWarehouse, RandomInstancesMatchThePapersDistances) {
   double sum = 0;

@@ -1,4 +1,4 @@
-// The one place where generated message fields become planner_core types and back (STYLE.md 7).
+// The one place where generated message fields become planner_core types and back (docs/style.md 7).
 #pragma once
 
 #include <cstdint>

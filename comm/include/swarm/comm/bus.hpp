@@ -15,7 +15,7 @@
 //
 // Contract for implementations:
 //   - a reader's on_sample runs on any thread (DDS: its receive thread; fake: the writer's
-//     thread, synchronously inside write()) and must only translate and enqueue (STYLE.md 7);
+//     thread, synchronously inside write()) and must only translate and enqueue (docs/style.md 7);
 //   - on_writer_lost(w) runs when writer w stops being alive to this reader: its liveliness lease
 //     ran out (EndpointKind::Heartbeat) or it was unmatched (its participant left or was cut off);
 //   - matched() counts the endpoints on the other side that this endpoint currently sees.

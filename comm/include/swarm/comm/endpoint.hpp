@@ -1,7 +1,7 @@
 // Typed endpoints over a Bus (bus.hpp), for the generated swarm::msgs types.
 //
 // Writer<T>::write sends one sample; Reader<T> hands every received sample to a callback on
-// whatever thread the bus delivers on. Callbacks only translate and enqueue (STYLE.md 7): the
+// whatever thread the bus delivers on. Callbacks only translate and enqueue (docs/style.md 7): the
 // agent's loop does the work.
 //
 //   Writer<msgs::Clock> w(bus, "clock");

@@ -1,4 +1,4 @@
-// Who leads each group, tick by tick: a group survives its leader (DESIGN.md "Faults").
+// Who leads each group, tick by tick: a group survives its leader (docs/design.md "Faults").
 //
 // The succession rule (next_leaders): a group keeps its leader while the clock shows that robot
 // alive. When it is lost, the living candidate of lowest index (topology.hpp: indices

@@ -1,4 +1,4 @@
-// Link emulation: what a message suffers between two agents, per link class (DESIGN.md).
+// What a message suffers between two agents, per link class (docs/design.md, "Link emulation").
 //
 // Lockstep semantics, all in ticks and decided deterministically from the run's seed:
 // - A message an agent sends at tick t is acted on at t + 1 + delay (+ jitter) at the earliest:

@@ -1,8 +1,8 @@
-// Scenario files: the one file that drives every process of a run (DESIGN.md, "One scenario file
+// Scenario files: the one file that drives every process of a run (docs/design.md, "One scenario file
 // drives every process").
 //
 // A scenario is a `swarm.scenario.Scenario` message (idl/scenario.proto) in protobuf text format;
-// every field is optional and defaults to the paper's Table 1 (PAPERS.md section 1). Reading one
+// every field is optional and defaults to the paper's Table 1 (docs/papers.md section 1). Reading one
 // takes two steps, both at the process edge:
 //   1. load_scenario: parse + validate(). Every impossible value (a count of 0, a negative range,
 //      a loss probability of 1, ...) is a ConfigError naming the file, the field, what was

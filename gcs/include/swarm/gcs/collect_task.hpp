@@ -1,4 +1,4 @@
-// The GCS's collection task (issue 10; PAPERS.md section 4): every object carried to its type's
+// The GCS's collection task (issue 10; docs/papers.md section 4): every object carried to its type's
 // destination. The objects and destinations come from the scenario (config::collect_world, the
 // same for the simulator, the GCS and the leaders, so an object is known by its number).
 //

@@ -1,4 +1,4 @@
-// The GCS's coverage task (issue 8; PAPERS.md section 2 for DARP): cover every reachable free cell
+// The GCS's coverage task (issue 8; docs/papers.md section 2 for DARP): cover every reachable free cell
 // of the known map (the fused map the exploration left, or the map file when the mission starts
 // with cover: then the robots are given it, as DARP assumes).
 //

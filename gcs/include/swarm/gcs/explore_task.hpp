@@ -1,4 +1,4 @@
-// The GCS's exploration task (PAPERS.md section 1): planning rounds on the fused map with the
+// The GCS's exploration task (docs/papers.md section 1): planning rounds on the fused map with the
 // paper's one-round delay (mission.hpp), each round's map to the leaders, completion when no
 // reachable frontier is left.
 #pragma once

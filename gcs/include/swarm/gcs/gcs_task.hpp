@@ -1,4 +1,4 @@
-// The GCS's side of the task seam (DESIGN.md "Missions, phases and tasks"; the leader's side is
+// The GCS's side of the task seam (docs/design.md "Missions, phases and tasks"; the leader's side is
 // leader/group_task.hpp, which says what a task is).
 //
 // The GCS runs the phase machine: phase 0 starts at tick 0; each tick the current phase's GcsTask

@@ -1,4 +1,4 @@
-// The GCS's multi-agent path-finding task (issue 9; PAPERS.md section 3; planner/mapf/): every
+// The GCS's multi-agent path-finding task (issue 9; docs/papers.md section 3; planner/mapf/): every
 // living robot drives to its goal cell, and no two robots ever meet.
 //
 // How the plan is conflict-free across groups: the GCS plans for ALL living robots at once (one

@@ -1,4 +1,4 @@
-// The leader's exploration task (PAPERS.md section 1): at every planning round the GCS starts, it
+// The leader's exploration task (docs/papers.md section 1): at every planning round the GCS starts, it
 // plans the group's waypoints on the stale global map and the group map (planner/explore.hpp),
 // assigns them, and tells the GCS when the whole group is done with them.
 #pragma once

@@ -1,4 +1,4 @@
-// The leader's side of the task seam (DESIGN.md "Missions, phases and tasks").
+// The leader's side of the task seam (docs/design.md "Missions, phases and tasks").
 //
 // A mission is a list of phases; the GCS starts each (PhaseStart) and judges it done. A leader runs
 // one GroupTask per phase of the scenario's mission, made at start-up by make_group_task(), and

@@ -1,7 +1,7 @@
 // DARP: divide a region's free cells among robots so that every robot gets a connected region of
 // (nearly) its share of the cells. Kapoutsis, Chatzichristofis & Kosmatopoulos, "DARP: Divide
 // Areas Algorithm for Optimal Multi-Robot Coverage Path Planning", J. Intell. Robot. Syst. 86
-// (2017); with the BFS + K-Means initialisation of ../shared/PAPERS.md section 2
+// (2017); with the BFS + K-Means initialisation of docs/papers.md section 2
 // (seeds/000_adfe46c08ea6d43e.txt).
 //
 // The algorithm. Every robot r has an evaluation matrix E_r (one value per cell); each cell goes to
@@ -51,7 +51,7 @@
 //             into n connected candidate regions (a geodesic Voronoi), each candidate region's mean
 //             (the K-Means update) snapped to its nearest cell inside that candidate region becomes
 //             that robot's new start (one such K-Means iteration per re-initialisation, as
-//             PAPERS.md decides; bfs_kmeans_steps > 1 iterates it, stopping when no start
+//             docs/papers.md decides; bfs_kmeans_steps > 1 iterates it, stopping when no start
 //             moves). Imbalance alpha = 1 - Jain is measured on the first division from the
 //             robots' cells (alpha0); if alpha0 > alpha_threshold (or always, with
 //             reinit_always) the step is applied, the division re-probed (alpha_reinit), and

@@ -1,6 +1,6 @@
 // DBSCAN clustering of grid cells: turns frontier cells into frontier segments.
 //
-// The group-frontier explorer (PAPERS.md section 1, paper section 3.2) segments frontier cells with
+// The group-frontier explorer (docs/papers.md section 1, paper section 3.2) segments frontier cells with
 // DBSCAN so that frontiers separated by obstacles become separate segments, each segment's size W
 // being its cell count. Algorithm: Ester, Kriegel, Sander & Xu, "A density-based algorithm for
 // discovering clusters in large spatial databases with noise", KDD 1996.

@@ -9,7 +9,7 @@
 //     if (plan.waypoints[i]) send_goal(i, *plan.waypoints[i]);
 //
 // Paper: the hierarchical group-frontier exploration paper under constrained (delayed) global
-// information, seeds/004_4c4ef858aa95613f.txt section 3 (Korean); English digest: PAPERS.md
+// information, seeds/004_4c4ef858aa95613f.txt section 3 (Korean); English digest: docs/papers.md
 // section 1. DBSCAN, K-Means and Hungarian: see dbscan.hpp, kmeans.hpp, hungarian.hpp.
 //
 // A GCS fuses the groups' maps once per round, so at round r every leader holds the global map
@@ -33,7 +33,7 @@
 //     waypoint is the segment cell nearest a centre; Hungarian on Euclidean distance gives every
 //     member one waypoint.
 //
-// Decisions where the paper is silent (the C_ij = D_ij / W_j formula is PAPERS.md's; the rest
+// Decisions where the paper is silent (the C_ij = D_ij / W_j formula is docs/papers.md's; the rest
 // are this file's):
 // - D is the Euclidean distance in cells from the leader to the segment's nearest cell, at least 1
 //   (a segment touching the leader must not divide by zero or swamp W). Case A and case B use the

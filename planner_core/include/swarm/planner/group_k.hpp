@@ -1,7 +1,7 @@
 // Group-k: clean the simple areas first, the cluttered corners last.
 //
 // Jeon, Jo & Noh, "Practical Intelligent Cleaning Robot Algorithm Based on Grouping in Complex
-// Layout Space", 2006 (seeds/003_70d40d5a77c60547.txt; digest ../shared/PAPERS.md section 5).
+// Layout Space", 2006 (seeds/003_70d40d5a77c60547.txt; digest docs/papers.md section 5).
 //
 // Obstacles: the 8-connected components of blocked (not Free) cells that do not touch the map's
 // border (what touches the border is the room's wall, the paper's dark grey). The gap between two

@@ -1,6 +1,6 @@
 // Minimum-cost assignment of rows to columns (the Hungarian / Kuhn-Munkres problem).
 //
-// Used by the group-frontier explorer (PAPERS.md section 1) twice: leaders to frontier segments
+// Used by the group-frontier explorer (docs/papers.md section 1) twice: leaders to frontier segments
 // (case B, every leader solves the same matrix and keeps its own row) and robots to waypoints
 // inside a group.
 //

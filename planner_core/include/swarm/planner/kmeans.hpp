@@ -1,8 +1,8 @@
 // K-Means clustering of 2D points, reproducible per seed and interruptible.
 //
-// The group-frontier explorer (PAPERS.md section 1) splits a frontier segment into one cluster per
+// The group-frontier explorer (docs/papers.md section 1) splits a frontier segment into one cluster per
 // robot and sends each robot to the frontier cell nearest a cluster centre; DARP's initialisation
-// (PAPERS.md section 2) clusters free cells the same way.
+// (docs/papers.md section 2) clusters free cells the same way.
 //
 // Algorithm: k-means++ seeding (Arthur & Vassilvitskii, SODA 2007) then Lloyd iterations
 // (Lloyd 1982): assign every point to its nearest centre, move every centre to the mean of its

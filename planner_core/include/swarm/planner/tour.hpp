@@ -1,7 +1,7 @@
 // Collection tours: pick up objects of several types and carry each type to its own destination.
 //
 // Kim & Lee, "A New Heuristic Approach for Generating Efficient Paths for Cleaning and Recycling
-// Tasks", 2025 (seeds/001_645b6156304cdc3a.txt; digest ../shared/PAPERS.md section 4).
+// Tasks", 2025 (seeds/001_645b6156304cdc3a.txt; digest docs/papers.md section 4).
 //
 // The type-by-type method: from where the robot is, the nearest remaining object (Euclidean,
 // ties: the lower object number) fixes the type; the robot collects every object of that type,

@@ -1,5 +1,5 @@
 // The visiting order of one type's objects: the GA of Kim & Lee 2025 (seeds/001, Tables 1-3; digest
-// ../shared/PAPERS.md section 4), and an exact / near-exact reference to measure it against.
+// docs/papers.md section 4), and an exact / near-exact reference to measure it against.
 //
 // A run of one type has stops: 0 = where the robot is, 1..n = the objects, n + 1 = the type's
 // destination. An order is a permutation of 1..n; its cost is the length of the A* legs

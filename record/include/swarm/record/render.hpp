@@ -1,5 +1,5 @@
 // Pictures of a run from its record (record.hpp): the explored map with every robot's path, and
-// frontier snapshots like Fig. 10 of the group-frontier paper (shared/PAPERS.md section 1).
+// frontier snapshots like Fig. 10 of the group-frontier paper (docs/papers.md section 1).
 //
 // Image layout: a band of kBandPx rows on top holds a title line and two legend lines; below it
 // the map, `scale` pixels per cell, with y up (cell row y = 0 is the BOTTOM row of the image),

@@ -84,7 +84,7 @@ class World {
   void command(int robot, std::uint32_t route_id, const std::vector<planner::Cell>& route,
                const std::vector<std::uint32_t>& picks = {}, const std::vector<std::uint32_t>& drops = {});
 
-  // Collect (PAPERS.md section 4): the objects, each lying on its cell, and each type's destination.
+  // Collect (docs/papers.md section 4): the objects, each lying on its cell, and each type's destination.
   void set_objects(std::vector<planner::TourObject> objects, std::vector<planner::Cell> destinations);
   // A lost robot: what it carries lies beside it again (planner::put_down_cell).
   void put_down(int robot);

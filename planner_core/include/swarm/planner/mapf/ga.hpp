@@ -1,7 +1,7 @@
 // The paper's genetic algorithm with the direction-ordering chromosome — its options.
 //
 // Park & Hwang, "Multi-robot Path Planning Based on Two-stage Genetic Algorithm Using Direction
-// Ordering Chromosome", 2025 (PAPERS.md section 3; shared/seeds/002_3978f293b65c7987.txt). On the
+// Ordering Chromosome", 2025 (docs/papers.md section 3; seeds/002_3978f293b65c7987.txt). On the
 // warehouse world only (warehouse.hpp: intersections joined by 2-step passages, the paper's rules;
 // anything else, a graph instance included, is Status::Unsupported).
 //   - Chromosome, per robot: a DIRECTION part, a permutation of the moves of a shortest path

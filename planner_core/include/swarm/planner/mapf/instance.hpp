@@ -25,7 +25,7 @@
 //   - standard (MovingAI benchmark): after its path ends an agent stays on its goal for ever and
 //     still blocks it; waits are allowed anywhere; an agent's cost is the time step at which it
 //     last arrives at its goal (the sum of costs, SoC, is the usual objective).
-//   - the paper's warehouse (PAPERS.md section 3, warehouse.hpp): an agent leaves the collision
+//   - the paper's warehouse (docs/papers.md section 3, warehouse.hpp): an agent leaves the collision
 //     check once it reaches its goal (GoalRule::Vanish; its cost is its arrival time), and it may
 //     stop only in the middle of a passage or at its start before moving, 2 time steps per stop,
 //     and never turns back in a passage (WaitRule::PassageMiddles: grids only, a warehouse lattice).

@@ -1,4 +1,4 @@
-// The paper's world (PAPERS.md section 3): warehouse blocks in a grid pattern, with passages
+// The paper's world (docs/papers.md section 3): warehouse blocks in a grid pattern, with passages
 // between them and intersections where passages cross; and random instances on any map.
 //
 // As a grid (a "doubled" lattice): R x C intersections at cells (2j + 1, 2i + 1), i < R, j < C,
@@ -38,7 +38,7 @@ struct WarehouseSize {
 [[nodiscard]] std::optional<WarehouseSize> warehouse_size_of(const OccupancyGrid& map);
 
 // `robots` robots on random intersections: distinct starts, distinct goals, each start != its
-// goal (the paper's choice is not stated; PAPERS.md section 3's decision). Paper rules.
+// goal (the paper's choice is not stated; docs/papers.md section 3's decision). Paper rules.
 // Requires robots <= rows * cols (and rows * cols >= 2).
 [[nodiscard]] Instance random_warehouse_instance(int rows, int cols, int robots, std::uint64_t seed);
 
