@@ -210,5 +210,38 @@ TEST(LockstepFake, AStalledStartUpNamesThePeerThatNeverAuthenticated) {
   ::setenv("SWARM_STALL_TIMEOUT", "2", 1);
 }
 
+// An agent that writes and reads one topic (a candidate leader: its member side reads what its
+// leader side writes) is matched by itself at once. Its readiness must wait for the other agents'
+// endpoints all the same: a peer slow to match (a late DDS-Security handshake) would otherwise
+// miss the messages of tick 0, and both would wait at tick 1 for ever.
+struct ReadinessProbe : LockstepAgent {
+  using LockstepAgent::LockstepAgent;
+  using LockstepAgent::outlets_matched;
+};
+
+TEST(LockstepFake, AnAgentsOwnEndpointsDoNotMakeItReady) {
+  const Topology t(1, 2);  // leader-0 (agent 0) and member-0-1 (agent 1)
+  LinkTable links;
+  FakeNetwork net;
+  FakeBus leader_bus(net);
+  ReadinessProbe leader(leader_bus, t, links, 0);
+  leader.advertise<msgs::Route>("route_0", LinkClass::MemberLeader, {1});
+  leader.subscribe<msgs::Route>("route_0", LinkClass::MemberLeader, [](const msgs::Route&) {},
+                                Delivery::Reliable, 1);
+  std::string missing;
+  EXPECT_FALSE(leader.outlets_matched(&missing));  // only itself on the topic
+  EXPECT_EQ(missing, "route_0 (0 of 1 writers)");
+
+  FakeBus member_bus(net);
+  ReadinessProbe member(member_bus, t, links, 1);
+  member.subscribe<msgs::Route>("route_0", LinkClass::MemberLeader, [](const msgs::Route&) {},
+                                Delivery::Reliable, 1);
+  EXPECT_FALSE(leader.outlets_matched(&missing));  // the member reads, but writes nothing yet
+  EXPECT_EQ(missing, "route_0 (0 of 1 writers)");
+  member.advertise<msgs::Route>("route_0", LinkClass::MemberLeader, {0});
+  EXPECT_TRUE(leader.outlets_matched(&missing));
+  EXPECT_TRUE(member.outlets_matched(&missing));
+}
+
 }  // namespace
 }  // namespace swarm::comm
