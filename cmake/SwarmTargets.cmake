@@ -46,9 +46,9 @@ function(swarm_library name)
   target_link_libraries(swarm_${name} PUBLIC ${L_PUBLIC} PRIVATE ${L_PRIVATE})
 endfunction()
 
-# swarm_role(<executable> <library>): a role process, main.cpp beside its library.
-function(swarm_role exe lib)
+# swarm_role(<executable> <library>...): a role process, main.cpp beside its library.
+function(swarm_role exe)
   add_executable(${exe} main.cpp)
   swarm_target_defaults(${exe})
-  target_link_libraries(${exe} PRIVATE ${lib})
+  target_link_libraries(${exe} PRIVATE ${ARGN})
 endfunction()

@@ -3,6 +3,7 @@
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/app/role.hpp"
 #include "swarm/gcs/gcs_node.hpp"
+#include "swarm/tasks/registry.hpp"
 
 int main(int argc, char** argv) {
   using namespace swarm;
@@ -13,7 +14,7 @@ int main(int argc, char** argv) {
     const app::RoleSetup setup = app::load_role(options, app::RoleKind::Gcs);
     comm::Participant participant(setup.dds);
     comm::LockstepAgent agent(participant, setup.topology, setup.links, setup.topology.gcs());
-    gcs::GcsNode node(agent, setup, options.run_dir, gcs::Progress::parse(options.progress));
+    gcs::GcsNode node(agent, setup, options.run_dir, gcs::Progress::parse(options.progress), tasks::gcs_task);
     const std::string journal = gcs::journal_path(options.run_dir);
     if (options.resume) {
       // A restart (gcs_node.hpp "Restart"): the old process's inputs again, then back into the run.

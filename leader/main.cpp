@@ -3,6 +3,7 @@
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/app/role.hpp"
 #include "swarm/app/candidate_node.hpp"
+#include "swarm/tasks/registry.hpp"
 
 int main(int argc, char** argv) {
   using namespace swarm;
@@ -13,7 +14,7 @@ int main(int argc, char** argv) {
     const app::RoleSetup setup = app::load_role(options, app::RoleKind::Leader);
     comm::Participant participant(setup.dds);
     comm::LockstepAgent agent(participant, setup.topology, setup.links, setup.topology.leader(options.group));
-    app::CandidateNode node(agent, setup, options.group, 0);
+    app::CandidateNode node(agent, setup, options.group, 0, tasks::group_task);
     app::FaultInjector faults(setup.world.scenario, setup.topology.name_of(agent.self()));
     comm::run_lockstep(agent, [&](const msgs::Clock& clock) {
       faults.at_tick(clock.tick());

@@ -18,6 +18,7 @@
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/app/role.hpp"
 #include "swarm/app/candidate_node.hpp"
+#include "swarm/tasks/registry.hpp"
 #include "swarm/member/member_node.hpp"
 
 namespace {
@@ -39,7 +40,7 @@ void run_member(comm::Participant& participant, const app::RoleSetup& setup, int
   };
   // A standby leader (comm/leadership.hpp) is a candidate: member until the clock names it leader.
   if (setup.topology.is_candidate(self)) {
-    app::CandidateNode node(agent, setup, group, index);
+    app::CandidateNode node(agent, setup, group, index, tasks::group_task);
     run(node);
   } else {
     member::RobotAgent robot(setup.world.frame.width, setup.world.frame.height, setup.world.frame.resolution);

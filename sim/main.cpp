@@ -5,6 +5,7 @@
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/app/role.hpp"
 #include "swarm/sim/sim_node.hpp"
+#include "swarm/tasks/registry.hpp"
 
 int main(int argc, char** argv) {
   using namespace swarm;
@@ -15,7 +16,7 @@ int main(int argc, char** argv) {
     const app::RoleSetup setup = app::load_role(options, app::RoleKind::Sim);
     comm::Participant participant(setup.dds);
     comm::LockstepClock clock(participant, setup.topology, setup.links);
-    sim::SimNode node(clock, setup);
+    sim::SimNode node(clock, setup, tasks::sim_part);
     const auto t0 = std::chrono::steady_clock::now();
     const std::uint32_t last = node.run();
     const auto t1 = std::chrono::steady_clock::now();

@@ -6,13 +6,14 @@
 
 namespace swarm::app {
 
-CandidateNode::CandidateNode(comm::LockstepAgent& agent, const RoleSetup& setup, int group, int index)
+CandidateNode::CandidateNode(comm::LockstepAgent& agent, const RoleSetup& setup, int group, int index,
+                             const leader::GroupTaskFactory& make_task)
     : self_(agent.self()),
       topology_(setup.topology),
       group_(group),
       robot_(setup.world.frame.width, setup.world.frame.height, setup.world.frame.resolution),
       member_(agent, setup, group, index, robot_),
-      leader_(agent, setup, group, index, robot_, agent.self() == setup.topology.leader(group)) {
+      leader_(agent, setup, group, index, robot_, agent.self() == setup.topology.leader(group), make_task) {
   // The first leader leads from tick 0: its first scans are the leader side's already.
   if (leader_.leading()) lead();
 }

@@ -24,6 +24,19 @@ namespace {
 namespace pb = google::protobuf;
 using swarm::scenario::Scenario;
 
+// Phase's `task` oneof: one field per task, named as the task.
+const pb::OneofDescriptor& task_oneof() {
+  return *swarm::scenario::Phase::descriptor()->FindOneofByName("task");
+}
+
+// "explore {}, cover {}, mapf {} or collect {}": what a phase may name.
+std::string task_list_with_braces() {
+  std::string out;
+  const int n = task_oneof().field_count();
+  for (int i = 0; i < n; ++i) out += (i == 0 ? "" : i + 1 == n ? " or " : ", ") + task_oneof().field(i)->name() + " {}";
+  return out;
+}
+
 // Keeps the parser's first error with its 0-based position.
 class FirstError : public pb::io::ErrorCollector {
  public:
@@ -430,7 +443,7 @@ void validate(const Scenario& s, const std::string& source) {
     const std::string field = "mission.phase[" + std::to_string(i) + "]";
     switch (ph.task_case()) {
       case swarm::scenario::Phase::TASK_NOT_SET:
-        p.add(field, "name its task: explore {}, cover {}, mapf {} or collect {}", "no task");
+        p.add(field, "name its task: " + task_list_with_braces(), "no task");
         break;
       case swarm::scenario::Phase::kCover:
         p.at_least(field + ".cover.darp_max_iterations", 1, ph.cover().darp_max_iterations());
@@ -479,30 +492,16 @@ void validate(const Scenario& s, const std::string& source) {
   p.throw_if_any();
 }
 
-std::string task_name(TaskKind kind) {
-  switch (kind) {
-    case TaskKind::Explore: return "explore";
-    case TaskKind::Cover: return "cover";
-    case TaskKind::Mapf: return "mapf";
-    case TaskKind::Collect: return "collect";
-  }
-  return "?";
+std::string task_name(const swarm::scenario::Phase& phase) {
+  const pb::FieldDescriptor* f = phase.GetReflection()->GetOneofFieldDescriptor(phase, &task_oneof());
+  // A phase that names none runs the oneof's first task (exploration), as the default mission does.
+  return (f == nullptr ? task_oneof().field(0) : f)->name();
 }
 
-TaskKind parse_task(const std::string& name) {
-  for (TaskKind k : {TaskKind::Explore, TaskKind::Cover, TaskKind::Mapf, TaskKind::Collect}) {
-    if (name == task_name(k)) return k;
-  }
-  throw ConfigError("unknown task '" + name + "': expected explore, cover, mapf or collect");
-}
-
-TaskKind task_of(const swarm::scenario::Phase& phase) {
-  switch (phase.task_case()) {
-    case swarm::scenario::Phase::kCover: return TaskKind::Cover;
-    case swarm::scenario::Phase::kMapf: return TaskKind::Mapf;
-    case swarm::scenario::Phase::kCollect: return TaskKind::Collect;
-    default: return TaskKind::Explore;
-  }
+std::vector<std::string> task_names() {
+  std::vector<std::string> out;
+  for (int i = 0; i < task_oneof().field_count(); ++i) out.push_back(task_oneof().field(i)->name());
+  return out;
 }
 
 int leader_standbys(const Scenario& s) {
@@ -524,15 +523,18 @@ std::vector<swarm::scenario::Phase> mission_phases(const Scenario& s) {
 }
 
 void set_mission(Scenario& s, const std::vector<std::string>& tasks) {
+  const std::vector<std::string> names = task_names();
   s.clear_mission();
   for (const std::string& t : tasks) {
-    auto* ph = s.mutable_mission()->add_phase();
-    switch (parse_task(t)) {
-      case TaskKind::Explore: ph->mutable_explore(); break;
-      case TaskKind::Cover: ph->mutable_cover(); break;
-      case TaskKind::Mapf: ph->mutable_mapf(); break;
-      case TaskKind::Collect: ph->mutable_collect(); break;
+    if (std::find(names.begin(), names.end(), t) == names.end()) {
+      std::string accepted;
+      for (std::size_t i = 0; i < names.size(); ++i) {
+        accepted += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+      }
+      throw ConfigError("unknown task '" + t + "': expected " + accepted);
     }
+    auto* ph = s.mutable_mission()->add_phase();
+    ph->GetReflection()->MutableMessage(ph, task_oneof().containing_type()->FindFieldByName(t));
   }
 }
 

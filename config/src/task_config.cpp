@@ -43,7 +43,7 @@ bool delivery_ticks_bounded(const swarm::scenario::Scenario& s) {
 bool map_given(const swarm::scenario::Scenario& s, std::size_t index) {
   const auto phases = mission_phases(s);
   for (std::size_t i = 0; i <= index && i < phases.size(); ++i) {
-    if (task_of(phases[i]) == TaskKind::Explore) return false;
+    if (phases[i].has_explore()) return false;
   }
   return index < phases.size();
 }

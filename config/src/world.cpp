@@ -164,8 +164,8 @@ void resolve_phases(World& w, const std::string& source) {
   w.collect.assign(phases.size(), {});
   for (std::size_t i = 0; i < phases.size(); ++i) {
     const std::string field = source + ": mission.phase[" + std::to_string(i) + "]";
-    if (task_of(phases[i]) == TaskKind::Mapf) w.mapf_goals[i] = mapf_goals(phases[i].mapf(), g, robots, field + ".mapf");
-    if (task_of(phases[i]) == TaskKind::Collect) {
+    if (phases[i].has_mapf()) w.mapf_goals[i] = mapf_goals(phases[i].mapf(), g, robots, field + ".mapf");
+    if (phases[i].has_collect()) {
       w.collect[i] = collect_world(phases[i].collect(), g, w.robot_cells, w.scenario.seed(), field + ".collect");
     }
   }

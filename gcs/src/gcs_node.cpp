@@ -44,7 +44,7 @@ std::uint32_t unreachable_after_ticks(const comm::LinkTable& links) {
 }  // namespace
 
 GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const std::string& run_dir,
-                 Progress::Style progress)
+                 Progress::Style progress, const GcsTaskFactory& make_task)
     : agent_(agent),
       setup_(setup),
       run_dir_(run_dir),
@@ -103,7 +103,7 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const 
     p.task(task);
     phase.send(p);
   };
-  for (std::uint32_t i = 0; i < phases_.size(); ++i) tasks_.push_back(make_gcs_task(phases_[i], setup, i));
+  for (std::uint32_t i = 0; i < phases_.size(); ++i) tasks_.push_back(make_task(phases_[i], setup, i));
 
   record::Frame header;
   auto* h = header.mutable_header();
@@ -151,7 +151,7 @@ void GcsNode::record_phase(std::uint32_t tick, bool ended, bool complete) {
   auto* c = f.mutable_phase();
   c->set_tick(tick);
   c->set_phase(phase_);
-  c->set_task(config::task_name(config::task_of(phases_[phase_])));
+  c->set_task(config::task_name(phases_[phase_]));
   c->set_ended(ended);
   c->set_complete(complete);
   record_.append(f);
@@ -228,7 +228,7 @@ bool GcsNode::step(const msgs::Clock& clock) {
         ++phase_;
         ctx.phase = phase_;
         phase_starts_.push_back(clock.tick());
-        announce_phase_(phase_, config::task_name(config::task_of(phases_[phase_])));
+        announce_phase_(phase_, config::task_name(phases_[phase_]));
         record_phase(clock.tick(), false, false);
         tasks_[phase_]->start(ctx);
       } else {
@@ -239,7 +239,7 @@ bool GcsNode::step(const msgs::Clock& clock) {
       phase_ends_.push_back(clock.tick());
       record_phase(clock.tick(), true, false);
       std::fprintf(stderr, "gcs: phase %u (%s) given up at tick %u: %s\n", phase_,
-                   config::task_name(config::task_of(phases_[phase_])).c_str(), clock.tick(), why.c_str());
+                   config::task_name(phases_[phase_]).c_str(), clock.tick(), why.c_str());
       gave_up_ = std::move(why);
     }
   }
@@ -255,7 +255,7 @@ bool GcsNode::step(const msgs::Clock& clock) {
     if (unreachable_.down(g)) note += "leader-" + std::to_string(g) + " unreachable ";
   }
   const ProgressLine line = tasks_[phase_]->progress(ctx);
-  const std::string task = config::task_name(config::task_of(phases_[phase_]));
+  const std::string task = config::task_name(phases_[phase_]);
   if (live) {
     progress_.update(clock.tick(), phases_.size() > 1 ? task + " " + line.label : line.label, line.fraction,
                      line.detail, note);
@@ -406,7 +406,7 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
   // ground-truth judge of it (motion and the task's own ground truth).
   for (std::size_t i = 0; i < phase_starts_.size(); ++i) {
     record::PhaseMetrics ph;
-    ph.name = config::task_name(config::task_of(phases_[i]));
+    ph.name = config::task_name(phases_[i]);
     ph.start_tick = phase_starts_[i];
     if (i < phase_ends_.size()) ph.end_tick = phase_ends_[i];
     const bool given_up = gave_up_ && i + 1 == phase_ends_.size();

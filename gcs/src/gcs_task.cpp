@@ -3,10 +3,6 @@
 #include "swarm/app/convert.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/config/task_config.hpp"
-#include "swarm/gcs/collect_task.hpp"
-#include "swarm/gcs/cover_task.hpp"
-#include "swarm/gcs/explore_task.hpp"
-#include "swarm/gcs/mapf_task.hpp"
 #include "swarm/planner/map_patch.hpp"
 
 namespace swarm::gcs {
@@ -42,24 +38,6 @@ planner::PatchEncoding map_encoding(const app::RoleSetup& setup) {
   return app::patch_encoding(setup.world.scenario.map_encoding()) == planner::PatchEncoding::ZstdRunLength
              ? planner::PatchEncoding::ZstdRunLength
              : planner::PatchEncoding::RunLength;
-}
-
-std::unique_ptr<GcsTask> make_gcs_task(const swarm::scenario::Phase& phase, const app::RoleSetup& setup,
-                                       std::uint32_t index) {
-  const bool map_given = config::map_given(setup.world.scenario, index);
-  switch (config::task_of(phase)) {
-    case config::TaskKind::Explore:
-      return std::make_unique<ExploreGcsTask>(index);
-    case config::TaskKind::Cover:
-      return std::make_unique<CoverGcsTask>(phase.cover(), index, map_given);
-    case config::TaskKind::Mapf:
-      return std::make_unique<MapfGcsTask>(config::resolved_mapf(phase.mapf(), setup.world.scenario), index, map_given);
-    case config::TaskKind::Collect:
-      return std::make_unique<CollectGcsTask>(phase.collect(), index);
-    default:
-      break;
-  }
-  throw config::ConfigError("task '" + config::task_name(config::task_of(phase)) + "' has no GCS side in this build");
 }
 
 }  // namespace swarm::gcs

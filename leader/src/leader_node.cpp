@@ -32,7 +32,7 @@ std::vector<int> GroupContext::living() const {
 }
 
 LeaderNode::LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, int group, int index,
-                       member::RobotAgent& robot, bool leading)
+                       member::RobotAgent& robot, bool leading, const GroupTaskFactory& make_task)
     : agent_(agent),
       setup_(setup),
       topology_(setup.topology),
@@ -50,7 +50,7 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, 
       motion_(agent.advertise<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, {topology_.sim()})) {
   if (leading_) led_.push_back({0, std::nullopt});
   const auto phases = config::mission_phases(setup.world.scenario);
-  for (std::uint32_t i = 0; i < phases.size(); ++i) tasks_.push_back(make_group_task(phases[i], setup, group, i));
+  for (std::uint32_t i = 0; i < phases.size(); ++i) tasks_.push_back(make_task(phases[i], setup, group, i));
   const auto others = topology_.group_except(group, agent.self());
   // Every other robot of the group writes its member topics (the candidates too, while members).
   const int writers = static_cast<int>(others.size());
@@ -334,8 +334,8 @@ std::string LeaderNode::report_json() const {
   nlohmann::json per_phase = nlohmann::json::array();
   for (std::size_t i = 0; i < tasks_.size(); ++i) {
     const nlohmann::json n = tasks_[i]->numbers();
-    per_phase.push_back({{"task", config::task_name(config::task_of(phases[i]))}, {"numbers", n}});
-    if (config::task_of(phases[i]) == config::TaskKind::Explore) {
+    per_phase.push_back({{"task", config::task_name(phases[i])}, {"numbers", n}});
+    if (tasks_[i]->numbers_at_top_level()) {
       for (auto it = n.begin(); it != n.end(); ++it) out[it.key()] = it.value();
     }
   }

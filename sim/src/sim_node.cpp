@@ -17,13 +17,6 @@ using comm::LinkClass;
 namespace topic = comm::topic;
 
 namespace {
-// Exploration and collection drive the paper's 8-connected robots; coverage and MAPF plan on the
-// 4-connected grid their papers assume.
-planner::MotionModel motion_for(config::TaskKind task) {
-  return task == config::TaskKind::Cover || task == config::TaskKind::Mapf ? planner::MotionModel::four()
-                                                                           : planner::MotionModel::eight();
-}
-
 LidarConfig lidar_of(const app::RoleSetup& setup) {
   const auto& s = setup.world.scenario;
   return {static_cast<int>(s.lidar_beams()),
@@ -31,13 +24,14 @@ LidarConfig lidar_of(const app::RoleSetup& setup) {
 }
 }  // namespace
 
-SimNode::SimNode(comm::LockstepClock& clock, const app::RoleSetup& setup)
+SimNode::SimNode(comm::LockstepClock& clock, const app::RoleSetup& setup, PhaseSimFactory phase_sim)
     : clock_(clock),
       world_(setup.world.truth, setup.world.robot_cells, lidar_of(setup),
              static_cast<int>(setup.world.scenario.footprint_radius())),
       max_ticks_(setup.world.scenario.max_ticks()),
       alive_(setup.world.robot_cells.size(), true),
-      collect_(setup.world.collect) {
+      setup_(setup),
+      phase_sim_(std::move(phase_sim)) {
   const comm::Topology& t = setup.topology;
   // Lockstep has no wall time, but a GCS that is down comes back after wall seconds: while it is
   // lost, mission time passes at the real-time rate (tick_ms), so its outage lasts as many ticks
@@ -62,74 +56,36 @@ SimNode::SimNode(comm::LockstepClock& clock, const app::RoleSetup& setup)
 
 void SimNode::start_phase(std::uint32_t index, std::uint32_t tick) {
   if (!phases_.empty()) judge_phase();
-  const config::TaskKind task = config::task_of(mission_[index]);
-  world_.set_motion(motion_for(task));
+  PhaseSim part = phase_sim_(mission_[index], setup_, index);
+  world_.set_motion(part.motion);
   PhaseLog log;
   log.index = index;
-  log.task = config::task_name(task);
+  log.task = config::task_name(mission_[index]);
   log.start_tick = tick;
   log.counts_at_start = world_.counts();
   log.events_at_start = world_.events();
   log.diagonals_at_start = world_.diagonal_moves();
-  if (task == config::TaskKind::Cover) {
-    world_.reset_coverage();
-    log.curve.emplace_back(tick, world_.covered_fraction());
-  }
-  if (task == config::TaskKind::Collect) {
-    const config::CollectWorld& cw = collect_.at(index);
-    world_.set_objects(cw.objects, cw.destinations);
-    log.curve.emplace_back(tick, 0.0);
-  }
+  log.judge_part = std::move(part.judge);
+  log.judge_part->start(world_, tick);
   phases_.push_back(std::move(log));
 }
 
 void SimNode::judge_phase() {
-  if (!phases_.back().judged) fill_judge(phases_.back());
+  PhaseLog& p = phases_.back();
+  if (p.judged) return;
+  p.judge = judge_of(p, p.motion);
+  p.judged = true;
 }
 
-void SimNode::fill_judge(PhaseLog& p) const {
-  p.motion = motion_since(p.counts_at_start, p.events_at_start);
-  if (p.task == "explore") {
-    p.judge = {{"explored_fraction", world_.explored_fraction()},
-               {"steps_to_99", steps_to_99_ ? nlohmann::json(*steps_to_99_) : nlohmann::json(nullptr)}};
-  } else if (p.task == "cover") {
-    nlohmann::json curve = nlohmann::json::array();
-    for (const auto& [tick, f] : p.curve) curve.push_back({tick, f});
-    p.judge = {{"covered_fraction", world_.covered_fraction()},
-               {"covered_cells", world_.covered_cells()},
-               {"target_cells", world_.coverage_target_cells()},
-               {"makespan_ticks", p.full_tick ? nlohmann::json(*p.full_tick - p.start_tick) : nlohmann::json(nullptr)},
-               {"coverage_curve", curve}};
-  } else if (p.task == "collect") {
-    // Delivered objects over time (tick, count): a point at every delivery.
-    nlohmann::json curve = nlohmann::json::array();
-    for (const auto& [tick, n] : p.curve) curve.push_back({tick, n});
-    const auto& c = world_.collect();
-    // What the robots drove in the phase, in the tour planner's terms: length in cells (straight
-    // 1, diagonal sqrt 2) and rotation in radians (eighths of a turn x pi / 4).
-    const std::uint64_t diagonals = world_.diagonal_moves() - p.diagonals_at_start;
-    const double length = static_cast<double>(p.motion.total.moves - diagonals) +
-                          static_cast<double>(diagonals) * planner::MotionModel::kDiagonalCost;
-    const double rotation = static_cast<double>(p.motion.total.turn_eighths) * std::acos(-1.0) / 4.0;
-    p.judge = {{"objects", c.objects},
-               {"delivered", c.delivered},
-               {"picked", c.picked},
-               {"wrong_drops", c.wrong_drops},
-               {"driven_length_cells", length},
-               {"driven_rotation_rad", rotation},
-               {"makespan_ticks", p.full_tick ? nlohmann::json(*p.full_tick - p.start_tick) : nlohmann::json(nullptr)},
-               {"delivered_curve", curve}};
-  } else if (p.task == "mapf") {
-    // Executed makespan: ticks from the phase's start to the last move any robot made (orders and
-    // routes take a few ticks to arrive), and from the first move to the last (the plan's own
-    // measure, comparable with the planned makespan).
-    const bool moved = p.last_move_tick.has_value();
-    p.judge = {{"makespan_ticks", moved ? *p.last_move_tick - p.start_tick : 0},
-               {"driven_makespan_ticks", moved ? *p.last_move_tick - *p.first_move_tick + 1 : 0},
-               {"conflicts", p.motion.vertex_conflict_events + p.motion.edge_conflict_events},
-               {"blocked_moves", p.motion.total.blocked_moves}};
-  }
-  p.judged = true;
+nlohmann::json SimNode::judge_of(const PhaseLog& p, record::MotionNumbers& motion) const {
+  PhaseFacts facts;
+  facts.start_tick = p.start_tick;
+  facts.first_move_tick = p.first_move_tick;
+  facts.last_move_tick = p.last_move_tick;
+  facts.motion = motion = motion_since(p.counts_at_start, p.events_at_start);
+  facts.diagonal_moves = world_.diagonal_moves() - p.diagonals_at_start;
+  facts.steps_to_99 = steps_to_99_;
+  return p.judge_part->judge(world_, facts);
 }
 
 std::vector<msgs::RobotState> SimNode::states() const {
@@ -184,14 +140,7 @@ void SimNode::begin_tick(std::uint32_t k) {
   const double explored = world_.explored_fraction();
   if (!steps_to_99_ && explored >= 0.99) steps_to_99_ = k;
   if (k % 10 == 0) curve_.emplace_back(k, explored);
-  if (PhaseLog& p = phases_.back(); p.task == "cover") {
-    if (!p.full_tick && world_.covered_cells() >= world_.coverage_target_cells()) p.full_tick = k;
-    if (k % 5 == 0) p.curve.emplace_back(k, world_.covered_fraction());
-  } else if (p.task == "collect") {
-    const int delivered = world_.collect().delivered;
-    if (delivered != static_cast<int>(p.curve.back().second)) p.curve.emplace_back(k, delivered);
-    if (!p.full_tick && delivered >= world_.collect().objects) p.full_tick = k;
-  }
+  phases_.back().judge_part->after_tick(world_, k);
   clock_.publish_clock(k, states(), false);
 }
 
@@ -203,7 +152,7 @@ bool SimNode::end_tick(std::uint32_t k) {
   last_tick_ = k;
   if (!complete_ && k + 1 < max_ticks_) return false;
   curve_.emplace_back(k, world_.explored_fraction());
-  if (PhaseLog& p = phases_.back(); p.task == "cover") p.curve.emplace_back(k, world_.covered_fraction());
+  phases_.back().judge_part->last_tick(world_, k);
   judge_phase();
   clock_.publish_clock(k + 1, states(), true);
   return true;
@@ -238,9 +187,14 @@ std::string SimNode::report_json() const {
   r.reachable_free_cells = static_cast<std::uint32_t>(world_.reachable_free_cells());
   r.explored_curve = curve_;
   r.motion = motion_since({}, {});
-  for (PhaseLog p : phases_) {
-    if (!p.judged) fill_judge(p);  // the phase in force, when the run is reported before it stopped
-    r.phases.push_back({p.index, p.task, p.start_tick, p.motion, p.judge});
+  for (const PhaseLog& p : phases_) {
+    if (p.judged) {
+      r.phases.push_back({p.index, p.task, p.start_tick, p.motion, p.judge});
+    } else {  // the phase in force, when the run is reported before it stopped
+      record::MotionNumbers motion;
+      nlohmann::json judge = judge_of(p, motion);
+      r.phases.push_back({p.index, p.task, p.start_tick, motion, judge});
+    }
   }
   for (const auto& l : clock_.losses()) {
     r.agents_lost.push_back({clock_.topology().name_of(l.agent), l.tick, l.detection_seconds, l.rejoined_tick, l.restarted});

@@ -39,6 +39,7 @@
 #include "swarm/member/member_node.hpp"
 #include "swarm/planner/start_cells.hpp"
 #include "swarm/sim/sim_node.hpp"
+#include "swarm/tasks/registry.hpp"
 #include "swarm_test/files.hpp"
 #include "swarm_test/metrics_fixture.hpp"
 
@@ -92,7 +93,7 @@ class FakeSwarm {
     const comm::Topology& t = setup_.topology;
     for (int a = 0; a < t.agents(); ++a) buses_.push_back(std::make_unique<comm::FakeBus>(net_));
     clock_ = std::make_unique<comm::LockstepClock>(*buses_[t.sim()], t, setup_.links);
-    sim_ = std::make_unique<sim::SimNode>(*clock_, setup_);
+    sim_ = std::make_unique<sim::SimNode>(*clock_, setup_, tasks::sim_part);
     agents_.resize(static_cast<std::size_t>(t.agents()));
     const auto agent = [&](comm::AgentId id) -> comm::LockstepAgent& {
       agents_[id] = std::make_unique<comm::LockstepAgent>(*buses_[id], t, setup_.links, id);
@@ -100,7 +101,8 @@ class FakeSwarm {
     };
     const auto node = [&](comm::AgentId id) { return scripted_.count(id) == 0; };
     if (node(t.gcs())) {
-      gcs_ = std::make_unique<gcs::GcsNode>(agent(t.gcs()), setup_, dir_.str(), gcs::Progress::Style::None);
+      gcs_ = std::make_unique<gcs::GcsNode>(agent(t.gcs()), setup_, dir_.str(), gcs::Progress::Style::None,
+                                            tasks::gcs_task);
     } else {
       agent(t.gcs());
     }
@@ -112,7 +114,7 @@ class FakeSwarm {
         if (!node(id)) {
           agent(id);
         } else if (t.is_candidate(id)) {
-          candidates_[id] = std::make_unique<app::CandidateNode>(agent(id), setup_, g, i);
+          candidates_[id] = std::make_unique<app::CandidateNode>(agent(id), setup_, g, i, tasks::group_task);
         } else {
           bodies_[id] = std::make_unique<member::RobotAgent>(setup_.world.truth.width(), setup_.world.truth.height(),
                                                              setup_.world.truth.resolution());

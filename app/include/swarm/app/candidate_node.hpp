@@ -21,7 +21,9 @@ namespace swarm::app {
 
 class CandidateNode {
  public:
-  CandidateNode(comm::LockstepAgent& agent, const RoleSetup& setup, int group, int index);
+  // make_task: each phase's group task (tasks::group_task, the task registry).
+  CandidateNode(comm::LockstepAgent& agent, const RoleSetup& setup, int group, int index,
+                const leader::GroupTaskFactory& make_task);
   void step(const msgs::Clock& clock);
   // The leader side's numbers (with its terms as leader, "led"), and the member side's under "member".
   std::string report_json() const;

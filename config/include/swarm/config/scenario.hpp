@@ -73,14 +73,14 @@ void validate(const swarm::scenario::Scenario& scenario, const std::string& sour
 
 // ---- Missions ----------------------------------------------------------------------------------
 
-// The kinds of task a phase runs, in the order of scenario.proto's Phase oneof.
-enum class TaskKind { Explore, Cover, Mapf, Collect };
-
-// "explore" | "cover" | "mapf" | "collect".
-[[nodiscard]] std::string task_name(TaskKind kind);
-// The inverse of task_name; a ConfigError listing the accepted names otherwise.
-[[nodiscard]] TaskKind parse_task(const std::string& name);
-[[nodiscard]] TaskKind task_of(const swarm::scenario::Phase& phase);
+// A phase's task is its field of scenario.proto's Phase `task` oneof; the field's name is the
+// task's name everywhere ("explore", "cover", ...: --mission, metrics.json, logs). Read from the
+// schema, so a task added there is known here without a change.
+// The name of the phase's task (the oneof's first, exploration, for a phase that names none:
+// validate() refuses such a phase in a scenario).
+[[nodiscard]] std::string task_name(const swarm::scenario::Phase& phase);
+// Every task name, in the oneof's order.
+[[nodiscard]] std::vector<std::string> task_names();
 
 // The phases a scenario's mission runs, in order, each with its full configuration: the mission's
 // phases, or (no mission) explore alone with the top-level `explore`. An explore phase's settings

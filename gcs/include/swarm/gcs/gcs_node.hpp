@@ -36,8 +36,9 @@ namespace swarm::gcs {
 
 class GcsNode {
  public:
+  // make_task: each phase's task (tasks::gcs_task, the task registry).
   GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const std::string& run_dir,
-          Progress::Style progress);
+          Progress::Style progress, const GcsTaskFactory& make_task);
   // One tick; returns true once the mission is over: complete, or a phase given up.
   bool step(const msgs::Clock& clock);
   // A restarted process, after its journal was replayed: `restarts` are every restart's replay so

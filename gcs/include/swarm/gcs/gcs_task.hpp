@@ -76,9 +76,10 @@ class GcsTask {
   [[nodiscard]] virtual nlohmann::json numbers() const = 0;
 };
 
-// The task of one phase of the mission (config: the phase's settings from config::mission_phases).
-[[nodiscard]] std::unique_ptr<GcsTask> make_gcs_task(const swarm::scenario::Phase& phase,
-                                                     const app::RoleSetup& setup, std::uint32_t index);
+// Makes the task of phase `index` of the mission (the phase's settings from
+// config::mission_phases): the task registry's tasks::gcs_task (tasks/registry.hpp).
+using GcsTaskFactory = std::function<std::unique_ptr<GcsTask>(const swarm::scenario::Phase& phase,
+                                                              const app::RoleSetup& setup, std::uint32_t index)>;
 
 }  // namespace swarm::gcs
 

@@ -1,7 +1,7 @@
 // The leader's side of the task seam (docs/design.md "Missions, phases and tasks").
 //
 // A mission is a list of phases; the GCS starts each (PhaseStart) and judges it done. A leader runs
-// one GroupTask per phase of the scenario's mission, made at start-up by make_group_task(), and
+// one GroupTask per phase of the scenario's mission, made at start-up by the task registry, and
 // hands it the group's life while its phase is current:
 //   start(ctx)            the phase begins (phase 0 at tick 0; later ones when PhaseStart arrives)
 //   step(ctx)             every tick of the phase, after the due messages' handlers ran and
@@ -24,9 +24,9 @@
 // must be complete before tick 0), the map merging, the map relays to members and GCS, the
 // heartbeat and the leader's own robot; a task never touches DDS.
 //
-// Adding a task = a planner in planner_core + a GcsTask (gcs/gcs_task.hpp) + a GroupTask + its
-// config message in idl/scenario.proto. The lockstep protocol, link emulation, fault handling and
-// traffic accounting do not change. Members know no task: they drive to waypoints or follow routes.
+// Adding a task: tasks/api/include/swarm/tasks/task_row.hpp (a folder tasks/<name>/ with its GCS
+// part, this leader part and its simulator judge, and one registry row). Members know no task:
+// they drive to waypoints or follow routes.
 #pragma once
 
 #include <cstdint>
@@ -100,12 +100,14 @@ class GroupTask {
   // map).
   virtual void gcs_back(GroupContext&) {}
   [[nodiscard]] virtual nlohmann::json numbers() const = 0;
+  // Whether numbers() also go at the top level of the leader's report (exploration's: the
+  // exploration tables read rounds_planned and planning_seconds there).
+  [[nodiscard]] virtual bool numbers_at_top_level() const { return false; }
 };
 
-// The task of phase `index` of the mission (config: the phase's settings from
-// config::mission_phases).
-[[nodiscard]] std::unique_ptr<GroupTask> make_group_task(const swarm::scenario::Phase& phase,
-                                                         const app::RoleSetup& setup, int group,
-                                                         std::uint32_t index);
+// Makes group `group`'s task of phase `index` of the mission (the phase's settings from
+// config::mission_phases): the task registry's tasks::group_task (tasks/registry.hpp).
+using GroupTaskFactory = std::function<std::unique_ptr<GroupTask>(
+    const swarm::scenario::Phase& phase, const app::RoleSetup& setup, int group, std::uint32_t index)>;
 
 }  // namespace swarm::leader

@@ -27,8 +27,9 @@ namespace swarm::leader {
 class LeaderNode {
  public:
   // `robot` is the leader's own body, owned by the caller; `index` its index in the group.
+  // make_task: each phase's task (tasks::group_task, the task registry).
   LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, int group, int index,
-             member::RobotAgent& robot, bool leading);
+             member::RobotAgent& robot, bool leading, const GroupTaskFactory& make_task);
   void step(const msgs::Clock& clock);    // every tick while leading
   void shadow(const msgs::Clock& clock);  // every tick while another leads
   void take_over(const msgs::Clock& clock);

@@ -1,4 +1,4 @@
-// Routes for the live coverage task (gcs/cover_task, leader/cover_task), free of DDS: divide a set
+// Routes for the live coverage task (tasks/cover/), free of DDS: divide a set
 // of cells among robots with DARP (darp.hpp) and give each robot a 4-connected route from where it
 // stands that visits every cell of its region (spanning-tree coverage, stc.hpp; or plowing /
 // Group-k, plow.hpp / group_k.hpp), plus the two repairs a live run needs: covering what is left

@@ -3,7 +3,8 @@
 // publishes the clock, and waits for every agent; it stops the run when the GCS declares the
 // mission complete or at max_ticks.
 //
-//   SimNode node(clock, setup);
+//   SimNode node(clock, setup, tasks::sim_part);  // each phase's motion model and judge
+
 //   node.run();                       // the whole run (swarm-sim's main)
 // or, one tick at a time (unit tests on a FakeBus, with the agents stepped in between):
 //   clock.wait_ready();
@@ -11,6 +12,8 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
+#include <memory>
 #include <optional>
 
 #include <nlohmann/json.hpp>
@@ -20,13 +23,23 @@
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/app/role.hpp"
 #include "swarm/record/metrics.hpp"
+#include "swarm/sim/phase_judge.hpp"
 #include "swarm/sim/world.hpp"
 
 namespace swarm::sim {
 
+// A phase's part in the simulator: how its robots move, and its ground-truth judge.
+struct PhaseSim {
+  planner::MotionModel motion;
+  std::unique_ptr<PhaseJudge> judge;
+};
+// Makes the simulator's part of phase `index` of the mission (tasks/registry.hpp: tasks::sim_part).
+using PhaseSimFactory =
+    std::function<PhaseSim(const swarm::scenario::Phase& phase, const app::RoleSetup& setup, std::uint32_t index)>;
+
 class SimNode {
  public:
-  SimNode(comm::LockstepClock& clock, const app::RoleSetup& setup);
+  SimNode(comm::LockstepClock& clock, const app::RoleSetup& setup, PhaseSimFactory phase_sim);
   // The whole run; returns the last tick.
   std::uint32_t run();
   // Tick k up to the clock: motion, scans, Clock(k).
@@ -43,7 +56,7 @@ class SimNode {
   // The ground-truth numbers of the phase in force, frozen when the next one starts.
   void judge_phase();
   struct PhaseLog;
-  void fill_judge(PhaseLog& p) const;
+  [[nodiscard]] nlohmann::json judge_of(const PhaseLog& p, record::MotionNumbers& motion) const;
   // What robots did since `start` (per-robot counts then; empty = the start of the run).
   record::MotionNumbers motion_since(const std::vector<MotionCounts>& start, const ConflictEvents& events) const;
 
@@ -55,7 +68,8 @@ class SimNode {
   std::optional<std::uint32_t> steps_to_99_;
   std::vector<std::pair<std::uint32_t, double>> curve_;  // (tick, explored fraction)
   std::vector<bool> alive_;
-  std::vector<config::CollectWorld> collect_;  // per mission phase: its objects and destinations
+  const app::RoleSetup& setup_;
+  PhaseSimFactory phase_sim_;
   std::vector<float> ranges_;
 
   // The mission's phases as the GCS announces them, and what the simulator judged in each.
@@ -68,8 +82,7 @@ class SimNode {
     std::vector<MotionCounts> counts_at_start;
     ConflictEvents events_at_start;
     std::uint64_t diagonals_at_start = 0;
-    std::vector<std::pair<std::uint32_t, double>> curve;  // cover: (tick, covered fraction); collect: (tick, delivered)
-    std::optional<std::uint32_t> full_tick;              // cover: every target cell covered
+    std::unique_ptr<PhaseJudge> judge_part;            // the task's own measures
     std::optional<std::uint32_t> first_move_tick;        // the first and last tick a robot moved
     std::optional<std::uint32_t> last_move_tick;         // in the phase
     nlohmann::json judge = nlohmann::json::object();

@@ -21,7 +21,7 @@
 // their release in different ticks (one that tried early would be refused by the simulator, a
 // conflict there). So a live run holds rotations back (Rotations::Held) and releases each one
 // that ready_rotations() names as one order with one start tick for all its robots
-// (gcs/mapf_task.hpp). `rotations` says how many a plan has.
+// (tasks/mapf/mapf_gcs.hpp). `rotations` says how many a plan has.
 // What a robot may do is judged from the progress of the others as the caller knows it (possibly
 // late): late knowledge only makes robots wait longer, never collide.
 //

@@ -1,0 +1,46 @@
+// One task, one place: a task is a folder tasks/<name>/ and one row of the registry
+// (tasks/registry.hpp). The row says everything the rest of the system needs to know of it:
+//   name        its field in idl/scenario.proto's Phase `task` oneof, which is also its name in
+//               --mission, metrics.json and the logs (the registry test checks they agree)
+//   phase_case  that field's case
+//   motion      how its robots move in the simulator (the model its planner assumes)
+//   gcs         its GCS part (gcs/gcs_task.hpp: the contract), one per phase
+//   leader      its leader part (leader/group_task.hpp), one per phase and group
+//   judge       its ground-truth judge in the simulator (sim/phase_judge.hpp), one per phase
+//
+// Adding a task:
+//   1. its settings message and a field in Phase's oneof, in idl/scenario.proto;
+//   2. tasks/<name>/: its planner calls, the three parts, and `TaskRow <name>_row()`;
+//   3. that row in tasks/src/registry.cpp and the folder in tasks/CMakeLists.txt.
+// The lockstep protocol, link emulation, faults, traffic accounting, the CLI's --mission and the
+// phase machine do not change. Settings checks that need the map (goals, objects) are made at
+// load, in config (config::resolve_phases).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "swarm/app/role.hpp"
+#include "swarm/gcs/gcs_task.hpp"
+#include "swarm/leader/group_task.hpp"
+#include "swarm/planner/motion.hpp"
+#include "swarm/sim/phase_judge.hpp"
+
+namespace swarm::tasks {
+
+using swarm::scenario::Phase;
+
+struct TaskRow {
+  std::string name;
+  Phase::TaskCase phase_case = Phase::TASK_NOT_SET;
+  planner::MotionModel motion = planner::MotionModel::eight();
+  std::function<std::unique_ptr<gcs::GcsTask>(const Phase&, const app::RoleSetup&, std::uint32_t index)> gcs;
+  std::function<std::unique_ptr<leader::GroupTask>(const Phase&, const app::RoleSetup&, int group,
+                                                   std::uint32_t index)>
+      leader;
+  std::function<std::unique_ptr<sim::PhaseJudge>(const Phase&, const app::RoleSetup&, std::uint32_t index)> judge;
+};
+
+}  // namespace swarm::tasks

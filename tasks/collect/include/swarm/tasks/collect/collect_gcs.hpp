@@ -1,0 +1,56 @@
+// The GCS's collection task (issue 10; docs/papers.md section 4): every object carried to its type's
+// destination. The objects and destinations come from the scenario (config::collect_world, the
+// same for the simulator, the GCS and the leaders, so an object is known by its number).
+//
+// The GCS splits the objects among the groups whose leader lives (each object to the nearest
+// group leader with room left: at most ceil(objects / groups) per group) and sends each group its
+// objects' numbers (TaskOrder kOrderWork, values = [object, ...]); the leader splits them among
+// its members (tasks/collect/collect_leader.hpp). The phase is complete when every group has reported its
+// objects delivered (TaskReport kDone, values = [seq]). The simulator judges what was delivered.
+//
+// The leaders report what they know of each object as it changes (TaskReport kWorking, values =
+// [seq, then per object: object, what, a, b]; comm::task::kObject*), and the GCS keeps the last
+// word on each. When a group's leader changes (a standby took over, comm/leadership.hpp) and the
+// group is not done, the GCS waits until every report the old leader sent has arrived (the
+// leader<->GCS delay and jitter) and sends the group kOrderResume with a new seq: its objects not
+// reported delivered, each with what was last reported (values = [object, what, a, b, ...]).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "swarm/config/task_config.hpp"
+#include "swarm/gcs/gcs_task.hpp"
+
+namespace swarm::gcs {
+
+class CollectGcsTask : public GcsTask {
+ public:
+  CollectGcsTask(const swarm::scenario::Collect& config, std::uint32_t phase);
+  void start(GcsContext& ctx) override;
+  void step(GcsContext& ctx) override;
+  [[nodiscard]] bool complete() const override { return complete_; }
+  [[nodiscard]] ProgressLine progress(const GcsContext& ctx) const override;
+  void on_report(const msgs::TaskReport& r, GcsContext& ctx) override;
+  [[nodiscard]] nlohmann::json numbers() const override;
+
+ private:
+  swarm::scenario::Collect config_;
+  std::uint32_t phase_;
+  config::CollectWorld world_;
+  std::vector<std::uint32_t> seq_;     // per group: its latest order's
+  std::vector<int> objects_of_group_;  // how many each group was given
+  std::vector<int> owner_;             // per object: its group
+  std::vector<std::array<std::int32_t, 3>> known_;  // per object: what, a, b, as last reported
+  std::vector<bool> done_;
+  std::vector<int> leader_;            // per group: the leader its latest order went to
+  std::vector<std::optional<std::uint32_t>> resume_at_;  // per group: when to send a resume order
+  std::uint64_t resumes_ = 0;
+  bool complete_ = false;
+  void send_resume(int group, GcsContext& ctx);
+  [[nodiscard]] int delivered_known() const;
+};
+
+}  // namespace swarm::gcs

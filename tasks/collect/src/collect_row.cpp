@@ -1,0 +1,71 @@
+#include "swarm/tasks/collect/collect_row.hpp"
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "swarm/config/task_config.hpp"
+#include "swarm/tasks/collect/collect_gcs.hpp"
+#include "swarm/tasks/collect/collect_leader.hpp"
+
+namespace swarm::tasks {
+
+namespace {
+// The simulator's judge: it lays the phase's objects out (config::resolve_phases drew them at
+// load), counts what was picked, delivered and dropped at a wrong destination, with a point of
+// the delivered curve at every delivery, and what the robots drove in the tour planner's terms.
+class CollectJudge : public sim::PhaseJudge {
+ public:
+  explicit CollectJudge(config::CollectWorld world) : world_(std::move(world)) {}
+  void start(sim::World& world, std::uint32_t tick) override {
+    world.set_objects(world_.objects, world_.destinations);
+    curve_.emplace_back(tick, 0.0);
+  }
+  void after_tick(const sim::World& world, std::uint32_t k) override {
+    const int delivered = world.collect().delivered;
+    if (delivered != static_cast<int>(curve_.back().second)) curve_.emplace_back(k, delivered);
+    if (!full_tick_ && delivered >= world.collect().objects) full_tick_ = k;
+  }
+  nlohmann::json judge(const sim::World& world, const sim::PhaseFacts& f) const override {
+    nlohmann::json curve = nlohmann::json::array();
+    for (const auto& [tick, n] : curve_) curve.push_back({tick, n});
+    const auto& c = world.collect();
+    // Length in cells (straight 1, diagonal sqrt 2), rotation in radians (eighths of a turn x pi / 4).
+    const double length = static_cast<double>(f.motion.total.moves - f.diagonal_moves) +
+                          static_cast<double>(f.diagonal_moves) * planner::MotionModel::kDiagonalCost;
+    const double rotation = static_cast<double>(f.motion.total.turn_eighths) * std::acos(-1.0) / 4.0;
+    return {{"objects", c.objects},
+            {"delivered", c.delivered},
+            {"picked", c.picked},
+            {"wrong_drops", c.wrong_drops},
+            {"driven_length_cells", length},
+            {"driven_rotation_rad", rotation},
+            {"makespan_ticks", full_tick_ ? nlohmann::json(*full_tick_ - f.start_tick) : nlohmann::json(nullptr)},
+            {"delivered_curve", curve}};
+  }
+
+ private:
+  config::CollectWorld world_;
+  std::vector<std::pair<std::uint32_t, double>> curve_;  // (tick, objects delivered)
+  std::optional<std::uint32_t> full_tick_;                // every object delivered
+};
+}  // namespace
+
+TaskRow collect_row() {
+  TaskRow row;
+  row.name = "collect";
+  row.phase_case = Phase::kCollect;
+  row.motion = planner::MotionModel::eight();  // the tour paper's robots turn in eighths
+  row.gcs = [](const Phase& phase, const app::RoleSetup&, std::uint32_t index) {
+    return std::make_unique<gcs::CollectGcsTask>(phase.collect(), index);
+  };
+  row.leader = [](const Phase& phase, const app::RoleSetup& setup, int group, std::uint32_t index) {
+    return std::make_unique<leader::CollectGroupTask>(phase.collect(), setup, group, index);
+  };
+  row.judge = [](const Phase&, const app::RoleSetup& setup, std::uint32_t index) {
+    return std::make_unique<CollectJudge>(setup.world.collect.at(index));
+  };
+  return row;
+}
+
+}  // namespace swarm::tasks

@@ -1,0 +1,57 @@
+#include "swarm/tasks/cover/cover_row.hpp"
+
+#include <utility>
+#include <vector>
+
+#include "swarm/config/task_config.hpp"
+#include "swarm/tasks/cover/cover_gcs.hpp"
+#include "swarm/tasks/cover/cover_leader.hpp"
+
+namespace swarm::tasks {
+
+namespace {
+// The simulator's judge: the share of the coverage target the robots' footprints swept, when it
+// was all swept, and the curve of it (every 5 ticks).
+class CoverJudge : public sim::PhaseJudge {
+ public:
+  void start(sim::World& world, std::uint32_t tick) override {
+    world.reset_coverage();
+    curve_.emplace_back(tick, world.covered_fraction());
+  }
+  void after_tick(const sim::World& world, std::uint32_t k) override {
+    if (!full_tick_ && world.covered_cells() >= world.coverage_target_cells()) full_tick_ = k;
+    if (k % 5 == 0) curve_.emplace_back(k, world.covered_fraction());
+  }
+  void last_tick(const sim::World& world, std::uint32_t k) override { curve_.emplace_back(k, world.covered_fraction()); }
+  nlohmann::json judge(const sim::World& world, const sim::PhaseFacts& facts) const override {
+    nlohmann::json curve = nlohmann::json::array();
+    for (const auto& [tick, f] : curve_) curve.push_back({tick, f});
+    return {{"covered_fraction", world.covered_fraction()},
+            {"covered_cells", world.covered_cells()},
+            {"target_cells", world.coverage_target_cells()},
+            {"makespan_ticks", full_tick_ ? nlohmann::json(*full_tick_ - facts.start_tick) : nlohmann::json(nullptr)},
+            {"coverage_curve", curve}};
+  }
+
+ private:
+  std::vector<std::pair<std::uint32_t, double>> curve_;  // (tick, covered fraction)
+  std::optional<std::uint32_t> full_tick_;                // every target cell covered
+};
+}  // namespace
+
+TaskRow cover_row() {
+  TaskRow row;
+  row.name = "cover";
+  row.phase_case = Phase::kCover;
+  row.motion = planner::MotionModel::four();  // DARP and STC plan on the 4-connected grid
+  row.gcs = [](const Phase& phase, const app::RoleSetup& setup, std::uint32_t index) {
+    return std::make_unique<gcs::CoverGcsTask>(phase.cover(), index, config::map_given(setup.world.scenario, index));
+  };
+  row.leader = [](const Phase& phase, const app::RoleSetup& setup, int group, std::uint32_t) {
+    return std::make_unique<leader::CoverGroupTask>(phase.cover(), setup, group);
+  };
+  row.judge = [](const Phase&, const app::RoleSetup&, std::uint32_t) { return std::make_unique<CoverJudge>(); };
+  return row;
+}
+
+}  // namespace swarm::tasks

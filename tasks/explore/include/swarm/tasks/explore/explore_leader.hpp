@@ -1,0 +1,48 @@
+// The leader's exploration task (docs/papers.md section 1): at every planning round the GCS starts, it
+// plans the group's waypoints on the stale global map and the group map (planner/explore.hpp),
+// assigns them, and tells the GCS when the whole group is done with them.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "swarm/leader/group_task.hpp"
+#include "swarm/planner/explore.hpp"
+
+namespace swarm::leader {
+
+class ExploreGroupTask : public GroupTask {
+ public:
+  ExploreGroupTask(const swarm::scenario::Explore& config, std::uint64_t seed, int robots_per_group);
+  void start(GroupContext& ctx) override;
+  void step(GroupContext& ctx) override;
+  void finish_step(GroupContext& ctx) override;
+  void gcs_back(GroupContext& ctx) override;
+  void on_round(std::uint32_t round, GroupContext& ctx) override;
+  void on_member_status(const msgs::MemberStatus& s, GroupContext& ctx) override;
+  void member_lost(int index, GroupContext& ctx) override;
+  void member_back(int index, GroupContext& ctx) override;
+  [[nodiscard]] nlohmann::json numbers() const override;
+  [[nodiscard]] bool numbers_at_top_level() const override { return true; }
+
+ private:
+  void plan(std::uint32_t round, GroupContext& ctx);
+
+  planner::ExploreConfig explore_;
+  std::optional<std::uint32_t> pending_round_;
+  std::uint32_t round_ = 0;
+  std::vector<bool> arrived_;
+  bool group_reported_ = true;
+  // Numbers for the run's metrics (wall-clock planning time is not part of the deterministic record).
+  std::uint64_t rounds_planned_ = 0;
+  std::uint64_t case_a_ = 0;
+  std::uint64_t case_b_ = 0;
+  double planning_seconds_ = 0;
+  std::uint64_t waypoints_[4] = {0, 0, 0, 0};  // by WaypointState (1 arrived, 2 unreachable, 3 blocked near)
+};
+
+// The explore planner's settings from the scenario's.
+[[nodiscard]] planner::ExploreConfig explore_config(const swarm::scenario::Explore& e, std::uint64_t seed);
+
+}  // namespace swarm::leader

@@ -1,0 +1,124 @@
+#include "swarm/tasks/explore/explore_leader.hpp"
+
+#include <chrono>
+
+#include "swarm/app/convert.hpp"
+
+namespace swarm::leader {
+
+using planner::Cell;
+
+planner::ExploreConfig explore_config(const swarm::scenario::Explore& e, std::uint64_t seed) {
+  planner::ExploreConfig c;
+  c.use_group_frontiers = e.mode() != swarm::scenario::BASELINE;
+  c.dbscan_eps_cells = e.dbscan_eps_cells();
+  c.dbscan_min_points = static_cast<int>(e.dbscan_min_points());
+  c.small_segment_max_cells = static_cast<int>(e.small_segment_max_cells());
+  c.small_segment_radius_cells = e.small_segment_radius_cells();
+  c.kmeans_max_iterations = static_cast<int>(e.kmeans_max_iterations());
+  c.seed = seed;
+  return c;
+}
+
+ExploreGroupTask::ExploreGroupTask(const swarm::scenario::Explore& config, std::uint64_t seed, int robots_per_group)
+    : explore_(explore_config(config, seed)), arrived_(static_cast<std::size_t>(robots_per_group), true) {}
+
+void ExploreGroupTask::start(GroupContext&) {
+  pending_round_.reset();
+  round_ = 0;
+  std::fill(arrived_.begin(), arrived_.end(), true);
+  group_reported_ = true;
+}
+
+void ExploreGroupTask::on_round(std::uint32_t round, GroupContext&) { pending_round_ = round; }
+
+void ExploreGroupTask::on_member_status(const msgs::MemberStatus& s, GroupContext& ctx) {
+  if (s.round() != round_) return;
+  arrived_[static_cast<std::size_t>(ctx.topology().index_of(s.robot()))] = true;
+  if (s.state() < 4) ++waypoints_[s.state()];
+}
+
+void ExploreGroupTask::member_lost(int index, GroupContext&) { arrived_[static_cast<std::size_t>(index)] = true; }
+void ExploreGroupTask::member_back(int index, GroupContext&) { arrived_[static_cast<std::size_t>(index)] = true; }
+
+void ExploreGroupTask::plan(std::uint32_t round, GroupContext& ctx) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const comm::Topology& t = ctx.topology();
+  planner::ExploreInput in;
+  in.global_map = &ctx.map.global();
+  in.group_map = &ctx.map.group();
+  for (int g = 0; g < t.groups(); ++g) in.leader_positions.push_back(ctx.leader_cell(g));
+  in.group = ctx.group;
+  // Only the living robots get waypoints (K-Means with k = living members); the leader's own
+  // robot is always alive.
+  const std::vector<int> living = ctx.living();
+  for (int i : living) in.member_positions.push_back(ctx.cell_of(i));
+  in.round = static_cast<int>(round);
+  planner::ExplorePlan plan = planner::plan_group_exploration(in, explore_);
+  std::vector<std::optional<Cell>> waypoints(static_cast<std::size_t>(t.robots_per_group()));
+  for (std::size_t j = 0; j < living.size(); ++j) waypoints[static_cast<std::size_t>(living[j])] = plan.waypoints[j];
+  plan.waypoints = waypoints;
+  planning_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ++rounds_planned_;
+  if (plan.plan_case == planner::PlanCase::GroupFrontier) ++case_a_;
+  if (plan.plan_case == planner::PlanCase::GlobalAssignment) ++case_b_;
+
+  round_ = round;
+  for (int i = 0; i < t.robots_per_group(); ++i) arrived_[static_cast<std::size_t>(i)] = !plan.waypoints[static_cast<std::size_t>(i)].has_value();
+  group_reported_ = false;
+  ctx.own.assign(round, plan.waypoints[static_cast<std::size_t>(ctx.self)]);
+  msgs::Assignment a;
+  a.round(round);
+  a.waypoints_xy(app::to_xy(plan.waypoints));
+  ctx.out.assignment(a);
+  msgs::PlanReport report;
+  report.group(static_cast<std::uint16_t>(ctx.group));
+  report.round(round);
+  report.plan_case(static_cast<std::uint8_t>(plan.plan_case));
+  report.waypoints_xy(app::to_xy(plan.waypoints));
+  report.group_frontiers_xy(app::to_xy(plan.group_frontiers));
+  for (const auto& seg : plan.global_segments) report.global_segments_xy().push_back(app::to_xy(seg));
+  report.chosen_segment(plan.chosen_segment);
+  ctx.out.plan_report(report);
+}
+
+void ExploreGroupTask::step(GroupContext& ctx) {
+  if (pending_round_) {
+    plan(*pending_round_, ctx);
+    pending_round_.reset();
+  }
+}
+
+void ExploreGroupTask::finish_step(GroupContext& ctx) {
+  bool all_arrived = true;
+  for (bool a : arrived_) all_arrived = all_arrived && a;
+  if (round_ > 0 && all_arrived && !group_reported_) {
+    msgs::GroupStatus status;
+    status.group(static_cast<std::uint16_t>(ctx.group));
+    status.round(round_);
+    ctx.out.group_status(status);
+    group_reported_ = true;
+  }
+}
+
+void ExploreGroupTask::gcs_back(GroupContext& ctx) {
+  // The round's arrival, if the GCS may have missed it.
+  if (round_ > 0 && group_reported_) {
+    msgs::GroupStatus status;
+    status.group(static_cast<std::uint16_t>(ctx.group));
+    status.round(round_);
+    ctx.out.group_status(status);
+  }
+}
+
+nlohmann::json ExploreGroupTask::numbers() const {
+  return {{"rounds_planned", rounds_planned_},
+          {"case_a_rounds", case_a_},
+          {"case_b_rounds", case_b_},
+          {"planning_seconds", planning_seconds_},
+          {"waypoints_reached", waypoints_[1]},
+          {"waypoints_unreachable", waypoints_[2]},
+          {"waypoints_blocked_near", waypoints_[3]}};
+}
+
+}  // namespace swarm::leader

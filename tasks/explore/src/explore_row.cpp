@@ -1,0 +1,35 @@
+#include "swarm/tasks/explore/explore_row.hpp"
+
+#include "swarm/tasks/explore/explore_gcs.hpp"
+#include "swarm/tasks/explore/explore_leader.hpp"
+
+namespace swarm::tasks {
+
+namespace {
+// The simulator's judge: how much of the map the robots' scans covered, and when 99 % was.
+class ExploreJudge : public sim::PhaseJudge {
+ public:
+  nlohmann::json judge(const sim::World& world, const sim::PhaseFacts& facts) const override {
+    return {{"explored_fraction", world.explored_fraction()},
+            {"steps_to_99", facts.steps_to_99 ? nlohmann::json(*facts.steps_to_99) : nlohmann::json(nullptr)}};
+  }
+};
+}  // namespace
+
+TaskRow explore_row() {
+  TaskRow row;
+  row.name = "explore";
+  row.phase_case = Phase::kExplore;
+  row.motion = planner::MotionModel::eight();  // the paper's 8-connected robots
+  row.gcs = [](const Phase&, const app::RoleSetup&, std::uint32_t index) {
+    return std::make_unique<gcs::ExploreGcsTask>(index);
+  };
+  row.leader = [](const Phase& phase, const app::RoleSetup& setup, int, std::uint32_t) {
+    return std::make_unique<leader::ExploreGroupTask>(phase.explore(), setup.world.scenario.seed(),
+                                                      setup.topology.robots_per_group());
+  };
+  row.judge = [](const Phase&, const app::RoleSetup&, std::uint32_t) { return std::make_unique<ExploreJudge>(); };
+  return row;
+}
+
+}  // namespace swarm::tasks

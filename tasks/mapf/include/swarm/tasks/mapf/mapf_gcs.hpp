@@ -1,0 +1,102 @@
+// The GCS's multi-agent path-finding task (issue 9; docs/papers.md section 3; planner/mapf/): every
+// living robot drives to its goal cell, and no two robots ever meet.
+//
+// How the plan is conflict-free across groups: the GCS plans for ALL living robots at once (one
+// MAPF instance; ECBS by default, config Mapf.solver) on the known map (the map file when the
+// mission starts with mapf, else the fused map), with the cells of robots it does not plan for (lost,
+// or in a group without its leader) as obstacles. The plan goes to every leader in one order.
+//
+// How it is driven under link delay: by its action-dependency graph (planner/mapf/adg.hpp;
+// tasks/mapf/mapf_leader.hpp): a robot enters a cell only after the robots planned there before it have
+// left, as its leader learns from their progress. A leader knows its own members' progress from
+// their RouteProgress; the others' it learns from the GCS, which relays what every leader reports.
+//
+// Messages (the task's contract over TaskOrder / TaskReport, comm/task_codes.hpp):
+//   TaskOrder kOrderWork, group kAllGroups, seq s: route_robots = the planned robot ids,
+//     routes_xy = their timed paths (one cell per tick, waits included); timed execution
+//     (Mapf.execution): values = [the start tick every robot sets off at].
+//   TaskReport (leader -> GCS): values = [s, robot, step, release, robot, step, release, ...] for
+//     its robots whose progress or release changed; state kDone when all its robots of plan s have
+//     arrived; kHeld after a hold when they all stand still.
+//   TaskOrder kOrderProgress, kAllGroups: values = [s, robot, step, release, ...], relayed.
+//   TaskOrder kOrderHold, seq s: stop releasing plan s.
+//   TaskOrder kOrderRotate, kAllGroups, seq s: values = [s, q, T]: the robots of the plan's
+//     rotation q (planner/mapf/adg.hpp: robots moving round a cycle of cells in one time step)
+//     make their step of it at tick T, all together. Driven by the graph, leaders never release a
+//     rotation themselves: they learn of their releases in different ticks, and a robot that moved
+//     early would run into one that has not left. The GCS knows every robot's progress (the
+//     leaders' reports), so it names the rotations that may go, with a start tick late enough for
+//     the order to reach every leader and its route every member (configured delays and jitter).
+// A planned robot lost midway, or a group's leader replaced by its standby: the GCS holds the
+// plan, waits until every group reports its robots still, and plans again from where the living
+// robots stand (seq s + 1).
+// Complete when every group of the current plan has reported kDone; given up when a plan cannot be
+// made (proven infeasible, or none within the time limit): the mission ends there, incomplete.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "swarm/gcs/gcs_task.hpp"
+#include "swarm/planner/mapf/adg.hpp"
+#include "swarm/planner/mapf/result.hpp"
+
+namespace swarm::gcs {
+
+class MapfGcsTask : public GcsTask {
+ public:
+  MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given);
+  void start(GcsContext& ctx) override;
+  void step(GcsContext& ctx) override;
+  [[nodiscard]] bool complete() const override { return complete_; }
+  // A plan that could not be made (proven infeasible, or no plan within the limit even from
+  // LaCAM): the same robots on the same map give the same answer, so the phase ends there.
+  [[nodiscard]] std::string given_up() const override { return failed_ ? failure_ : std::string(); }
+  [[nodiscard]] ProgressLine progress(const GcsContext& ctx) const override;
+  void on_report(const msgs::TaskReport& r, GcsContext& ctx) override;
+  [[nodiscard]] nlohmann::json numbers() const override;
+
+ private:
+  // Plans for the living robots (falling back to LaCAM when the configured solver times out) and
+  // sends the plan; a plan that is not solved is recorded and nothing is driven.
+  void plan(GcsContext& ctx, const char* why);
+  void note_plan(GcsContext& ctx, const char* why, const planner::mapf::Result& res);  // metrics + log
+  void send_plan(GcsContext& ctx, const planner::mapf::Result& res);
+  void send_order(GcsContext& ctx, std::uint8_t kind, std::vector<std::int32_t> values = {});
+  // The tick a timed plan or a rotation sets off at: late enough for an order sent now to reach
+  // every leader and its routes every member, with the configured delays and jitter (loss is not
+  // allowed for).
+  std::uint32_t start_tick(const GcsContext& ctx) const;
+  void order_rotations(GcsContext& ctx);  // the rotations that may go now, ordered once each
+  std::vector<planner::Cell> random_goals(const GcsContext& ctx) const;
+
+  swarm::scenario::Mapf config_;
+  std::uint32_t phase_;
+  bool map_given_;
+  planner::OccupancyGrid known_;
+  std::vector<planner::Cell> goals_;  // per robot id
+  std::vector<int> planned_;          // robot ids in the current plan
+  std::vector<bool> group_in_plan_, group_done_, group_held_;
+  std::uint32_t seq_ = 0;
+  bool holding_ = false;
+  bool failed_ = false;  // the last plan could not be made: nothing to drive
+  std::string failure_;  // why
+  std::vector<int> plan_leaders_;  // per group: its leader when the current plan was made
+  bool complete_ = false;
+  std::uint32_t start_tick_ = 0;
+  int arrived_ = 0;
+  std::vector<std::int32_t> relay_;  // progress triples to relay this tick
+  // Driven by the graph: the plan's graph, every planned robot's progress as reported, and which
+  // rotations were ordered.
+  bool by_graph_ = false;
+  planner::mapf::Dependencies adg_;
+  std::vector<std::uint32_t> progress_;  // per plan index
+  std::vector<bool> rotation_ordered_;
+  std::uint32_t rotations_ordered_ = 0;
+  planner::mapf::Result first_;      // the first plan's numbers (after any fallback)
+  bool have_first_ = false;
+  nlohmann::json plans_ = nlohmann::json::array();
+};
+
+}  // namespace swarm::gcs

@@ -1,0 +1,82 @@
+// The leader's multi-agent path-finding task (issue 9): its robots drive the GCS's plan
+// (tasks/mapf/mapf_gcs.hpp: the contract of the messages) by the plan's action-dependency graph
+// (planner/mapf/adg.hpp).
+//
+// With the plan, the leader builds the graph for ALL planned robots (every leader builds the same
+// one) and sends each of its robots its route without the waits, released only as far as the
+// graph allows. Each tick it learns progress: its own robots' from their RouteProgress, the other
+// groups' from the GCS's relay; whenever a robot of its own may go further it sends a
+// RouteRelease. It reports its own robots' progress and releases to the GCS (for the other
+// leaders), kDone when they have all arrived, and after a hold, kHeld once they all stand at their
+// release. Late knowledge only makes robots wait longer: never collide, never deadlock (the graph
+// of a valid plan has no cycle; rotations go as one step, planner/mapf/adg.hpp).
+// With `execution: MAPF_EXECUTE_TIMED` each robot instead gets its whole timed path (waits
+// included), released at once, to set off at the plan's start tick (the order's values[0]); a
+// hold then stops them where they stand (an empty route each), and kHeld follows once the
+// simulator has confirmed every stop.
+// A standby that takes the group over mid-plan (took_over) cannot know how far each robot got
+// along the old leader's routes, nor which releases are still on their way: it takes the plan
+// without sending it, stops each of its robots where it stands (an empty route, which the
+// simulator confirms as Stopped; timed, at the GCS's hold, with every other group) and reports
+// kHeld once all have stopped; the GCS, which holds a plan whose group changed leader, then plans
+// again from where every robot stands.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "swarm/leader/group_task.hpp"
+#include "swarm/planner/mapf/adg.hpp"
+
+namespace swarm::leader {
+
+class MapfGroupTask : public GroupTask {
+ public:
+  MapfGroupTask(const swarm::scenario::Mapf& config, int group);
+  void start(GroupContext& ctx) override;
+  void step(GroupContext& ctx) override;
+  void on_order(const msgs::TaskOrder& order, GroupContext& ctx) override;
+  void on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) override;
+  void took_over(GroupContext&) override { adopting_ = true; }
+  void gcs_back(GroupContext& ctx) override;
+  [[nodiscard]] nlohmann::json numbers() const override;
+
+ private:
+  void take_plan(const msgs::TaskOrder& order, GroupContext& ctx);
+  // Sends a release to every robot of the group that may now go further.
+  void release(GroupContext& ctx);
+  void note(int k);  // robot k's progress/release goes into the next report
+  // kOrderRotate: this group's robots of rotation q make their step of it at `tick`.
+  void rotate(int q, std::uint32_t tick, GroupContext& ctx);
+
+  bool timed_;
+  int group_;
+  std::uint32_t seq_ = 0;
+  bool have_plan_ = false;
+  bool holding_ = false;
+  planner::mapf::Dependencies adg_;
+  std::vector<std::vector<planner::Cell>> routes_;  // per plan index: what the robot drives
+  std::vector<int> robot_of_;                 // plan index -> robot id
+  std::vector<int> index_of_;                 // plan index -> group index (-1: another group's)
+  std::vector<std::uint32_t> progress_;       // per plan index: the route step it is known at
+  std::vector<std::uint32_t> released_;       // per plan index: how far it may drive
+  std::vector<std::uint32_t> route_id_;       // per plan index (own robots)
+  // per plan index (own robots): the route step its current route message starts at (a rotation
+  // sends the rest of the route anew, with its start tick)
+  std::vector<std::uint32_t> base_;
+  std::vector<int> own_;                      // plan indices of this group's robots
+  std::vector<std::int32_t> report_;          // (robot, step, release) triples to report
+  // Taking over: the replayed orders build the plan's state but send nothing (adopting_); then
+  // every own robot is stopped (so are they on a hold of a timed plan), and the robots whose stop
+  // is not yet confirmed are `stopping_`.
+  bool adopting_ = false;
+  std::vector<int> stopping_;  // plan indices
+  bool stopped_all_ = false;   // after a take-over: every own robot confirmed stopped
+  void stop_own_robots(GroupContext& ctx);
+  bool reported_done_ = false;
+  bool reported_held_ = false;
+  std::uint64_t releases_sent_ = 0;
+  std::uint64_t plans_taken_ = 0;
+};
+
+}  // namespace swarm::leader

@@ -1,0 +1,254 @@
+#include "swarm/tasks/mapf/mapf_gcs.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "swarm/app/convert.hpp"
+#include "swarm/comm/link.hpp"
+#include "swarm/comm/task_codes.hpp"
+#include "swarm/config/task_config.hpp"
+#include "swarm/planner/frontier.hpp"
+#include "swarm/planner/mapf/solver.hpp"
+#include "swarm/planner/rng.hpp"
+
+namespace swarm::gcs {
+
+using planner::Cell;
+namespace task = comm::task;
+
+MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given)
+    : config_(config), phase_(phase), map_given_(map_given) {}
+
+std::vector<Cell> MapfGcsTask::random_goals(const GcsContext& ctx) const {
+  // A distinct free cell per robot, reachable from where it stands, drawn from the run's seed.
+  const comm::Topology& t = ctx.setup.topology;
+  planner::Rng rng(planner::mix_seed(ctx.setup.world.scenario.seed(), 9000 + phase_));
+  std::vector<std::uint8_t> taken(known_.size(), 0);
+  std::vector<Cell> goals(static_cast<std::size_t>(t.robots()), Cell{-1, -1});
+  for (int r = 0; r < t.robots(); ++r) taken[known_.index(ctx.cell_of(r))] = ctx.alive(r) ? 0 : 1;
+  for (int r = 0; r < t.robots(); ++r) {
+    if (!ctx.alive(r)) continue;
+    const auto reach = planner::reachable_mask(known_, {ctx.cell_of(r)}, planner::MotionModel::four());
+    std::vector<int> options;
+    for (std::size_t i = 0; i < reach.size(); ++i) {
+      if (reach[i] && !taken[i]) options.push_back(static_cast<int>(i));
+    }
+    if (options.empty()) continue;
+    const int pick = options[rng.below(options.size())];
+    taken[static_cast<std::size_t>(pick)] = 1;
+    goals[static_cast<std::size_t>(r)] = known_.cell_of(pick);
+  }
+  return goals;
+}
+
+void MapfGcsTask::start(GcsContext& ctx) {
+  known_ = map_given_ ? ctx.setup.given_map : ctx.mission.fused();
+  start_tick_ = ctx.tick();
+  goals_ = ctx.setup.world.mapf_goals.at(phase_);
+  if (goals_.empty()) goals_ = random_goals(ctx);
+  const auto groups = static_cast<std::size_t>(ctx.setup.topology.groups());
+  group_in_plan_.assign(groups, false);
+  group_done_.assign(groups, false);
+  group_held_.assign(groups, false);
+  plan(ctx, "start");
+}
+
+void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
+  const comm::Topology& t = ctx.setup.topology;
+  // Who is planned for: the living robots of groups whose leader lives, with a goal. Everyone else
+  // stands where it is: an obstacle.
+  planned_.clear();
+  planner::mapf::Instance in;
+  in.map = known_;
+  for (int r = 0; r < t.robots(); ++r) {
+    const bool led = ctx.alive(ctx.leader_of(t.group_of(static_cast<comm::AgentId>(r))));
+    if (ctx.alive(r) && led && goals_[static_cast<std::size_t>(r)].x >= 0) {
+      planned_.push_back(r);
+      in.starts.push_back(ctx.cell_of(r));
+      in.goals.push_back(goals_[static_cast<std::size_t>(r)]);
+    } else {
+      in.map.set(ctx.cell_of(r), planner::CellState::Occupied);
+    }
+  }
+  ++seq_;
+  holding_ = false;
+  std::fill(group_in_plan_.begin(), group_in_plan_.end(), false);
+  std::fill(group_done_.begin(), group_done_.end(), false);
+  std::fill(group_held_.begin(), group_held_.end(), false);
+  for (int r : planned_) group_in_plan_[static_cast<std::size_t>(t.group_of(static_cast<comm::AgentId>(r)))] = true;
+  plan_leaders_.clear();
+  for (int g = 0; g < t.groups(); ++g) plan_leaders_.push_back(ctx.leader_of(g));
+
+  planner::mapf::SolverConfig solver = config::mapf_solver_config(config_, ctx.setup.world.scenario.seed());
+  planner::mapf::Result res = planner::mapf::solve(in, solver, planner::mapf::StopCondition::after(config_.time_limit_s()));
+  if (res.status == planner::mapf::Status::Timeout && solver.kind != planner::mapf::SolverKind::Lacam) {
+    // A (bounded-)optimal search that runs out of time leaves nothing safe to drive; LaCAM is
+    // complete and fast: it finds a plan, or proves there is none, within another such limit.
+    note_plan(ctx, why, res);
+    std::fprintf(stderr, "gcs: mapf plan timed out after %.3f s; trying LaCAM\n", res.seconds);
+    solver.kind = planner::mapf::SolverKind::Lacam;
+    res = planner::mapf::solve(in, solver, planner::mapf::StopCondition::after(config_.time_limit_s()));
+    why = "LaCAM after a timeout";
+  }
+  note_plan(ctx, why, res);
+  if (!have_first_) first_ = res;  // the plan the phase's planned numbers describe (after any fallback)
+  have_first_ = true;
+  failed_ = res.status != planner::mapf::Status::Solved;
+  if (failed_) {
+    // Nothing safe to drive, and planning the same instance again gives the same answer: the
+    // phase is given up (given_up(); metrics.json says why).
+    failure_ = std::string("no plan for ") + std::to_string(planned_.size()) + " robots (" + why +
+               "): " + planner::mapf::to_string(res.status) + (res.message.empty() ? "" : ", " + res.message);
+    return;
+  }
+  send_plan(ctx, res);
+}
+
+void MapfGcsTask::note_plan(GcsContext& ctx, const char* why, const planner::mapf::Result& res) {
+  plans_.push_back({{"tick", ctx.tick()},
+                    {"why", why},
+                    {"robots", planned_.size()},
+                    {"status", planner::mapf::to_string(res.status)},
+                    {"seconds", res.seconds},
+                    {"soc", res.soc},
+                    {"makespan", res.makespan},
+                    {"lower_bound", res.lower_bound},
+                    {"conflicts", res.conflicts},
+                    {"message", res.message}});
+  std::fprintf(stderr, "gcs: mapf plan (%s) at tick %u for %zu robots: %s in %.3f s, soc %lld, makespan %d%s%s\n", why,
+               ctx.tick(), planned_.size(), planner::mapf::to_string(res.status), res.seconds, res.soc, res.makespan,
+               res.message.empty() ? "" : ": ", res.message.c_str());
+}
+
+void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res) {
+  by_graph_ = config_.execution() != swarm::scenario::MAPF_EXECUTE_TIMED;
+  if (by_graph_) {
+    adg_ = planner::mapf::dependencies(res.paths);
+    progress_.assign(res.paths.size(), 0);
+    rotation_ordered_.assign(adg_.rotations.size(), false);
+  }
+  msgs::TaskOrder o;
+  o.group(task::kAllGroups);
+  o.kind(task::kOrderWork);
+  o.seq(seq_);
+  if (config_.execution() == swarm::scenario::MAPF_EXECUTE_TIMED) {
+    // One start tick for every robot: late enough for the order to reach every leader and its
+    // routes every member, with the configured delays and jitter (loss is not allowed for).
+    o.values().push_back(static_cast<std::int32_t>(start_tick(ctx)));
+  }
+  for (std::size_t k = 0; k < planned_.size(); ++k) {
+    o.route_robots().push_back(static_cast<std::uint16_t>(planned_[k]));
+    o.routes_xy().push_back(app::to_xy(res.paths[k]));
+    ctx.record.append(route_frame(ctx.tick(), phase_, planned_[k], res.paths[k]));
+  }
+  ctx.out.order(o);
+}
+
+std::uint32_t MapfGcsTask::start_tick(const GcsContext& ctx) const {
+  // The order reaches the last leader by then, and the routes it forwards at once the last member.
+  const comm::LinkTable& links = ctx.setup.links;
+  const std::uint32_t at_leaders = comm::last_arrival_tick(links[comm::LinkClass::LeaderGcs], ctx.tick());
+  return comm::last_arrival_tick(links[comm::LinkClass::MemberLeader], at_leaders);
+}
+
+void MapfGcsTask::order_rotations(GcsContext& ctx) {
+  for (const int q : planner::mapf::ready_rotations(adg_, progress_)) {
+    const auto qu = static_cast<std::size_t>(q);
+    if (rotation_ordered_[qu]) continue;
+    rotation_ordered_[qu] = true;
+    ++rotations_ordered_;
+    send_order(ctx, task::kOrderRotate,
+               {static_cast<std::int32_t>(seq_), q, static_cast<std::int32_t>(start_tick(ctx))});
+  }
+}
+
+void MapfGcsTask::send_order(GcsContext& ctx, std::uint8_t kind, std::vector<std::int32_t> values) {
+  msgs::TaskOrder o;
+  o.group(task::kAllGroups);
+  o.kind(kind);
+  o.seq(seq_);
+  o.values(std::move(values));
+  ctx.out.order(o);
+}
+
+void MapfGcsTask::on_report(const msgs::TaskReport& r, GcsContext&) {
+  const auto& v = r.values();
+  if (!v.empty() && static_cast<std::uint32_t>(v[0]) == seq_ && v.size() % 3 == 1) {
+    relay_.insert(relay_.end(), v.begin() + 1, v.end());
+    for (std::size_t i = 1; by_graph_ && i + 2 < v.size(); i += 3) {
+      const auto it = std::find(planned_.begin(), planned_.end(), v[i]);
+      if (it == planned_.end()) continue;
+      auto& p = progress_[static_cast<std::size_t>(it - planned_.begin())];
+      p = std::max(p, static_cast<std::uint32_t>(v[i + 1]));
+    }
+  }
+  if (r.group() >= group_done_.size() || v.empty() || static_cast<std::uint32_t>(v[0]) != seq_) return;
+  if (r.state() == task::kDone) group_done_[r.group()] = true;
+  if (r.state() == task::kHeld) group_held_[r.group()] = true;
+}
+
+void MapfGcsTask::step(GcsContext& ctx) {
+  const comm::Topology& t = ctx.setup.topology;
+  if (!relay_.empty()) {
+    std::vector<std::int32_t> values{static_cast<std::int32_t>(seq_)};
+    values.insert(values.end(), relay_.begin(), relay_.end());
+    relay_.clear();
+    send_order(ctx, task::kOrderProgress, std::move(values));
+  }
+  if (by_graph_ && !holding_ && !failed_) order_rotations(ctx);
+  arrived_ = 0;
+  for (int r : planned_) arrived_ += ctx.alive(r) && ctx.cell_of(r) == goals_[static_cast<std::size_t>(r)] ? 1 : 0;
+  if (failed_) return;
+  // A planned robot lost (or its group's leader): the others may wait for it for ever. Hold, and
+  // plan again once every group stands still.
+  // A group whose leader changed (a standby took over, leader/leader_node.hpp) is held too: the new
+  // leader stops its robots where they stand and reports them held (tasks/mapf/mapf_leader.hpp).
+  bool lost = false;
+  for (int r : planned_) {
+    const int g = t.group_of(static_cast<comm::AgentId>(r));
+    lost = lost || !ctx.alive(r) || !ctx.alive(ctx.leader_of(g)) ||
+           ctx.leader_of(g) != plan_leaders_[static_cast<std::size_t>(g)];
+  }
+  bool all_done = true, all_held = true;
+  for (int g = 0; g < t.groups(); ++g) {
+    if (!group_in_plan_[static_cast<std::size_t>(g)] || !ctx.alive(ctx.leader_of(g))) continue;
+    all_done = all_done && group_done_[static_cast<std::size_t>(g)];
+    all_held = all_held && (group_held_[static_cast<std::size_t>(g)] || group_done_[static_cast<std::size_t>(g)]);
+  }
+  if (lost && !holding_ && !all_done) {
+    holding_ = true;
+    send_order(ctx, task::kOrderHold, {static_cast<std::int32_t>(seq_)});
+    std::fprintf(stderr, "gcs: mapf: a planned robot was lost at tick %u; holding plan %u\n", ctx.tick(), seq_);
+    return;
+  }
+  if (holding_ && all_held) {
+    plan(ctx, "robot lost");
+    return;
+  }
+  complete_ = !holding_ && all_done;
+}
+
+ProgressLine MapfGcsTask::progress(const GcsContext&) const {
+  char detail[96];
+  std::snprintf(detail, sizeof detail, "at goal %d/%zu  plan %u%s", arrived_, planned_.size(), seq_,
+                failed_ ? " (failed)" : holding_ ? " (holding)" : "");
+  return {"arrived", planned_.empty() ? 0.0 : static_cast<double>(arrived_) / static_cast<double>(planned_.size()),
+          detail};
+}
+
+nlohmann::json MapfGcsTask::numbers() const {
+  return {{"solver", swarm::scenario::MapfSolver_Name(config_.solver())},
+          {"execution", swarm::scenario::MapfExecution_Name(config_.execution())},
+          {"map_given", map_given_},
+          {"robots_planned", planned_.size()},
+          {"robots_at_goal", arrived_},
+          {"planned_makespan", first_.makespan},
+          {"planned_soc", first_.soc},
+          {"lower_bound", first_.lower_bound},
+          {"solver_status", planner::mapf::to_string(first_.status)},
+          {"solver_seconds", first_.seconds},
+          {"rotations_ordered", rotations_ordered_},
+          {"plans", plans_}};
+}
+
+}  // namespace swarm::gcs

@@ -1,0 +1,228 @@
+#include "swarm/tasks/mapf/mapf_leader.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+
+#include "swarm/app/convert.hpp"
+#include "swarm/comm/task_codes.hpp"
+
+namespace swarm::leader {
+
+namespace task = comm::task;
+
+MapfGroupTask::MapfGroupTask(const swarm::scenario::Mapf& config, int group)
+    : timed_(config.execution() == swarm::scenario::MAPF_EXECUTE_TIMED), group_(group) {}
+
+void MapfGroupTask::start(GroupContext&) {
+  have_plan_ = false;
+  holding_ = false;
+}
+
+void MapfGroupTask::note(int k) {
+  report_.push_back(robot_of_[static_cast<std::size_t>(k)]);
+  report_.push_back(static_cast<std::int32_t>(progress_[static_cast<std::size_t>(k)]));
+  report_.push_back(static_cast<std::int32_t>(released_[static_cast<std::size_t>(k)]));
+}
+
+void MapfGroupTask::take_plan(const msgs::TaskOrder& o, GroupContext& ctx) {
+  std::vector<planner::mapf::Path> paths;
+  for (const auto& xy : o.routes_xy()) paths.push_back(app::from_xy(xy));
+  try {
+    adg_ = planner::mapf::dependencies(paths);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "leader-%d: mapf plan %u dropped: %s\n", group_, o.seq(), e.what());
+    return;
+  }
+  seq_ = o.seq();
+  have_plan_ = true;
+  holding_ = false;
+  stopping_.clear();
+  stopped_all_ = false;
+  reported_done_ = reported_held_ = false;
+  ++plans_taken_;
+  const std::size_t n = paths.size();
+  routes_ = timed_ ? paths : adg_.routes;
+  robot_of_.assign(o.route_robots().begin(), o.route_robots().end());
+  index_of_.assign(n, -1);
+  progress_.assign(n, 0);
+  released_.assign(n, 0);
+  route_id_.assign(n, 0);
+  base_.assign(n, 0);
+  own_.clear();
+  report_.clear();
+  const comm::Topology& t = ctx.topology();
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto robot = static_cast<comm::AgentId>(robot_of_[k]);
+    if (t.group_of(robot) != group_) continue;
+    index_of_[k] = t.index_of(robot);
+    own_.push_back(static_cast<int>(k));
+  }
+  if (adopting_) return;  // a take-over: the robots are stopped instead (step)
+  // Each robot of the group gets its whole route, released as far as the graph allows now (or,
+  // timed, all of it from the start tick).
+  for (int k : own_) {
+    const auto ku = static_cast<std::size_t>(k);
+    released_[ku] = timed_ ? static_cast<std::uint32_t>(routes_[ku].size() - 1)
+                           : planner::mapf::releasable(adg_, k, progress_, planner::mapf::Rotations::Held);
+    msgs::Route m;
+    m.path_xy(app::to_xy(routes_[ku]));
+    m.release(released_[ku]);
+    if (timed_ && !o.values().empty()) m.start_tick(static_cast<std::uint32_t>(o.values()[0]));
+    route_id_[ku] = ctx.out.route(index_of_[ku], m);
+    note(k);
+  }
+}
+
+void MapfGroupTask::on_order(const msgs::TaskOrder& o, GroupContext& ctx) {
+  if (o.kind() == task::kOrderWork) {
+    if (!have_plan_ || o.seq() > seq_) take_plan(o, ctx);
+    return;
+  }
+  if (!have_plan_ || o.values().empty() || static_cast<std::uint32_t>(o.values()[0]) != seq_) return;  // stale
+  if (o.kind() == task::kOrderHold) {
+    holding_ = true;
+    // Timed, every robot holds its whole route: stop them. Timed driving is chosen only with no
+    // link delay, so every robot of the plan stops at the same tick: a frozen step of a valid plan.
+    if (timed_ && !adopting_) stop_own_robots(ctx);
+    return;
+  }
+  if (o.kind() == task::kOrderRotate) {
+    if (!adopting_ && stopping_.empty() && !stopped_all_ && o.values().size() == 3 && !timed_ && o.values()[1] >= 0 &&
+        static_cast<std::size_t>(o.values()[1]) < adg_.rotations.size()) {
+      rotate(o.values()[1], static_cast<std::uint32_t>(o.values()[2]), ctx);
+    }
+    return;
+  }
+  if (o.kind() != task::kOrderProgress) return;
+  const auto& v = o.values();
+  for (std::size_t i = 1; i + 2 < v.size(); i += 3) {
+    const auto it = std::find(robot_of_.begin(), robot_of_.end(), v[i]);
+    if (it == robot_of_.end()) continue;
+    const auto k = static_cast<std::size_t>(it - robot_of_.begin());
+    if (index_of_[k] >= 0) continue;  // its own: known first-hand
+    progress_[k] = std::max(progress_[k], static_cast<std::uint32_t>(v[i + 1]));
+    released_[k] = std::max(released_[k], static_cast<std::uint32_t>(v[i + 2]));
+  }
+  release(ctx);
+}
+
+void MapfGroupTask::stop_own_robots(GroupContext& ctx) {
+  if (!stopping_.empty() || stopped_all_) return;  // stopped already
+  for (int k : own_) {
+    const auto ku = static_cast<std::size_t>(k);
+    if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
+    msgs::Route stop;  // empty: stop where it stands
+    route_id_[ku] = ctx.out.route(index_of_[ku], stop);
+    stopping_.push_back(k);
+  }
+  stopped_all_ = stopping_.empty();
+}
+
+void MapfGroupTask::on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) {
+  if (!have_plan_) return;
+  if (!stopping_.empty() || stopped_all_) {
+    std::erase_if(stopping_, [&](int k) {
+      const auto ku = static_cast<std::size_t>(k);
+      return index_of_[ku] == index && route_id_[ku] == p.id && p.state == planner::RouteState::Stopped;
+    });
+    stopped_all_ = stopping_.empty();
+    return;
+  }
+  for (int k : own_) {
+    const auto ku = static_cast<std::size_t>(k);
+    if (index_of_[ku] != index || route_id_[ku] != p.id || base_[ku] + p.step <= progress_[ku]) continue;
+    progress_[ku] = base_[ku] + p.step;
+    note(k);
+  }
+  release(ctx);
+}
+
+void MapfGroupTask::release(GroupContext& ctx) {
+  if (!have_plan_ || holding_ || timed_ || adopting_ || !stopping_.empty() || stopped_all_) return;
+  for (int k : own_) {
+    const auto ku = static_cast<std::size_t>(k);
+    if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
+    const std::uint32_t may = planner::mapf::releasable(adg_, k, progress_, planner::mapf::Rotations::Held);
+    if (may <= released_[ku]) continue;
+    released_[ku] = may;
+    msgs::RouteRelease r;
+    r.route_id(route_id_[ku]);
+    r.release(may - base_[ku]);
+    ctx.out.release(index_of_[ku], r);
+    ++releases_sent_;
+    note(k);
+  }
+}
+
+void MapfGroupTask::rotate(int q, std::uint32_t tick, GroupContext& ctx) {
+  for (const planner::mapf::Need& m : adg_.rotations[static_cast<std::size_t>(q)]) {
+    const auto ku = static_cast<std::size_t>(m.robot);
+    if (index_of_[ku] < 0 || !ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
+    if (progress_[ku] + 1 != m.step) continue;  // not where the GCS saw it (cannot happen: it was held)
+    // The rest of its route from the cell it stands on, its first step released from `tick` on:
+    // every member's simulator command then leaves in one tick.
+    const std::uint32_t from = m.step - 1;
+    msgs::Route r;
+    r.path_xy(app::to_xy(std::vector<planner::Cell>(routes_[ku].begin() + from, routes_[ku].end())));
+    r.release(1);
+    r.start_tick(tick);
+    base_[ku] = from;
+    released_[ku] = m.step;
+    route_id_[ku] = ctx.out.route(index_of_[ku], r);
+    note(static_cast<int>(ku));
+  }
+}
+
+void MapfGroupTask::step(GroupContext& ctx) {
+  if (adopting_) {
+    adopting_ = false;
+    // Timed, the robots keep to the plan's timing until the GCS's hold, which reaches every leader
+    // at one tick, stops them all together; by the graph they may stop at once (the others wait).
+    if (have_plan_ && (!timed_ || holding_)) stop_own_robots(ctx);
+  }
+  if (!have_plan_) return;
+  if (!stopping_.empty()) {  // a robot lost before its stop was confirmed stands still anyway
+    std::erase_if(stopping_, [&](int k) { return !ctx.alive[static_cast<std::size_t>(index_of_[static_cast<std::size_t>(k)])]; });
+    stopped_all_ = stopping_.empty();
+  }
+  release(ctx);
+  const bool stopped = !stopping_.empty() || stopped_all_;  // a take-over's stop: wait for the hold
+  bool arrived = !stopped, still = true;
+  for (int k : own_) {
+    const auto ku = static_cast<std::size_t>(k);
+    if (stopped || !ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
+    arrived = arrived && progress_[ku] + 1 >= routes_[ku].size();
+    still = still && progress_[ku] >= released_[ku];
+  }
+  if (stopped) still = stopped_all_;
+  std::uint8_t state = task::kWorking;
+  if (arrived && !reported_done_) {
+    state = task::kDone;
+    reported_done_ = true;
+  } else if (holding_ && still && !reported_held_) {
+    state = task::kHeld;
+    reported_held_ = true;
+  }
+  if (report_.empty() && state == task::kWorking) return;
+  msgs::TaskReport r;
+  r.state(state);
+  std::vector<std::int32_t> values{static_cast<std::int32_t>(seq_)};
+  values.insert(values.end(), report_.begin(), report_.end());
+  r.values(std::move(values));
+  report_.clear();
+  ctx.out.report(r);
+}
+
+void MapfGroupTask::gcs_back(GroupContext&) {
+  // Every robot's progress and release, and the group's done or held, again.
+  if (!have_plan_) return;
+  for (int k : own_) note(k);
+  reported_done_ = reported_held_ = false;
+}
+
+nlohmann::json MapfGroupTask::numbers() const {
+  return {{"plans", plans_taken_}, {"releases_sent", releases_sent_}};
+}
+
+}  // namespace swarm::leader
