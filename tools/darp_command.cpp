@@ -1,5 +1,7 @@
 #include "darp_command.hpp"
 
+#include "format.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <filesystem>

@@ -661,12 +661,4 @@ std::vector<std::string> write_outputs(const std::string& dir, const ExperimentO
   return written;
 }
 
-std::string local_timestamp(std::time_t now) {
-  std::tm local{};
-  ::localtime_r(&now, &local);
-  char stamp[32];
-  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
-  return stamp;
-}
-
 }  // namespace swarm::tools

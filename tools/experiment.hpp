@@ -183,7 +183,4 @@ std::vector<std::string> write_outputs(const std::string& dir, const ExperimentO
 // traffic_bytes, map_bytes, map_bytes_per_robot_second, log, failure.
 [[nodiscard]] std::vector<std::string> csv_header(ExperimentKind kind);
 
-// "YYYYmmdd-HHMMSS" in local time, for default output directory names.
-[[nodiscard]] std::string local_timestamp(std::time_t now);
-
 }  // namespace swarm::tools

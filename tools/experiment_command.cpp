@@ -1,5 +1,7 @@
 #include "experiment_command.hpp"
 
+#include "format.hpp"
+
 #include <unistd.h>
 
 #include <algorithm>

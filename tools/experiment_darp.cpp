@@ -1,5 +1,7 @@
 #include "experiment_darp.hpp"
 
+#include "format.hpp"
+
 #include <time.h>
 
 #include <algorithm>
@@ -140,13 +142,6 @@ Outcome run_job(const Job& job, const std::vector<MapInfo>& maps, const DarpExpe
     out.kept = std::make_shared<const DarpResult>(r);
   }
   return out;
-}
-
-std::string fixed(double v, int decimals) {
-  if (!std::isfinite(v)) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
 }
 
 Colour method_colour(const std::string& m) {

@@ -1,5 +1,7 @@
 #include "experiment_mapf.hpp"
 
+#include "format.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -38,22 +40,6 @@ struct Run {
   int makespan = -1, collisions = 0;
   double work = NAN, stop = NAN, seconds = 0;
 };
-
-std::string fixed(double v, int d) {
-  if (!std::isfinite(v)) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", d, v);
-  return buf;
-}
-
-std::string now_stamp() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  localtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y%m%d-%H%M%S", &tm);
-  return buf;
-}
 
 Colour solver_colour(const std::string& s) {
   if (s == "cbs") return {0, 114, 178};
@@ -174,7 +160,7 @@ int experiment_mapf_command(const MapfExperimentOptions& o, std::ostream& out, s
       if (!fs::is_regular_file(fs::path(o.movingai_dir) / (m + ".map"))) return bad("--maps: no file " + m + ".map in " + o.movingai_dir);
     }
   }
-  const std::string dir = o.out_dir.empty() ? "runs/experiment-mapf-" + now_stamp() : o.out_dir;
+  const std::string dir = o.out_dir.empty() ? "runs/experiment-mapf-" + local_timestamp() : o.out_dir;
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir)) return bad("--out: cannot create the directory " + dir);

@@ -1,5 +1,7 @@
 #include "mapf_command.hpp"
 
+#include "format.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -29,15 +31,6 @@ namespace pm = swarm::planner::mapf;
 using swarm::planner::Cell;
 using swarm::planner::OccupancyGrid;
 
-std::string now_stamp() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  localtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y%m%d-%H%M%S", &tm);
-  return buf;
-}
-
 std::string base64(const std::string& bytes) {
   static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
@@ -60,12 +53,6 @@ std::string slurp(const std::string& path) {
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
-}
-
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
 }
 
 int auto_scale(const OccupancyGrid& map, int requested) {
@@ -325,7 +312,7 @@ int mapf_command(const MapfOptions& o, std::ostream& out, std::ostream& err) {
   if (o.ga_crossover) cfg.ga.crossover_rate = *o.ga_crossover;
   if (o.ga_mutation) cfg.ga.mutation_rate = *o.ga_mutation;
 
-  const std::string dir = o.out_dir.empty() ? "runs/mapf-" + now_stamp() : o.out_dir;
+  const std::string dir = o.out_dir.empty() ? "runs/mapf-" + local_timestamp() : o.out_dir;
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir)) return bad("--out: cannot create the directory " + dir);

@@ -1,5 +1,7 @@
 #include "offline_common.hpp"
 
+#include "format.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
@@ -31,12 +33,6 @@ std::string make_out_dir(const std::string& requested, const std::string& fallba
 
 int picture_scale(const planner::OccupancyGrid& map) {
   return std::clamp(640 / std::max(1, std::max(map.width(), map.height())), 4, 40);
-}
-
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
 }
 
 int finish_experiment(const std::string& dir, const ExperimentOutputs& outputs, const char* me,

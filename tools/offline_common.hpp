@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "format.hpp"
 #include "swarm/planner/grid.hpp"
 
 namespace swarm::tools {
@@ -31,9 +32,6 @@ struct OfflineBadInput : std::runtime_error {
 
 // Pixels per cell for a picture about 640 pixels across (4..40).
 [[nodiscard]] int picture_scale(const planner::OccupancyGrid& map);
-
-// "12.35" with `decimals` digits.
-[[nodiscard]] std::string fixed(double v, int decimals);
 
 // The end of an offline experiment: prints the table, writes table.txt, results.csv, results.json
 // and the figures into `dir` (experiment.hpp write_outputs), says where; 0, or 1 (with a message

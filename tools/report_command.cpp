@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "format.hpp"
 #include "experiment_command.hpp"
 #include "swarm/config/scenario.hpp"
 

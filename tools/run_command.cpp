@@ -1,5 +1,7 @@
 #include "run_command.hpp"
 
+#include "format.hpp"
+
 #include <fcntl.h>
 #include <sys/file.h>
 #include <unistd.h>
@@ -393,11 +395,7 @@ std::string partition_name(pid_t pid, std::int64_t epoch_ns) {
 }
 
 std::string default_run_dir(const swarm::scenario::Scenario& s, std::time_t now) {
-  std::tm local{};
-  ::localtime_r(&now, &local);
-  char stamp[32];
-  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
-  return "runs/" + std::string(stamp) + "-" + map_label(s.map()) + "-" +
+  return "runs/" + local_timestamp(now) + "-" + map_label(s.map()) + "-" +
          cfg::mode_name(s.explore().mode()) + "-s" + std::to_string(s.seed());
 }
 
