@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "run_command.hpp"
+#include "run_launch.hpp"
 
 namespace swarm::bench {
 

@@ -74,7 +74,7 @@ comm::LinkTable link_table(const swarm::scenario::Scenario& scenario, const comm
 // with exit status 0 and WITHOUT tearing down Fast DDS: Fast DDS 2.9.1 can abort in its
 // remote-participant lease check (PDP::check_remote_participant_liveliness) or deadlock
 // (eProsima/Fast-DDS#6502) while the run's other processes leave (seen about 1 run in 45). A
-// process that dies by a signal must fail the run (tools/supervisor.hpp), so the teardown, which
+// process that dies by a signal must fail the run (tools/launcher/supervisor.hpp), so the teardown, which
 // has nothing left to do for a finished role, is skipped rather than its crash excused. Shared
 // memory segments of an exited participant are reclaimed by Fast DDS (checked: /dev/shm does not
 // grow over runs).
