@@ -22,10 +22,10 @@
 #include <string>
 #include <vector>
 
-#include "swarm/planner/coverage_plan.hpp"
-#include "swarm/planner/darp.hpp"
-#include "swarm/planner/map_io.hpp"
-#include "swarm/planner/stc.hpp"
+#include "swarm/planner/coverage/coverage_plan.hpp"
+#include "swarm/planner/coverage/darp.hpp"
+#include "swarm/planner/grid/map_io.hpp"
+#include "swarm/planner/coverage/stc.hpp"
 #include "swarm_test/data.hpp"
 
 namespace {

@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <string>
 
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 #include "swarm/planner/mapf/movingai_scen.hpp"
 #include "swarm/planner/mapf/solver.hpp"
 #include "swarm_test/data.hpp"

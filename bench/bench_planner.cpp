@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "swarm_test/data.hpp"
-#include "swarm/planner/astar.hpp"
-#include "swarm/planner/grid.hpp"
-#include "swarm/planner/map_io.hpp"
-#include "swarm/planner/raycast.hpp"
+#include "swarm/planner/grid/astar.hpp"
+#include "swarm/planner/grid/grid.hpp"
+#include "swarm/planner/grid/map_io.hpp"
+#include "swarm/planner/sensing/raycast.hpp"
 
 namespace {
 

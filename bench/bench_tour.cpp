@@ -1,4 +1,4 @@
-// Collection tours and cleaning orders (planner/tour.hpp, tour_order.hpp, plow.hpp, group_k.hpp):
+// Collection tours and cleaning orders (planner/tours/tour.hpp, tour_order.hpp, plow.hpp, group_k.hpp):
 // the paper's GA on one type's objects (1000 generations), the exact order, a whole tour like the
 // paper's scenario 2 (5 types x 10 objects on 20 x 20 cells), and plowing / Group-k of the
 // built-in clutter room. Run: swarm bench tour [--benchmark_filter=Ga]
@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "swarm/planner/group_k.hpp"
-#include "swarm/planner/map_io.hpp"
-#include "swarm/planner/plow.hpp"
-#include "swarm/planner/tour.hpp"
+#include "swarm/planner/coverage/group_k.hpp"
+#include "swarm/planner/grid/map_io.hpp"
+#include "swarm/planner/coverage/plow.hpp"
+#include "swarm/planner/tours/tour.hpp"
 #include "swarm_test/data.hpp"
 
 namespace {

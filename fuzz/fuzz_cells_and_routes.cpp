@@ -7,7 +7,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "swarm/planner/map_patch.hpp"
+#include "swarm/planner/grid/map_patch.hpp"
 #include "swarm/planner/mapf/adg.hpp"
 
 using namespace swarm::planner;

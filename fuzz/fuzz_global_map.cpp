@@ -4,7 +4,7 @@
 // it was; a map that decodes encodes back to bytes that decode the same.
 #include <cstdint>
 
-#include "swarm/planner/map_patch.hpp"
+#include "swarm/planner/grid/map_patch.hpp"
 
 using namespace swarm::planner;
 

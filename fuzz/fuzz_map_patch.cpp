@@ -3,7 +3,7 @@
 // re-encodes (RunLength) to one that decodes to the same changes.
 #include <cstdint>
 
-#include "swarm/planner/map_patch.hpp"
+#include "swarm/planner/grid/map_patch.hpp"
 
 using namespace swarm::planner;
 

@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "fuzz_files.hpp"
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const auto* nul = static_cast<const std::uint8_t*>(std::memchr(data, 0, size));

@@ -3,7 +3,7 @@
 #include <cstdint>
 
 #include "fuzz_files.hpp"
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 #include "swarm/planner/mapf/movingai_scen.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -2,7 +2,7 @@
 // the size limit, never a crash; what unpacks packs and unpacks to the same bytes.
 #include <cstdint>
 
-#include "swarm/planner/map_patch.hpp"
+#include "swarm/planner/grid/map_patch.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   constexpr std::size_t kLimit = 1 << 16;

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "offline_common.hpp"
-#include "swarm/planner/plow.hpp"
+#include "swarm/planner/coverage/plow.hpp"
 #include "swarm/record/grid_canvas.hpp"
 #include "text_table.hpp"
 

@@ -1,5 +1,5 @@
 // The cleaning comparison of `swarm clean` and `swarm experiment clean`: plowing against Group-k
-// (Jeon, Jo & Noh 2006; planner/plow.hpp, planner/group_k.hpp) on one map from one start, with
+// (Jeon, Jo & Noh 2006; planner/coverage/plow.hpp, planner/coverage/group_k.hpp) on one map from one start, with
 // the paper's time model, and its pictures.
 //
 //   const CleanRun run = run_clean(map, start, config, model);
@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "plot.hpp"
-#include "swarm/planner/coverage.hpp"
-#include "swarm/planner/group_k.hpp"
+#include "swarm/planner/coverage/coverage.hpp"
+#include "swarm/planner/coverage/group_k.hpp"
 
 namespace swarm::tools {
 

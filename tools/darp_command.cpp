@@ -14,8 +14,8 @@
 #include "darp_placement.hpp"
 #include "experiment.hpp"
 #include "swarm/config/scenario.hpp"
-#include "swarm/planner/coverage_check.hpp"
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/coverage/coverage_check.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 #include "swarm/record/grid_canvas.hpp"
 
 namespace swarm::tools {

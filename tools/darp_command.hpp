@@ -1,5 +1,5 @@
 // `swarm darp`: DARP area division and spanning-tree coverage paths on a map, offline: a map and
-// robots in, a picture and numbers out (planner/darp.hpp, planner/stc.hpp, planner/coverage_plan.hpp).
+// robots in, a picture and numbers out (planner/coverage/darp.hpp, planner/coverage/stc.hpp, planner/coverage/coverage_plan.hpp).
 //
 //   swarm darp --map terminal --count 6 --placement bunched --seed 3 --init bfs-kmeans
 //   swarm darp --map ../shared/benchmarks/darp/terminal-6.map --robots-file ../shared/benchmarks/darp/terminal-6.robots
@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "swarm/planner/coverage_plan.hpp"
-#include "swarm/planner/darp.hpp"
-#include "swarm/planner/grid.hpp"
+#include "swarm/planner/coverage/coverage_plan.hpp"
+#include "swarm/planner/coverage/darp.hpp"
+#include "swarm/planner/grid/grid.hpp"
 
 namespace swarm::tools {
 

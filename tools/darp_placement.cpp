@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "swarm/planner/region_graph.hpp"
+#include "swarm/planner/coverage/region_graph.hpp"
 
 namespace swarm::tools {
 namespace {

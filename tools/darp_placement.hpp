@@ -15,8 +15,8 @@
 #include <optional>
 #include <vector>
 
-#include "swarm/planner/grid.hpp"
-#include "swarm/planner/rng.hpp"
+#include "swarm/planner/grid/grid.hpp"
+#include "swarm/planner/grid/rng.hpp"
 
 namespace swarm::tools {
 

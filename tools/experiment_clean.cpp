@@ -14,7 +14,7 @@
 #include "offline_common.hpp"
 #include "offline_experiments.hpp"
 #include "stats.hpp"
-#include "swarm/planner/rng.hpp"
+#include "swarm/planner/grid/rng.hpp"
 #include "text_table.hpp"
 
 namespace swarm::tools {

@@ -16,7 +16,7 @@
 #include "mapf_maps.hpp"
 #include "plot.hpp"
 #include "stats.hpp"
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 #include "swarm/planner/mapf/movingai_scen.hpp"
 #include "swarm/planner/mapf/solver.hpp"
 #include "swarm/planner/mapf/warehouse.hpp"

@@ -14,7 +14,7 @@
 #include "offline_experiments.hpp"
 #include "stats.hpp"
 #include "swarm/config/scenario.hpp"
-#include "swarm/planner/frontier.hpp"
+#include "swarm/planner/explore/frontier.hpp"
 #include "text_table.hpp"
 #include "tour_file.hpp"
 #include "tour_report.hpp"

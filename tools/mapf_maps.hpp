@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "swarm/planner/grid.hpp"
+#include "swarm/planner/grid/grid.hpp"
 #include "swarm/planner/mapf/instance.hpp"
 #include "swarm/planner/mapf/warehouse.hpp"
 

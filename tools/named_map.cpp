@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "swarm/config/scenario.hpp"
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 
 namespace swarm::tools {
 

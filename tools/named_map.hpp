@@ -11,7 +11,7 @@
 
 #include <string>
 
-#include "swarm/planner/grid.hpp"
+#include "swarm/planner/grid/grid.hpp"
 
 namespace swarm::tools {
 

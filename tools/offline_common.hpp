@@ -17,7 +17,7 @@
 #include <string>
 
 #include "format.hpp"
-#include "swarm/planner/grid.hpp"
+#include "swarm/planner/grid/grid.hpp"
 
 namespace swarm::tools {
 

@@ -1,4 +1,4 @@
-// `swarm tour FILE`: plan a collection tour (Kim & Lee 2025, planner/tour.hpp) for a tour file
+// `swarm tour FILE`: plan a collection tour (Kim & Lee 2025, planner/tours/tour.hpp) for a tour file
 // (tour_file.hpp), print the paper's per-run table (length and rotation of each variant) and
 // write a picture per variant, the table and the legs as JSON.
 //

@@ -1,4 +1,4 @@
-// Tour files: a collection problem (Kim & Lee 2025, planner/tour.hpp) for `swarm tour` and
+// Tour files: a collection problem (Kim & Lee 2025, planner/tours/tour.hpp) for `swarm tour` and
 // `swarm experiment tour`. Plain text, one statement per line, '#' starts a comment:
 //
 //   size 12 12                 # an empty room of W x H cells ...
@@ -33,8 +33,8 @@
 #include <string>
 #include <vector>
 
-#include "swarm/planner/grid.hpp"
-#include "swarm/planner/tour.hpp"
+#include "swarm/planner/grid/grid.hpp"
+#include "swarm/planner/tours/tour.hpp"
 
 namespace swarm::tools {
 

@@ -1,4 +1,4 @@
-// Tables, pictures and JSON of collection tours (planner/tour.hpp) for `swarm tour` and
+// Tables, pictures and JSON of collection tours (planner/tours/tour.hpp) for `swarm tour` and
 // `swarm experiment tour`.
 //
 //   std::vector<VariantPlan> plans = ...;              // one per variant, same file and seed
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "swarm/planner/tour.hpp"
+#include "swarm/planner/tours/tour.hpp"
 #include "tour_file.hpp"
 
 namespace swarm::tools {

@@ -5,9 +5,9 @@
 #include <utility>
 
 #include "swarm/config/scenario.hpp"
-#include "swarm/planner/frontier.hpp"
+#include "swarm/planner/explore/frontier.hpp"
 #include "swarm/planner/mapf/movingai_scen.hpp"
-#include "swarm/planner/rng.hpp"
+#include "swarm/planner/grid/rng.hpp"
 
 namespace swarm::config {
 

@@ -10,9 +10,9 @@
 
 #include "swarm/config/scenario.hpp"
 #include "swarm/config/task_config.hpp"
-#include "swarm/planner/frontier.hpp"
-#include "swarm/planner/map_io.hpp"
-#include "swarm/planner/start_cells.hpp"
+#include "swarm/planner/explore/frontier.hpp"
+#include "swarm/planner/grid/map_io.hpp"
+#include "swarm/planner/grid/start_cells.hpp"
 
 #ifndef SWARM_SOURCE_DIR
 #error "SWARM_SOURCE_DIR must be defined by the build (config/CMakeLists.txt)"

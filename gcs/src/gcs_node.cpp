@@ -9,7 +9,7 @@
 
 #include "swarm/app/convert.hpp"
 #include "swarm/config/scenario.hpp"
-#include "swarm/planner/map_patch.hpp"
+#include "swarm/planner/grid/map_patch.hpp"
 #include "swarm/record/metrics.hpp"
 #include "swarm/gcs/gcs_task.hpp"
 

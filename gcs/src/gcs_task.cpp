@@ -3,7 +3,7 @@
 #include "swarm/app/convert.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/config/task_config.hpp"
-#include "swarm/planner/map_patch.hpp"
+#include "swarm/planner/grid/map_patch.hpp"
 
 namespace swarm::gcs {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "swarm/planner/frontier.hpp"
+#include "swarm/planner/explore/frontier.hpp"
 
 namespace swarm::gcs {
 

@@ -10,7 +10,7 @@
 #include "swarm/comm/task_codes.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/member/member_node.hpp"
-#include "swarm/planner/map_patch.hpp"
+#include "swarm/planner/grid/map_patch.hpp"
 
 namespace swarm::leader {
 

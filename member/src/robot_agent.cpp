@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "swarm/planner/astar.hpp"
-#include "swarm/planner/raycast.hpp"
+#include "swarm/planner/grid/astar.hpp"
+#include "swarm/planner/sensing/raycast.hpp"
 
 namespace swarm::member {
 

@@ -13,8 +13,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include "swarm/planner/grid.hpp"
-#include "swarm/planner/map_patch.hpp"
+#include "swarm/planner/grid/grid.hpp"
+#include "swarm/planner/grid/map_patch.hpp"
 
 namespace swarm::record {
 namespace {

@@ -5,9 +5,9 @@
 #include <cstdlib>
 #include <unordered_map>
 
-#include "swarm/planner/frontier.hpp"
-#include "swarm/planner/raycast.hpp"
-#include "swarm/planner/turns.hpp"
+#include "swarm/planner/explore/frontier.hpp"
+#include "swarm/planner/sensing/raycast.hpp"
+#include "swarm/planner/tours/turns.hpp"
 
 namespace swarm::sim {
 

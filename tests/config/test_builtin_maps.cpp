@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "swarm/config/scenario.hpp"
-#include "swarm/planner/frontier.hpp"
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/explore/frontier.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 #include "swarm/planner/mapf/warehouse.hpp"
 
 namespace {

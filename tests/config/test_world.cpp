@@ -14,8 +14,8 @@
 #include <utility>
 
 #include "swarm/config/scenario.hpp"
-#include "swarm/planner/frontier.hpp"
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/explore/frontier.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 #include "swarm_test/text.hpp"
 
 namespace {

@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "run_swarm.hpp"
-#include "swarm/planner/frontier.hpp"
-#include "swarm/planner/map_patch.hpp"
+#include "swarm/planner/explore/frontier.hpp"
+#include "swarm/planner/grid/map_patch.hpp"
 #include "swarm/record/file_hash.hpp"
 #include "swarm/record/record.hpp"
 #include "swarm/record/render.hpp"

@@ -18,8 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include "swarm/app/convert.hpp"
-#include "swarm/planner/explore.hpp"
-#include "swarm/planner/frontier.hpp"
+#include "swarm/planner/explore/explore.hpp"
+#include "swarm/planner/explore/frontier.hpp"
 #include "swarm_test/ascii_grid.hpp"
 #include "swarm_test/fake_swarm.hpp"
 

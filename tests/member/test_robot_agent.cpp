@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "swarm/planner/raycast.hpp"
+#include "swarm/planner/sensing/raycast.hpp"
 #include "swarm_test/ascii_grid.hpp"
 
 namespace swarm::member {

@@ -1,6 +1,6 @@
 #include "swarm_test/ascii_grid.hpp"
 #include "swarm_test/data.hpp"
-#include "swarm/planner/astar.hpp"
+#include "swarm/planner/grid/astar.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 
 namespace swarm::planner {
 

@@ -1,14 +1,14 @@
 // Routes for the live coverage task: every cell of the set visited by the routes together, each
 // route a legal 4-connected walk from its robot's cell; leftovers and detours.
-#include "swarm/planner/cover_routes.hpp"
+#include "swarm/planner/coverage/cover_routes.hpp"
 
 #include <gtest/gtest.h>
 
 #include <set>
 #include <vector>
 
-#include "swarm/planner/coverage_check.hpp"
-#include "swarm/planner/motion.hpp"
+#include "swarm/planner/coverage/coverage_check.hpp"
+#include "swarm/planner/grid/motion.hpp"
 #include "swarm_test/ascii_grid.hpp"
 
 namespace swarm::planner {

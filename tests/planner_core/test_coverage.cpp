@@ -1,4 +1,4 @@
-#include "swarm/planner/coverage.hpp"
+#include "swarm/planner/coverage/coverage.hpp"
 
 #include <gtest/gtest.h>
 

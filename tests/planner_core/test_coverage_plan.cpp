@@ -2,9 +2,9 @@
 // with the motion model on the map and with check_coverage_path on each region.
 #include <gtest/gtest.h>
 
-#include "swarm/planner/coverage_check.hpp"
-#include "swarm/planner/coverage_plan.hpp"
-#include "swarm/planner/motion.hpp"
+#include "swarm/planner/coverage/coverage_check.hpp"
+#include "swarm/planner/coverage/coverage_plan.hpp"
+#include "swarm/planner/grid/motion.hpp"
 
 namespace {
 

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "swarm/planner/coverage_check.hpp"
-#include "swarm/planner/darp.hpp"
-#include "swarm/planner/rng.hpp"
+#include "swarm/planner/coverage/coverage_check.hpp"
+#include "swarm/planner/coverage/darp.hpp"
+#include "swarm/planner/grid/rng.hpp"
 #include "swarm_test/ascii_grid.hpp"
 
 namespace {

@@ -1,4 +1,4 @@
-#include "swarm/planner/dbscan.hpp"
+#include "swarm/planner/explore/dbscan.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "swarm/planner/rng.hpp"
+#include "swarm/planner/grid/rng.hpp"
 
 namespace swarm::planner {
 namespace {

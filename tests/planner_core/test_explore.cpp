@@ -1,5 +1,5 @@
 #include "swarm_test/ascii_grid.hpp"
-#include "swarm/planner/explore.hpp"
+#include "swarm/planner/explore/explore.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "swarm/planner/frontier.hpp"
+#include "swarm/planner/explore/frontier.hpp"
 
 namespace swarm::planner {
 namespace {

@@ -1,5 +1,5 @@
 #include "swarm_test/ascii_grid.hpp"
-#include "swarm/planner/frontier.hpp"
+#include "swarm/planner/explore/frontier.hpp"
 
 #include <gtest/gtest.h>
 

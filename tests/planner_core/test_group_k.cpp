@@ -1,4 +1,4 @@
-#include "swarm/planner/group_k.hpp"
+#include "swarm/planner/coverage/group_k.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 #include "swarm_test/ascii_grid.hpp"
 #include "swarm_test/data.hpp"
 

@@ -1,4 +1,4 @@
-#include "swarm/planner/hungarian.hpp"
+#include "swarm/planner/explore/hungarian.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <numeric>
 #include <vector>
 
-#include "swarm/planner/rng.hpp"
+#include "swarm/planner/grid/rng.hpp"
 
 namespace swarm::planner {
 namespace {

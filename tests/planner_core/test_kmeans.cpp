@@ -1,4 +1,4 @@
-#include "swarm/planner/kmeans.hpp"
+#include "swarm/planner/explore/kmeans.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <set>
 #include <vector>
 
-#include "swarm/planner/rng.hpp"
+#include "swarm/planner/grid/rng.hpp"
 
 namespace swarm::planner {
 namespace {

@@ -1,5 +1,5 @@
 #include "swarm_test/data.hpp"
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "swarm/planner/map_patch.hpp"
+#include "swarm/planner/grid/map_patch.hpp"
 
 #include <gtest/gtest.h>
 

@@ -10,12 +10,12 @@
 #include <vector>
 
 #include "mapf_brute_force.hpp"
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 #include "swarm/planner/mapf/movingai_scen.hpp"
 #include "swarm/planner/mapf/solver.hpp"
 #include "swarm/planner/mapf/validate.hpp"
 #include "swarm/planner/mapf/warehouse.hpp"
-#include "swarm/planner/rng.hpp"
+#include "swarm/planner/grid/rng.hpp"
 #include "swarm_test/ascii_grid.hpp"
 #include "swarm_test/data.hpp"
 #include "swarm_test/text.hpp"

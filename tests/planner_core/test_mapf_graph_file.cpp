@@ -3,7 +3,7 @@
 // and what was expected.
 #include <gtest/gtest.h>
 
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 #include "swarm/planner/mapf/graph_file.hpp"
 #include "swarm/planner/mapf/movingai_scen.hpp"
 #include "swarm/planner/mapf/solver.hpp"

@@ -1,7 +1,7 @@
 // MovingAI `.scen` and `.map` files in and out (planner/mapf/movingai_scen.hpp, map_io.hpp).
 #include <gtest/gtest.h>
 
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 #include "swarm/planner/mapf/movingai_scen.hpp"
 #include "swarm_test/ascii_grid.hpp"
 #include "swarm_test/data.hpp"

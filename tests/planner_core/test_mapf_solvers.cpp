@@ -5,12 +5,12 @@
 #include <gtest/gtest.h>
 
 #include "mapf_brute_force.hpp"
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 #include "swarm/planner/mapf/movingai_scen.hpp"
 #include "swarm/planner/mapf/solver.hpp"
 #include "swarm/planner/mapf/validate.hpp"
 #include "swarm/planner/mapf/warehouse.hpp"
-#include "swarm/planner/rng.hpp"
+#include "swarm/planner/grid/rng.hpp"
 #include "swarm_test/ascii_grid.hpp"
 #include "swarm_test/data.hpp"
 

@@ -1,4 +1,4 @@
-#include "swarm/planner/motion.hpp"
+#include "swarm/planner/grid/motion.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "swarm/planner/plow.hpp"
+#include "swarm/planner/coverage/plow.hpp"
 
 #include <gtest/gtest.h>
 

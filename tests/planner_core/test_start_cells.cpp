@@ -1,5 +1,5 @@
 #include "swarm_test/ascii_grid.hpp"
-#include "swarm/planner/start_cells.hpp"
+#include "swarm/planner/grid/start_cells.hpp"
 
 #include <gtest/gtest.h>
 

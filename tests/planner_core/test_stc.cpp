@@ -2,9 +2,9 @@
 // independent validator; lengths and turns are checked against hand-counted values.
 #include <gtest/gtest.h>
 
-#include "swarm/planner/coverage_check.hpp"
-#include "swarm/planner/rng.hpp"
-#include "swarm/planner/stc.hpp"
+#include "swarm/planner/coverage/coverage_check.hpp"
+#include "swarm/planner/grid/rng.hpp"
+#include "swarm/planner/coverage/stc.hpp"
 #include "swarm_test/ascii_grid.hpp"
 
 namespace {

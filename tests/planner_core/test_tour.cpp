@@ -1,4 +1,4 @@
-#include "swarm/planner/tour.hpp"
+#include "swarm/planner/tours/tour.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "swarm/planner/tour_order.hpp"
+#include "swarm/planner/tours/tour_order.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <numeric>
 #include <vector>
 
-#include "swarm/planner/turns.hpp"
+#include "swarm/planner/tours/turns.hpp"
 #include "swarm_test/ascii_grid.hpp"
 
 namespace swarm::planner {

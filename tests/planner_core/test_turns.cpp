@@ -1,4 +1,4 @@
-#include "swarm/planner/turns.hpp"
+#include "swarm/planner/tours/turns.hpp"
 
 #include <gtest/gtest.h>
 

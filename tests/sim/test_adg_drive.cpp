@@ -10,7 +10,7 @@
 #include "swarm/planner/mapf/solver.hpp"
 #include "swarm/planner/mapf/validate.hpp"
 #include "swarm/planner/mapf/warehouse.hpp"
-#include "swarm/planner/rng.hpp"
+#include "swarm/planner/grid/rng.hpp"
 #include "swarm/sim/world.hpp"
 #include "swarm_test/ascii_grid.hpp"
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 
 namespace swarm::planner::mapf::detail {
 

@@ -4,7 +4,7 @@
 
 #include "solvers.hpp"
 #include "swarm/planner/mapf/warehouse.hpp"
-#include "swarm/planner/rng.hpp"
+#include "swarm/planner/grid/rng.hpp"
 
 namespace swarm::planner::mapf::detail {
 namespace {

@@ -11,7 +11,7 @@
 
 #include "agent_model.hpp"
 #include "solvers.hpp"
-#include "swarm/planner/rng.hpp"
+#include "swarm/planner/grid/rng.hpp"
 
 namespace swarm::planner::mapf::detail {
 namespace {

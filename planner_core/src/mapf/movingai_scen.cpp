@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "file_fields.hpp"
-#include "swarm/planner/astar.hpp"
+#include "swarm/planner/grid/astar.hpp"
 
 namespace swarm::planner::mapf {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "swarm/planner/motion.hpp"
+#include "swarm/planner/grid/motion.hpp"
 
 namespace swarm::planner::mapf {
 namespace {

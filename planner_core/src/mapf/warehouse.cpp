@@ -4,7 +4,7 @@
 #include <deque>
 #include <numeric>
 
-#include "swarm/planner/rng.hpp"
+#include "swarm/planner/grid/rng.hpp"
 
 namespace swarm::planner::mapf {
 namespace {

@@ -8,9 +8,9 @@
 #include "swarm/app/convert.hpp"
 #include "swarm/comm/link.hpp"
 #include "swarm/comm/task_codes.hpp"
-#include "swarm/planner/astar.hpp"
-#include "swarm/planner/cover_routes.hpp"
-#include "swarm/planner/tour.hpp"
+#include "swarm/planner/grid/astar.hpp"
+#include "swarm/planner/coverage/cover_routes.hpp"
+#include "swarm/planner/tours/tour.hpp"
 
 namespace swarm::leader {
 

@@ -6,7 +6,7 @@
 #include "swarm/app/convert.hpp"
 #include "swarm/comm/task_codes.hpp"
 #include "swarm/config/task_config.hpp"
-#include "swarm/planner/frontier.hpp"
+#include "swarm/planner/explore/frontier.hpp"
 
 namespace swarm::gcs {
 

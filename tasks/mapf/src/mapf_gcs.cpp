@@ -7,9 +7,9 @@
 #include "swarm/comm/link.hpp"
 #include "swarm/comm/task_codes.hpp"
 #include "swarm/config/task_config.hpp"
-#include "swarm/planner/frontier.hpp"
+#include "swarm/planner/explore/frontier.hpp"
 #include "swarm/planner/mapf/solver.hpp"
-#include "swarm/planner/rng.hpp"
+#include "swarm/planner/grid/rng.hpp"
 
 namespace swarm::gcs {
 

@@ -37,7 +37,7 @@
 #include "swarm/gcs/gcs_node.hpp"
 #include "swarm/app/candidate_node.hpp"
 #include "swarm/member/member_node.hpp"
-#include "swarm/planner/start_cells.hpp"
+#include "swarm/planner/grid/start_cells.hpp"
 #include "swarm/sim/sim_node.hpp"
 #include "swarm/tasks/registry.hpp"
 #include "swarm_test/files.hpp"

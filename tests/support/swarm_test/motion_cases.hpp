@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "swarm/planner/grid.hpp"
+#include "swarm/planner/grid/grid.hpp"
 
 namespace swarm::test {
 

@@ -5,9 +5,9 @@
 #include <optional>
 #include <vector>
 
-#include "swarm/planner/grid.hpp"
-#include "swarm/planner/map_patch.hpp"
-#include "swarm/planner/route.hpp"
+#include "swarm/planner/grid/grid.hpp"
+#include "swarm/planner/grid/map_patch.hpp"
+#include "swarm/planner/grid/route.hpp"
 #include "swarm_msgs.h"
 
 namespace swarm::app {
@@ -26,7 +26,7 @@ std::vector<std::optional<planner::Cell>> optional_cells_from_xy(const std::vect
 // The simulator's report on a robot's latest route, carried in its Sense.
 planner::RouteProgress route_progress(const msgs::Sense& sense);
 
-// Map patches in the run's encoding (scenario map_encoding; see planner/map_patch.hpp).
+// Map patches in the run's encoding (scenario map_encoding; see planner/grid/map_patch.hpp).
 planner::PatchEncoding patch_encoding(int scenario_map_encoding);
 std::vector<std::uint8_t> encode_patch(const std::vector<planner::CellChange>& changes, planner::PatchEncoding encoding);
 // Throws std::runtime_error on a malformed patch, or one with a cell index outside a map of

@@ -33,7 +33,7 @@
 #include <vector>
 
 #include "swarm/config/task_config.hpp"
-#include "swarm/planner/grid.hpp"
+#include "swarm/planner/grid/grid.hpp"
 #include "swarm/proto/scenario.pb.h"
 
 namespace swarm::config {

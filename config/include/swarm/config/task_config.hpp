@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "swarm/planner/cover_routes.hpp"
+#include "swarm/planner/coverage/cover_routes.hpp"
 #include "swarm/planner/mapf/solver.hpp"
-#include "swarm/planner/tour.hpp"
+#include "swarm/planner/tours/tour.hpp"
 #include "swarm/proto/scenario.pb.h"
 
 namespace swarm::config {

@@ -29,7 +29,7 @@
 #include "swarm/gcs/mission.hpp"
 #include "swarm/gcs/outages.hpp"
 #include "swarm/gcs/progress.hpp"
-#include "swarm/planner/map_patch.hpp"
+#include "swarm/planner/grid/map_patch.hpp"
 #include "swarm/record/record.hpp"
 
 namespace swarm::gcs {

@@ -28,7 +28,7 @@
 #include "swarm/comm/leadership.hpp"
 #include "swarm/app/role.hpp"
 #include "swarm/gcs/mission.hpp"
-#include "swarm/planner/map_patch.hpp"
+#include "swarm/planner/grid/map_patch.hpp"
 #include "swarm/record/record.hpp"
 #include "swarm_msgs.h"
 

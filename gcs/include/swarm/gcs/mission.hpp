@@ -18,7 +18,7 @@
 #include <optional>
 #include <vector>
 
-#include "swarm/planner/grid.hpp"
+#include "swarm/planner/grid/grid.hpp"
 
 namespace swarm::gcs {
 

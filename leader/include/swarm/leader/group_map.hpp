@@ -1,7 +1,7 @@
 // What a group leader knows (paper section 3.1): the stale global map the GCS last distributed,
 // and the group map = that global map + everything the group's own robots observed since. The
 // group frontiers of the paper are the frontiers of the group map that are not frontiers of the
-// global map (planner/explore.hpp computes them from the two maps kept here).
+// global map (planner/explore/explore.hpp computes them from the two maps kept here).
 //
 // The world is static and every observation is a true ray cast, so knowledge only grows: a cell
 // once known never changes, and merging is "take whichever map knows the cell". DDS-free.
@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "swarm/planner/grid.hpp"
+#include "swarm/planner/grid/grid.hpp"
 
 namespace swarm::leader {
 

@@ -40,7 +40,7 @@
 #include "swarm/app/role.hpp"
 #include "swarm/leader/group_map.hpp"
 #include "swarm/member/robot_agent.hpp"
-#include "swarm/planner/grid.hpp"
+#include "swarm/planner/grid/grid.hpp"
 #include "swarm_msgs.h"
 
 namespace swarm::leader {

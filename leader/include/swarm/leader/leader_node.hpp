@@ -20,7 +20,7 @@
 #include "swarm/leader/group_map.hpp"
 #include "swarm/leader/group_task.hpp"
 #include "swarm/member/robot_agent.hpp"
-#include "swarm/planner/map_patch.hpp"
+#include "swarm/planner/grid/map_patch.hpp"
 
 namespace swarm::leader {
 

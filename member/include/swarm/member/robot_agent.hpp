@@ -20,8 +20,8 @@
 #include <optional>
 #include <vector>
 
-#include "swarm/planner/grid.hpp"
-#include "swarm/planner/route.hpp"
+#include "swarm/planner/grid/grid.hpp"
+#include "swarm/planner/grid/route.hpp"
 
 namespace swarm::member {
 
@@ -42,7 +42,7 @@ class RobotAgent {
   // A new waypoint for `round`; nullopt = stay. Replaces a route being followed.
   void assign(std::uint32_t round, std::optional<planner::Cell> waypoint);
 
-  // Follow the leader's route `id` exactly (planner/route.hpp: cells[0] is where the robot stands
+  // Follow the leader's route `id` exactly (planner/grid/route.hpp: cells[0] is where the robot stands
   // when it starts), as far as index `release`; the objects under the robot are picked up at the
   // indices in `picks` and dropped at those in `drops`. Replaces a waypoint or an earlier route.
   // The robot drives the released part, then waits for release() to go on. It sets off at the

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "swarm/planner/grid.hpp"
+#include "swarm/planner/grid/grid.hpp"
 #include "swarm/record/render.hpp"
 
 namespace swarm::record {

@@ -24,7 +24,7 @@
 
 #include <optional>
 
-#include "swarm/planner/grid.hpp"
+#include "swarm/planner/grid/grid.hpp"
 #include "swarm/proto/run_record.pb.h"
 
 namespace swarm::record {

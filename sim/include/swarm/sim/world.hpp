@@ -2,7 +2,7 @@
 // ground-truth numbers a run is judged by. The simulator process is the only holder of it.
 //
 // Routes. A robot is given a route: the cell it stands on, then one cell per tick (the same cell
-// again = a wait; a neighbouring cell = a step, under the phase's motion model, planner/motion.hpp).
+// again = a wait; a neighbouring cell = a step, under the phase's motion model, planner/grid/motion.hpp).
 // Each tick every robot with a route performs its next action. A route whose first cell is not
 // where the robot stands when it arrives is rejected (the robot stops; its agent sees the state in
 // its next Sense). Where the robot is in its route is an index, never looked up by cell, so a route
@@ -20,7 +20,7 @@
 //   4. Every remaining mover moves: followers into cells vacated this tick, and rotations of three
 //      or more robots, move together.
 // Counted per robot: moves, waits, vertex and edge conflicts it took part in, blocked moves, wall
-// stops, the rotation between its consecutive moves (planner/turns.hpp); and per tick the conflict
+// stops, the rotation between its consecutive moves (planner/tours/turns.hpp); and per tick the conflict
 // events (one per cell, one per swapping pair).
 //
 //   World w(truth, robot_cells, {.beams = 360, .range_cells = 15});
@@ -33,11 +33,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "swarm/planner/coverage_tracker.hpp"
-#include "swarm/planner/grid.hpp"
-#include "swarm/planner/motion.hpp"
-#include "swarm/planner/route.hpp"
-#include "swarm/planner/tour.hpp"
+#include "swarm/planner/coverage/coverage_tracker.hpp"
+#include "swarm/planner/grid/grid.hpp"
+#include "swarm/planner/grid/motion.hpp"
+#include "swarm/planner/grid/route.hpp"
+#include "swarm/planner/tours/tour.hpp"
 #include "swarm/record/metrics.hpp"
 
 namespace swarm::sim {

@@ -35,7 +35,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "swarm/planner/grid.hpp"
+#include "swarm/planner/grid/grid.hpp"
 #include "swarm/planner/mapf/instance.hpp"
 
 namespace swarm::planner::mapf {

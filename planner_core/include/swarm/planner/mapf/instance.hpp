@@ -54,9 +54,9 @@
 #include <string>
 #include <vector>
 
-#include "swarm/planner/grid.hpp"
+#include "swarm/planner/grid/grid.hpp"
 #include "swarm/planner/mapf/graph.hpp"
-#include "swarm/planner/motion.hpp"
+#include "swarm/planner/grid/motion.hpp"
 
 namespace swarm::planner::mapf {
 

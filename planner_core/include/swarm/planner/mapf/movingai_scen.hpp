@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "swarm/planner/map_io.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 #include "swarm/planner/mapf/instance.hpp"
 
 namespace swarm::planner::mapf {

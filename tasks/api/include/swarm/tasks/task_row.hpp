@@ -25,7 +25,7 @@
 #include "swarm/app/role.hpp"
 #include "swarm/gcs/gcs_task.hpp"
 #include "swarm/leader/group_task.hpp"
-#include "swarm/planner/motion.hpp"
+#include "swarm/planner/grid/motion.hpp"
 #include "swarm/sim/phase_judge.hpp"
 
 namespace swarm::tasks {

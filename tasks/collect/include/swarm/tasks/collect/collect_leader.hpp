@@ -1,6 +1,6 @@
 // The leader's collection task (issue 10): its group's objects (a TaskOrder of object numbers,
 // tasks/collect/collect_gcs.hpp) are split among the living robots (each object to the nearest robot with
-// room left) and each robot gets a tour from the tour planner (planner/tour.hpp: type by type, the
+// room left) and each robot gets a tour from the tour planner (planner/tours/tour.hpp: type by type, the
 // distance + angle variant, each type's order searched exactly), driven as a route with its
 // pick-up and drop steps. From the robots' progress the leader knows what is picked up and
 // delivered. A member lost midway: what it had not delivered (what it carried lies beside it,

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "swarm/gcs/gcs_task.hpp"
-#include "swarm/planner/coverage_tracker.hpp"
+#include "swarm/planner/coverage/coverage_tracker.hpp"
 
 namespace swarm::gcs {
 

@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "swarm/leader/group_task.hpp"
-#include "swarm/planner/coverage_tracker.hpp"
-#include "swarm/planner/cover_routes.hpp"
+#include "swarm/planner/coverage/coverage_tracker.hpp"
+#include "swarm/planner/coverage/cover_routes.hpp"
 
 namespace swarm::leader {
 

@@ -1,5 +1,5 @@
 // The leader's exploration task (docs/papers.md section 1): at every planning round the GCS starts, it
-// plans the group's waypoints on the stale global map and the group map (planner/explore.hpp),
+// plans the group's waypoints on the stale global map and the group map (planner/explore/explore.hpp),
 // assigns them, and tells the GCS when the whole group is done with them.
 #pragma once
 
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "swarm/leader/group_task.hpp"
-#include "swarm/planner/explore.hpp"
+#include "swarm/planner/explore/explore.hpp"
 
 namespace swarm::leader {
 

@@ -1,0 +1,231 @@
+#include "swarm/planner/coverage/cover_routes.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+#include <queue>
+
+#include "swarm/planner/coverage/coverage.hpp"
+#include "swarm/planner/coverage/coverage_plan.hpp"
+#include "swarm/planner/coverage/group_k.hpp"
+#include "swarm/planner/grid/motion.hpp"
+#include "swarm/planner/coverage/plow.hpp"
+
+namespace swarm::planner {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Breadth-first search through Free cells (4-connected) not in `blocked` from `sources`: steps and
+// the previous cell per grid index (-1 = not reached / a source).
+struct Bfs {
+  std::vector<int> steps;
+  std::vector<int> parent;
+};
+
+Bfs bfs(const OccupancyGrid& map, const std::vector<Cell>& sources, const std::vector<std::uint8_t>* blocked = nullptr) {
+  Bfs b{std::vector<int>(map.size(), -1), std::vector<int>(map.size(), -1)};
+  std::vector<int> queue;
+  queue.reserve(map.size());
+  for (const Cell& s : sources) {
+    if (!map.in_bounds(s)) continue;
+    const int i = map.index(s);
+    if (b.steps[i] >= 0) continue;
+    b.steps[i] = 0;
+    queue.push_back(i);
+  }
+  const MotionModel four = MotionModel::four();
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const int ci = queue[head];
+    four.for_each_neighbour(map, map.cell_of(ci), [&](Cell n, double) {
+      const int ni = map.index(n);
+      if (b.steps[ni] >= 0 || (blocked != nullptr && (*blocked)[ni])) return;
+      b.steps[ni] = b.steps[ci] + 1;
+      b.parent[ni] = ci;
+      queue.push_back(ni);
+    });
+  }
+  return b;
+}
+
+// The path to `goal` in a BFS from one source, source first.
+std::vector<Cell> path_to(const OccupancyGrid& map, const Bfs& b, Cell goal) {
+  std::vector<Cell> out;
+  for (int i = map.index(goal); i >= 0; i = b.parent[i]) out.push_back(map.cell_of(i));
+  std::reverse(out.begin(), out.end());
+  return out;
+}
+
+// Appends `tail` to `route`, whose last cell is tail's first.
+void append(std::vector<Cell>& route, const std::vector<Cell>& tail) {
+  if (tail.empty()) return;
+  route.insert(route.end(), tail.begin() + (route.empty() ? 0 : 1), tail.end());
+}
+
+}  // namespace
+
+CoverRoutes divide_and_route(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells,
+                             const std::vector<Cell>& robots, const std::vector<double>& weights,
+                             const CoverRoutesConfig& config, const std::function<bool()>& stop) {
+  const auto t0 = Clock::now();
+  CoverRoutes out;
+  const std::size_t n = robots.size();
+  out.starts.assign(n, Cell{-1, -1});
+  // Each robot's start: its nearest cell of the set that no robot has taken yet, robots in id
+  // order (a robot on a set cell keeps it).
+  std::vector<std::uint8_t> taken(map.size(), 0);
+  std::vector<std::size_t> placed;
+  for (std::size_t r = 0; r < n; ++r) {
+    const Bfs b = bfs(map, {robots[r]});
+    int best = -1;
+    for (std::size_t i = 0; i < map.size(); ++i) {
+      if (!cells[i] || taken[i] || b.steps[i] < 0) continue;
+      if (best < 0 || b.steps[i] < b.steps[best]) best = static_cast<int>(i);
+    }
+    if (best < 0) continue;  // it can reach nothing of the set
+    taken[best] = 1;
+    out.starts[r] = map.cell_of(best);
+    placed.push_back(r);
+  }
+  out.routes.assign(n, {});
+  out.region_cells.assign(n, 0);
+  out.turns.assign(n, 0);
+  for (std::size_t r = 0; r < n; ++r) out.routes[r] = {robots[r]};
+  if (placed.empty()) {
+    out.seconds_division = since(t0);
+    return out;
+  }
+  DarpRequest req;
+  for (std::size_t r : placed) {
+    req.robots.push_back(out.starts[r]);
+    if (!weights.empty()) req.weights.push_back(weights[r]);
+  }
+  req.region = cells;
+  out.darp = divide_areas(map, req, config.darp, stop);
+  if (config.assign_orphans && out.darp.status != DarpStatus::BadInput) {
+    // One BFS from every robot at once: each orphan cell goes to the robot that reaches it first.
+    std::vector<int> owner(map.size(), -1);
+    std::vector<int> queue;
+    for (std::size_t k = 0; k < placed.size(); ++k) {
+      const int i = map.index(robots[placed[k]]);
+      if (owner[i] >= 0) continue;
+      owner[i] = static_cast<int>(k);
+      queue.push_back(i);
+    }
+    const MotionModel four = MotionModel::four();
+    for (std::size_t h = 0; h < queue.size(); ++h) {
+      four.for_each_neighbour(map, map.cell_of(queue[h]), [&](Cell c, double) {
+        const int j = map.index(c);
+        if (owner[j] >= 0) return;
+        owner[j] = owner[queue[h]];
+        queue.push_back(j);
+      });
+    }
+    for (std::size_t i = 0; i < map.size(); ++i) {
+      if (out.darp.assignment[i] != kUnreachable || owner[i] < 0) continue;
+      out.darp.assignment[i] = owner[i];
+      ++out.darp.cells[static_cast<std::size_t>(owner[i])];
+    }
+  }
+  out.seconds_division = since(t0);
+  if (!config.routes || out.darp.status == DarpStatus::BadInput) return out;
+
+  const auto t1 = Clock::now();
+  std::vector<Cell> current;
+  for (std::size_t r : placed) current.push_back(robots[r]);
+  const std::vector<CoveragePlan> stc = config.order == CoverOrder::Stc
+                                            ? plan_coverage(map, out.darp, current, config.stc)
+                                            : std::vector<CoveragePlan>{};
+  for (std::size_t k = 0; k < placed.size(); ++k) {
+    const std::size_t r = placed[k];
+    out.region_cells[r] = out.darp.cells[k];
+    std::vector<Cell> route;
+    if (config.order == CoverOrder::Stc) {
+      route = stc[k].path();
+    } else {
+      std::vector<std::uint8_t> region(map.size(), 0);
+      for (std::size_t i = 0; i < map.size(); ++i) region[i] = out.darp.assignment[i] == static_cast<int>(k);
+      route = config.order == CoverOrder::Plow ? plow(map, region, robots[r]).cells
+                                               : group_k(map, region, robots[r]).path.cells;
+    }
+    if (route.empty()) route = {robots[r]};
+    out.turns[r] = count_turns(route).quarter_turns();
+    out.routes[r] = std::move(route);
+  }
+  out.seconds_routes = since(t1);
+  return out;
+}
+
+std::vector<std::vector<Cell>> cover_leftovers(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells,
+                                               const std::vector<Cell>& from) {
+  std::vector<std::vector<Cell>> routes(from.size());
+  for (std::size_t r = 0; r < from.size(); ++r) routes[r] = {from[r]};
+  // The pieces of the set, largest first (ties: the piece with the lowest cell index).
+  std::vector<int> piece(map.size(), -1);
+  std::vector<std::vector<int>> pieces;
+  const MotionModel four = MotionModel::four();
+  for (std::size_t i = 0; i < map.size(); ++i) {
+    if (!cells[i] || piece[i] >= 0 || map.at(static_cast<int>(i)) != CellState::Free) continue;
+    std::vector<int> members{static_cast<int>(i)};
+    piece[i] = static_cast<int>(pieces.size());
+    for (std::size_t h = 0; h < members.size(); ++h) {
+      four.for_each_neighbour(map, map.cell_of(members[h]), [&](Cell c, double) {
+        const int j = map.index(c);
+        if (!cells[j] || piece[j] >= 0) return;
+        piece[j] = static_cast<int>(pieces.size());
+        members.push_back(j);
+      });
+    }
+    pieces.push_back(std::move(members));
+  }
+  std::vector<std::size_t> order(pieces.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return pieces[a].size() > pieces[b].size(); });
+  for (std::size_t p : order) {
+    // The robot whose route currently ends nearest the piece.
+    std::vector<Cell> piece_cells;
+    for (int i : pieces[p]) piece_cells.push_back(map.cell_of(i));
+    const Bfs b = bfs(map, piece_cells);
+    int best = -1;
+    for (std::size_t r = 0; r < routes.size(); ++r) {
+      const int d = b.steps[map.index(routes[r].back())];
+      if (d < 0) continue;
+      const int best_d = best < 0 ? -1 : b.steps[map.index(routes[best].back())];
+      if (best < 0 || d < best_d) best = static_cast<int>(r);
+    }
+    if (best < 0) continue;
+    std::vector<Cell>& route = routes[static_cast<std::size_t>(best)];
+    const Bfs way = bfs(map, {route.back()});
+    Cell entry = piece_cells.front();
+    for (const Cell& c : piece_cells) {
+      if (way.steps[map.index(c)] >= 0 && way.steps[map.index(c)] < way.steps[map.index(entry)]) entry = c;
+    }
+    append(route, path_to(map, way, entry));
+    OccupancyGrid region(map.width(), map.height(), map.resolution(), map.origin_x(), map.origin_y(),
+                         CellState::Occupied);
+    for (const Cell& c : piece_cells) region.set(c, CellState::Free);
+    append(route, spanning_tree_coverage(region, entry).cells);
+  }
+  return routes;
+}
+
+std::vector<Cell> detour(const OccupancyGrid& map, const std::vector<Cell>& route, std::size_t at,
+                         const std::vector<Cell>& blocked) {
+  if (at >= route.size()) return {};
+  std::vector<std::uint8_t> block(map.size(), 0);
+  for (const Cell& c : blocked) {
+    if (map.in_bounds(c) && c != route[at]) block[map.index(c)] = 1;
+  }
+  std::size_t target = at + 1;
+  while (target < route.size() && map.in_bounds(route[target]) && block[map.index(route[target])]) ++target;
+  if (target >= route.size()) return {};
+  const Bfs b = bfs(map, {route[at]}, &block);
+  if (b.steps[map.index(route[target])] < 0) return {};
+  std::vector<Cell> out = path_to(map, b, route[target]);
+  out.insert(out.end(), route.begin() + static_cast<std::ptrdiff_t>(target) + 1, route.end());
+  return out;
+}
+
+}  // namespace swarm::planner

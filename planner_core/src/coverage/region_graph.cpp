@@ -1,0 +1,83 @@
+#include "swarm/planner/coverage/region_graph.hpp"
+
+#include <cassert>
+
+namespace swarm::planner {
+
+RegionGraph RegionGraph::build(const OccupancyGrid& region) {
+  RegionGraph g;
+  g.width = region.width();
+  g.height = region.height();
+  g.compact.assign(region.size(), -1);
+  for (int i = 0; i < static_cast<int>(region.size()); ++i) {
+    if (region.at(i) != CellState::Free) continue;
+    g.compact[i] = static_cast<int>(g.cells.size());
+    g.cells.push_back(region.cell_of(i));
+  }
+  const MotionModel four = MotionModel::four();
+  g.next.assign(g.cells.size(), {-1, -1, -1, -1});
+  for (std::size_t i = 0; i < g.cells.size(); ++i) {
+    const Cell c = g.cells[i];
+    for (int k = 0; k < 4; ++k) {
+      const Cell n{c.x + kNeighbourDx[k], c.y + kNeighbourDy[k]};
+      if (four.check(region, c, n) == MoveCheck::Ok) g.next[i][k] = g.compact[region.index(n)];
+    }
+  }
+  return g;
+}
+
+std::vector<int> bfs_steps(const RegionGraph& graph, const std::vector<int>& sources,
+                           std::vector<int>* order) {
+  std::vector<int> dist(graph.cells.size(), -1);
+  std::vector<int> local;
+  std::vector<int>& queue = order != nullptr ? *order : local;
+  queue.clear();
+  queue.reserve(graph.cells.size());
+  for (int s : sources) {
+    assert(s >= 0 && s < graph.size());
+    if (dist[s] >= 0) continue;
+    dist[s] = 0;
+    queue.push_back(s);
+  }
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const int c = queue[head];
+    for (int n : graph.next[c]) {
+      if (n < 0 || dist[n] >= 0) continue;
+      dist[n] = dist[c] + 1;
+      queue.push_back(n);
+    }
+  }
+  return dist;
+}
+
+std::vector<int> components(const RegionGraph& graph, int& count) {
+  std::vector<int> label(graph.cells.size(), -1);
+  std::vector<int> queue;
+  count = 0;
+  for (int start = 0; start < graph.size(); ++start) {
+    if (label[start] >= 0) continue;
+    label[start] = count;
+    queue.assign(1, start);
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      for (int n : graph.next[queue[head]]) {
+        if (n < 0 || label[n] >= 0) continue;
+        label[n] = count;
+        queue.push_back(n);
+      }
+    }
+    ++count;
+  }
+  return label;
+}
+
+OccupancyGrid region_grid(const OccupancyGrid& map, const std::vector<std::uint8_t>& mask) {
+  assert(mask.empty() || mask.size() == map.size());
+  OccupancyGrid out(map.width(), map.height(), map.resolution(), map.origin_x(), map.origin_y(),
+                    CellState::Occupied);
+  for (int i = 0; i < static_cast<int>(map.size()); ++i) {
+    if (map.at(i) == CellState::Free && (mask.empty() || mask[i] != 0)) out.set(i, CellState::Free);
+  }
+  return out;
+}
+
+}  // namespace swarm::planner
