@@ -8,7 +8,6 @@
 
 #include "swarm/app/convert.hpp"
 #include "swarm/config/scenario.hpp"
-#include "swarm/config/task_config.hpp"
 #include "swarm/record/metrics.hpp"
 
 namespace swarm::sim {

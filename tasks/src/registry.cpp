@@ -14,12 +14,12 @@ const std::vector<TaskRow>& task_rows() {
 }
 
 const TaskRow& task_row(const Phase& phase) {
-  // A phase that names no task is exploration (config::mission_phases' default mission).
-  const Phase::TaskCase c = phase.task_case() == Phase::TASK_NOT_SET ? Phase::kExplore : phase.task_case();
+  // By name: config::task_name already says which task a phase that names none runs.
+  const std::string name = config::task_name(phase);
   for (const TaskRow& row : task_rows()) {
-    if (row.phase_case == c) return row;
+    if (row.name == name) return row;
   }
-  throw config::ConfigError("task '" + config::task_name(phase) + "' is not in this build's task registry");
+  throw config::ConfigError("task '" + name + "' is not in this build's task registry");
 }
 
 std::unique_ptr<gcs::GcsTask> gcs_task(const Phase& phase, const app::RoleSetup& setup, std::uint32_t index) {
