@@ -11,7 +11,7 @@ int main(int argc, char** argv) {
   CLI::App app{"swarm-gcs: ground control station (map fusion, planning rounds, metrics)"};
   app::add_role_flags(app, options, app::RoleKind::Gcs);
   return app::run_role(app, argc, argv, "gcs", [&]() -> int {
-    const app::RoleSetup setup = app::load_role(options, app::RoleKind::Gcs);
+    const app::RoleSetup setup = tasks::load_role(options, app::RoleKind::Gcs);
     comm::Participant participant(setup.dds);
     comm::LockstepAgent agent(participant, setup.topology, setup.links, setup.topology.gcs());
     gcs::GcsNode node(agent, setup, options.run_dir, gcs::Progress::parse(options.progress), tasks::gcs_task);

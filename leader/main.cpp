@@ -11,7 +11,7 @@ int main(int argc, char** argv) {
   CLI::App app{"swarm-leader: a group leader (a robot plus its group's exploration planner)"};
   app::add_role_flags(app, options, app::RoleKind::Leader);
   return app::run_role(app, argc, argv, "leader", [&]() -> int {
-    const app::RoleSetup setup = app::load_role(options, app::RoleKind::Leader);
+    const app::RoleSetup setup = tasks::load_role(options, app::RoleKind::Leader);
     comm::Participant participant(setup.dds);
     comm::LockstepAgent agent(participant, setup.topology, setup.links, setup.topology.leader(options.group));
     app::CandidateNode node(agent, setup, options.group, 0, tasks::group_task);

@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
   CLI::App app{"swarm-member: group member robots of a swarm run (one per --index)"};
   app::add_role_flags(app, options, app::RoleKind::Member);
   return app::run_role(app, argc, argv, "member", [&]() -> int {
-    const app::RoleSetup setup = app::load_role(options, app::RoleKind::Member);
+    const app::RoleSetup setup = tasks::load_role(options, app::RoleKind::Member);
     std::vector<std::unique_ptr<app::FaultInjector>> faults;
     std::string names;
     for (const int index : options.indices) {

@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   CLI::App app{"swarm-sim: the simulator (ground truth, motion, LiDAR) and clock of a swarm run"};
   app::add_role_flags(app, options, app::RoleKind::Sim);
   return app::run_role(app, argc, argv, "sim", [&]() -> int {
-    const app::RoleSetup setup = app::load_role(options, app::RoleKind::Sim);
+    const app::RoleSetup setup = tasks::load_role(options, app::RoleKind::Sim);
     comm::Participant participant(setup.dds);
     comm::LockstepClock clock(participant, setup.topology, setup.links);
     sim::SimNode node(clock, setup, tasks::sim_part);

@@ -17,6 +17,7 @@
 #include "experiment_runner.hpp"
 #include "run_command.hpp"
 #include "swarm/config/scenario.hpp"
+#include "swarm/tasks/registry.hpp"
 
 namespace swarm::tools {
 namespace {
@@ -194,8 +195,8 @@ int experiment_command(const ExperimentOptions& o, std::ostream& out, std::ostre
         RunOverrides ov;
         ov.map = map;
         apply_overrides(s, ov);
-        (void)cfg::resolve_world(s, fs::absolute(scenario_path).parent_path().string(),
-                                 scenario_path);
+        swarm::tasks::check_mission(
+            cfg::resolve_world(s, fs::absolute(scenario_path).parent_path().string(), scenario_path), scenario_path);
       }
     } catch (const cfg::ConfigError& e) {
       throw BadInput(e.what());

@@ -88,11 +88,11 @@ Change every_link_loss(double loss) {
   };
 }
 
-// Applies `f` to every phase of the mission that runs `task`.
-Change each_phase(swarm::scenario::Phase::TaskCase task, std::function<void(swarm::scenario::Phase&)> f) {
+// Applies `f` to every phase of the mission that runs task `task` (its registry name).
+Change each_phase(const std::string& task, std::function<void(swarm::scenario::Phase&)> f) {
   return [=](Scenario& s) {
     for (auto& ph : *s.mutable_mission()->mutable_phase()) {
-      if (ph.task_case() == task) f(ph);
+      if (config::task_name(ph) == task) f(ph);
     }
   };
 }
@@ -108,9 +108,9 @@ Spec cover_spec() {
   s.task = "cover";
   s.phase = "cover";
   s.scenario_file = "cover-given.pbtxt";
-  s.variants = {{"hierarchical", each_phase(swarm::scenario::Phase::kCover, [](auto& p) { p.mutable_cover()->set_hierarchical(true); }),
+  s.variants = {{"hierarchical", each_phase("cover", [](auto& p) { p.mutable_cover()->set_hierarchical(true); }),
                  {0, 114, 178}},
-                {"flat", each_phase(swarm::scenario::Phase::kCover, [](auto& p) { p.mutable_cover()->set_hierarchical(false); }),
+                {"flat", each_phase("cover", [](auto& p) { p.mutable_cover()->set_hierarchical(false); }),
                  {213, 94, 0}}};
   Sweep robots{"robots", "Robots (groups of 3)", "robots", {}};
   for (std::uint32_t g : {1u, 2u, 3u, 4u}) robots.points.push_back({std::to_string(3 * g), team(g, 3)});
@@ -135,7 +135,7 @@ Spec mapf_spec() {
   s.phase = "mapf";
   s.scenario_file = "mapf-small.pbtxt";
   const auto mapf = [](swarm::scenario::MapfSolver k, swarm::scenario::MapfExecution e) {
-    return each_phase(swarm::scenario::Phase::kMapf, [k, e](auto& p) {
+    return each_phase("mapf", [k, e](auto& p) {
       p.mutable_mapf()->set_solver(k);
       p.mutable_mapf()->set_execution(e);
     });

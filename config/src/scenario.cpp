@@ -1,5 +1,6 @@
 // Scenario text files: parsing with positioned errors, validation, printing, mode names.
 #include "swarm/config/scenario.hpp"
+#include "swarm/config/problems.hpp"
 #include "swarm/config/task_config.hpp"
 
 #include <google/protobuf/descriptor.h>
@@ -105,55 +106,6 @@ std::string explain(const std::string& message) {
   }
   return message;
 }
-
-// Shortest text that reads back as the same double ("0.2", "1e-09", "nan").
-std::string num(double v) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
-// Collects one line per problem: "SOURCE: field PATH: must be ... (got ...)".
-class Problems {
- public:
-  explicit Problems(const std::string& source) : source_(source) {}
-
-  void add(const std::string& field, const std::string& expected, const std::string& got) {
-    lines_.push_back(source_ + ": field " + field + ": must " + expected + " (got " + got + ")");
-  }
-  void at_least(const std::string& field, std::uint64_t min, std::uint64_t v) {
-    if (v < min) add(field, "be >= " + std::to_string(min), std::to_string(v));
-  }
-  void in_range(const std::string& field, std::uint64_t min, std::uint64_t max, std::uint64_t v) {
-    if (v < min || v > max) {
-      add(field, "be in [" + std::to_string(min) + ", " + std::to_string(max) + "]",
-          std::to_string(v));
-    }
-  }
-  void positive(const std::string& field, double v) {
-    if (!(std::isfinite(v) && v > 0)) add(field, "be a finite number > 0", num(v));
-  }
-  void non_negative(const std::string& field, double v) {
-    if (!(std::isfinite(v) && v >= 0)) add(field, "be a finite number >= 0", num(v));
-  }
-  void finite(const std::string& field, double v) {
-    if (!std::isfinite(v)) add(field, "be a finite number", num(v));
-  }
-  void probability(const std::string& field, double v) {
-    if (!(v >= 0 && v < 1)) add(field, "be a probability in [0, 1)", num(v));
-  }
-
-  void throw_if_any() const {
-    if (lines_.empty()) return;
-    std::string all;
-    for (const std::string& l : lines_) all += (all.empty() ? "" : "\n") + l;
-    throw ConfigError(all);
-  }
-
- private:
-  std::string source_;
-  std::vector<std::string> lines_;
-};
 
 // More robots than this is no run this runtime can host (and keeps robot ids far from overflow).
 constexpr std::uint64_t kMaxRobots = 10000;
@@ -438,54 +390,11 @@ void validate(const Scenario& s, const std::string& source) {
 
   for (int i = 0; i < s.faults_size(); ++i) validate_fault(p, s, i);
 
+  // A phase's own settings are its task's to check (its registry row's `check`,
+  // tasks::check_mission), once the map is known.
   for (int i = 0; i < s.mission().phase_size(); ++i) {
-    const auto& ph = s.mission().phase(i);
-    const std::string field = "mission.phase[" + std::to_string(i) + "]";
-    switch (ph.task_case()) {
-      case swarm::scenario::Phase::TASK_NOT_SET:
-        p.add(field, "name its task: " + task_list_with_braces(), "no task");
-        break;
-      case swarm::scenario::Phase::kCover:
-        p.at_least(field + ".cover.darp_max_iterations", 1, ph.cover().darp_max_iterations());
-        p.positive(field + ".cover.darp_time_limit_s", ph.cover().darp_time_limit_s());
-        p.at_least(field + ".cover.stall_ticks", 1, ph.cover().stall_ticks());
-        break;
-      case swarm::scenario::Phase::kMapf:
-        if (ph.mapf().w() < 1.0) p.add(field + ".mapf.w", "be at least 1", num(ph.mapf().w()));
-        p.positive(field + ".mapf.time_limit_s", ph.mapf().time_limit_s());
-        if (ph.mapf().execution() == swarm::scenario::MAPF_EXECUTE_TIMED && !delivery_ticks_bounded(s)) {
-          // A lost and re-sent (or queued) route would set off after its start tick, behind the
-          // others: robots meet and stay stuck (measured: 586 conflict events, 4 of 6 robots stuck).
-          p.add(field + ".mapf.execution",
-                "be MAPF_EXECUTE_ADG or MAPF_EXECUTE_AUTO when a link loses messages, has a bandwidth cap or the run "
-                "is in real time (a plan driven by its timing needs every route on time)",
-                "MAPF_EXECUTE_TIMED");
-        }
-        if (ph.mapf().goals_size() > 0 && ph.mapf().has_scen()) {
-          p.add(field + ".mapf", "give goals or scen, not both", "both");
-        }
-        if (ph.mapf().goals_size() > 0 && static_cast<std::uint64_t>(ph.mapf().goals_size()) != robots) {
-          p.add(field + ".mapf.goals", "give one goal per robot (" + std::to_string(robots) + ")",
-                std::to_string(ph.mapf().goals_size()));
-        }
-        break;
-      case swarm::scenario::Phase::kCollect: {
-        const auto& c = ph.collect();
-        p.at_least(field + ".collect.types", 1, c.types());
-        for (int o = 0; o < c.objects_size(); ++o) {
-          if (c.objects(o).type() >= c.types()) {
-            p.add(field + ".collect.objects[" + std::to_string(o) + "].type",
-                  "be below collect.types (" + std::to_string(c.types()) + ")", std::to_string(c.objects(o).type()));
-          }
-        }
-        if (c.destinations_size() > 0 && static_cast<std::uint32_t>(c.destinations_size()) != c.types()) {
-          p.add(field + ".collect.destinations", "give one destination per type (" + std::to_string(c.types()) + ")",
-                std::to_string(c.destinations_size()));
-        }
-        break;
-      }
-      case swarm::scenario::Phase::kExplore:
-        break;
+    if (s.mission().phase(i).task_case() == swarm::scenario::Phase::TASK_NOT_SET) {
+      p.add("mission.phase[" + std::to_string(i) + "]", "name its task: " + task_list_with_braces(), "no task");
     }
   }
 

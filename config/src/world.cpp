@@ -154,6 +154,11 @@ std::string resolve_map_path(const std::string& map, const std::string& scenario
   return p.lexically_normal().string();
 }
 
+std::string MapFrame::extent_text() const {
+  return "x " + span(origin_x, origin_x + width * resolution) + " m and y " + span(origin_y, origin_y + height * resolution) +
+         " m";
+}
+
 void resolve_phases(World& w, const std::string& source) {
   const OccupancyGrid& g = w.truth;
   w.frame = {g.width(), g.height(), g.resolution(), g.origin_x(), g.origin_y()};

@@ -22,6 +22,22 @@ const TaskRow& task_row(const Phase& phase) {
   throw config::ConfigError("task '" + name + "' is not in this build's task registry");
 }
 
+void check_mission(const config::World& world, const std::string& source) {
+  config::Problems problems(source);
+  const auto phases = config::mission_phases(world.scenario);
+  for (std::size_t i = 0; i < phases.size(); ++i) {
+    const TaskRow& row = task_row(phases[i]);
+    if (row.check) row.check(phases[i], world, "mission.phase[" + std::to_string(i) + "]." + row.name, problems);
+  }
+  problems.throw_if_any();
+}
+
+app::RoleSetup load_role(const app::RoleOptions& options, app::RoleKind kind) {
+  app::RoleSetup setup = app::load_role(options, kind);
+  check_mission(setup.world, options.scenario_path);
+  return setup;
+}
+
 std::unique_ptr<gcs::GcsTask> gcs_task(const Phase& phase, const app::RoleSetup& setup, std::uint32_t index) {
   return task_row(phase).gcs(phase, setup, index);
 }

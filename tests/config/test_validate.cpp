@@ -119,19 +119,7 @@ INSTANTIATE_TEST_SUITE_P(
                    "DDS participant lease) (got 30)"},
         Impossible{"faults { agent: \"member-0-2\" freeze_at_tick: 9 }",
                    "t.pbtxt: field faults[0].freeze_seconds: must be more than 0 and less than 30 (the "
-                   "DDS participant lease) (got 0)"},
-        // A plan driven by its timing needs every route on time: a re-sent one would set off late.
-        Impossible{"links { member_leader { loss: 0.2 } } mission { phase { mapf { execution: MAPF_EXECUTE_TIMED } } }",
-                   "t.pbtxt: field mission.phase[0].mapf.execution: must be MAPF_EXECUTE_ADG or MAPF_EXECUTE_AUTO "
-                   "when a link loses messages, has a bandwidth cap or the run is in real time (a plan driven by its "
-                   "timing needs every route on time) (got MAPF_EXECUTE_TIMED)"}));
-
-// Delay and jitter are known in advance: the start tick of a timed plan allows for them.
-TEST(Validate, ATimedPlanAcceptsDelayAndJitter) {
-  EXPECT_EQ(validate_error("links { member_leader { delay_ticks: 3 jitter_ticks: 2 } } "
-                           "mission { phase { mapf { execution: MAPF_EXECUTE_TIMED } } }"),
-            "(valid)");
-}
+                   "DDS participant lease) (got 0)"}));
 
 TEST(Validate, ListsEveryProblemOnItsOwnLine) {
   EXPECT_EQ(validate_error("groups: 0 explore { replan_threshold_steps: 0 }"),

@@ -65,6 +65,20 @@ TaskRow collect_row() {
   row.judge = [](const Phase&, const app::RoleSetup& setup, std::uint32_t index) {
     return std::make_unique<CollectJudge>(setup.world.collect.at(index));
   };
+  row.check = [](const Phase& phase, const config::World&, const std::string& field, config::Problems& p) {
+    const auto& c = phase.collect();
+    p.at_least(field + ".types", 1, c.types());
+    for (int o = 0; o < c.objects_size(); ++o) {
+      if (c.objects(o).type() >= c.types()) {
+        p.add(field + ".objects[" + std::to_string(o) + "].type", "be below collect.types (" + std::to_string(c.types()) + ")",
+              std::to_string(c.objects(o).type()));
+      }
+    }
+    if (c.destinations_size() > 0 && static_cast<std::uint32_t>(c.destinations_size()) != c.types()) {
+      p.add(field + ".destinations", "give one destination per type (" + std::to_string(c.types()) + ")",
+            std::to_string(c.destinations_size()));
+    }
+  };
   return row;
 }
 

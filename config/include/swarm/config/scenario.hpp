@@ -58,7 +58,8 @@ class ConfigError : public std::runtime_error {
 
 // Throws ConfigError listing every impossible value, one line each, e.g.
 //   "scenarios/x.pbtxt: field explore.replan_threshold_steps: must be >= 1 (got 0)"
-// Checks only what needs no map; resolve_world checks the rest.
+// Checks only what needs no map; resolve_world checks the rest. A phase's own settings are its
+// task's to check (tasks::check_mission, each registry row's `check`).
 void validate(const swarm::scenario::Scenario& scenario, const std::string& source);
 
 // Protobuf text format of every set field (unset fields keep their defaults when read back):
@@ -131,6 +132,12 @@ struct MapFrame {
   std::size_t cells() const { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
   // A grid of this frame with every cell Unknown: where a role's own map starts.
   swarm::planner::OccupancyGrid unknown() const { return {width, height, resolution, origin_x, origin_y}; }
+  // Does the point (metres in the map frame) lie on the map?
+  bool contains(double x, double y) const {
+    return x >= origin_x && y >= origin_y && x < origin_x + width * resolution && y < origin_y + height * resolution;
+  }
+  // What the map spans, for messages: "x [0.00, 8.00) m and y [0.00, 8.00) m".
+  std::string extent_text() const;
 };
 
 // Everything a run needs that follows from the scenario and its map. Only the simulator (and

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "swarm/sim/sim_node.hpp"
@@ -18,6 +19,16 @@ namespace swarm::tasks {
 [[nodiscard]] const std::vector<TaskRow>& task_rows();
 // The row of the phase's task; throws config::ConfigError for a phase that names no known task.
 [[nodiscard]] const TaskRow& task_row(const Phase& phase);
+
+// Checks every phase's settings with its row's `check` against the world it will run in (the map's
+// frame, the start cells); throws config::ConfigError with every problem, one per line, each
+// "SOURCE: field mission.phase[i].TASK...: must ... (got ...)". The launcher calls it before it
+// starts a process, and every role's process after it loads its scenario.
+void check_mission(const config::World& world, const std::string& source);
+
+// A role's set-up (app::load_role) whose mission passed check_mission: what every role's process
+// loads.
+[[nodiscard]] app::RoleSetup load_role(const app::RoleOptions& options, app::RoleKind kind);
 
 // The parts of phase `index` of the mission (the row's factories).
 [[nodiscard]] std::unique_ptr<gcs::GcsTask> gcs_task(const Phase& phase, const app::RoleSetup& setup,

@@ -7,14 +7,16 @@
 //   gcs         its GCS part (gcs/gcs_task.hpp: the contract), one per phase
 //   leader      its leader part (leader/group_task.hpp), one per phase and group
 //   judge       its ground-truth judge in the simulator (sim/phase_judge.hpp), one per phase
+//   check       its settings' checks at load (optional): each impossible value one line of
+//               `problems`, named from `field` ("mission.phase[2].mapf"); the run does not start
 //
 // Adding a task:
 //   1. its settings message and a field in Phase's oneof, in idl/scenario.proto;
 //   2. tasks/<name>/: its planner calls, the three parts, and `TaskRow <name>_row()`;
 //   3. that row in tasks/src/registry.cpp and the folder in tasks/CMakeLists.txt.
 // The lockstep protocol, link emulation, faults, traffic accounting, the CLI's --mission and the
-// phase machine do not change. Settings checks that need the map (goals, objects) are made at
-// load, in config (config::resolve_phases).
+// phase machine do not change. Settings are checked at load by the row's `check`
+// (tasks::check_mission, before any process starts).
 #pragma once
 
 #include <cstdint>
@@ -23,6 +25,7 @@
 #include <string>
 
 #include "swarm/app/role.hpp"
+#include "swarm/config/problems.hpp"
 #include "swarm/gcs/gcs_task.hpp"
 #include "swarm/leader/group_task.hpp"
 #include "swarm/planner/grid/motion.hpp"
@@ -41,6 +44,7 @@ struct TaskRow {
                                                    std::uint32_t index)>
       leader;
   std::function<std::unique_ptr<sim::PhaseJudge>(const Phase&, const app::RoleSetup&, std::uint32_t index)> judge;
+  std::function<void(const Phase&, const config::World&, const std::string& field, config::Problems& problems)> check;
 };
 
 }  // namespace swarm::tasks

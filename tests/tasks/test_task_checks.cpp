@@ -1,0 +1,53 @@
+// tasks::check_mission: each task's row checks its phase's settings at load, and every impossible
+// value is one line naming its field, what was expected and what was given.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "swarm/config/scenario.hpp"
+#include "swarm/tasks/registry.hpp"
+#include "swarm_test/ascii_grid.hpp"
+#include "swarm_test/fake_swarm.hpp"
+
+namespace swarm::tasks {
+namespace {
+
+std::string check_error(const std::string& text) {
+  const auto truth = swarm::test::grid_from(
+      {"############", "#..........#", "#..........#", "#..........#", "#..........#", "############"});
+  const app::RoleSetup setup =
+      swarm::test::setup_for(truth, {5, 2}, config::parse_scenario_text("groups: 1 robots_per_group: 2 " + text, "t"));
+  try {
+    check_mission(setup.world, "t.pbtxt");
+  } catch (const config::ConfigError& e) {
+    return e.what();
+  }
+  return "(valid)";
+}
+
+TEST(TaskChecks, EachTaskChecksItsOwnSettings) {
+  EXPECT_EQ(check_error("mission { phase { cover { stall_ticks: 0 } } }"),
+            "t.pbtxt: field mission.phase[0].cover.stall_ticks: must be >= 1 (got 0)");
+  EXPECT_EQ(check_error("mission { phase { explore {} } phase { mapf { w: 0.5 time_limit_s: 0 } } }"),
+            "t.pbtxt: field mission.phase[1].mapf.w: must be at least 1 (got 0.5)\n"
+            "t.pbtxt: field mission.phase[1].mapf.time_limit_s: must be a finite number > 0 (got 0)");
+  EXPECT_EQ(check_error("mission { phase { collect { types: 2 objects { at { x: 0.3 y: 0.3 } type: 2 } } } }"),
+            "t.pbtxt: field mission.phase[0].collect.objects[0].type: must be below collect.types (2) (got 2)");
+  EXPECT_EQ(check_error("mission { phase { explore {} } phase { cover {} } phase { mapf {} } phase { collect {} } }"),
+            "(valid)");
+}
+
+// A plan driven by its timing needs every route on time: a re-sent one would set off late.
+TEST(TaskChecks, ATimedPlanNeedsBoundedDelivery) {
+  EXPECT_EQ(check_error("links { member_leader { loss: 0.2 } } mission { phase { mapf { execution: MAPF_EXECUTE_TIMED } } }"),
+            "t.pbtxt: field mission.phase[0].mapf.execution: must be MAPF_EXECUTE_ADG or MAPF_EXECUTE_AUTO "
+            "when a link loses messages, has a bandwidth cap or the run is in real time (a plan driven by its "
+            "timing needs every route on time) (got MAPF_EXECUTE_TIMED)");
+  // Delay and jitter are known in advance: the start tick of a timed plan allows for them.
+  EXPECT_EQ(check_error("links { member_leader { delay_ticks: 3 jitter_ticks: 2 } } "
+                        "mission { phase { mapf { execution: MAPF_EXECUTE_TIMED } } }"),
+            "(valid)");
+}
+
+}  // namespace
+}  // namespace swarm::tasks
