@@ -84,6 +84,7 @@ nlohmann::json SimNode::judge_of(const PhaseLog& p, record::MotionNumbers& motio
   facts.motion = motion = motion_since(p.counts_at_start, p.events_at_start);
   facts.diagonal_moves = world_.diagonal_moves() - p.diagonals_at_start;
   facts.steps_to_99 = steps_to_99_;
+  facts.alive = alive_;
   return p.judge_part->judge(world_, facts);
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <utility>
 
 #include "swarm/app/convert.hpp"
 #include "swarm/comm/link.hpp"
@@ -16,8 +17,8 @@ namespace swarm::gcs {
 using planner::Cell;
 namespace task = comm::task;
 
-MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given)
-    : config_(config), phase_(phase), map_given_(map_given) {}
+MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, GoalPicker goals)
+    : config_(config), phase_(phase), map_given_(map_given), pick_goals_(std::move(goals)) {}
 
 std::vector<Cell> MapfGcsTask::random_goals(const GcsContext& ctx) const {
   // A distinct free cell per robot, reachable from where it stands, drawn from the run's seed.
@@ -44,13 +45,18 @@ std::vector<Cell> MapfGcsTask::random_goals(const GcsContext& ctx) const {
 void MapfGcsTask::start(GcsContext& ctx) {
   known_ = map_given_ ? ctx.setup.given_map : ctx.mission.fused();
   start_tick_ = ctx.tick();
-  goals_ = ctx.setup.world.mapf_goals.at(phase_);
-  if (goals_.empty()) goals_ = random_goals(ctx);
+  if (!pick_goals_) {
+    goals_ = ctx.setup.world.mapf_goals.at(phase_);
+    if (goals_.empty()) goals_ = random_goals(ctx);
+  }
   const auto groups = static_cast<std::size_t>(ctx.setup.topology.groups());
   group_in_plan_.assign(groups, false);
   group_done_.assign(groups, false);
   group_held_.assign(groups, false);
-  plan(ctx, "start");
+  // A phase after another: its routes may still be driving, so the leaders first stop every robot
+  // (tasks/mapf/mapf_leader.hpp) and the plan is made once every group reports its robots standing.
+  settling_ = phase_ > 0;
+  if (!settling_) plan(ctx, "start");
 }
 
 void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
@@ -60,9 +66,18 @@ void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
   planned_.clear();
   planner::mapf::Instance in;
   in.map = known_;
+  std::vector<int> may_move;
   for (int r = 0; r < t.robots(); ++r) {
     const bool led = ctx.alive(ctx.leader_of(t.group_of(static_cast<comm::AgentId>(r))));
-    if (ctx.alive(r) && led && goals_[static_cast<std::size_t>(r)].x >= 0) {
+    if (ctx.alive(r) && led) {
+      may_move.push_back(r);
+    } else {
+      in.map.set(ctx.cell_of(r), planner::CellState::Occupied);
+    }
+  }
+  if (pick_goals_) goals_ = pick_goals_(ctx, in.map, may_move);
+  for (const int r : may_move) {
+    if (goals_[static_cast<std::size_t>(r)].x >= 0) {
       planned_.push_back(r);
       in.starts.push_back(ctx.cell_of(r));
       in.goals.push_back(goals_[static_cast<std::size_t>(r)]);
@@ -189,6 +204,14 @@ void MapfGcsTask::on_report(const msgs::TaskReport& r, GcsContext&) {
 
 void MapfGcsTask::step(GcsContext& ctx) {
   const comm::Topology& t = ctx.setup.topology;
+  if (settling_) {
+    for (int g = 0; g < t.groups(); ++g) {
+      if (ctx.alive(ctx.leader_of(g)) && !group_held_[static_cast<std::size_t>(g)]) return;
+    }
+    settling_ = false;
+    plan(ctx, "start");
+    return;
+  }
   if (!relay_.empty()) {
     std::vector<std::int32_t> values{static_cast<std::int32_t>(seq_)};
     values.insert(values.end(), relay_.begin(), relay_.end());
@@ -231,7 +254,7 @@ void MapfGcsTask::step(GcsContext& ctx) {
 ProgressLine MapfGcsTask::progress(const GcsContext&) const {
   char detail[96];
   std::snprintf(detail, sizeof detail, "at goal %d/%zu  plan %u%s", arrived_, planned_.size(), seq_,
-                failed_ ? " (failed)" : holding_ ? " (holding)" : "");
+                failed_ ? " (failed)" : holding_ ? " (holding)" : settling_ ? " (stopping the robots)" : "");
   return {"arrived", planned_.empty() ? 0.0 : static_cast<double>(arrived_) / static_cast<double>(planned_.size()),
           detail};
 }

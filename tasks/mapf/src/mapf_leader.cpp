@@ -14,9 +14,16 @@ namespace task = comm::task;
 MapfGroupTask::MapfGroupTask(const swarm::scenario::Mapf& config, int group)
     : timed_(config.execution() == swarm::scenario::MAPF_EXECUTE_TIMED), group_(group) {}
 
-void MapfGroupTask::start(GroupContext&) {
+void MapfGroupTask::start(GroupContext& ctx) {
   have_plan_ = false;
   holding_ = false;
+  settling_.clear();
+  settled_reported_ = ctx.phase == 0;  // the first phase starts with every robot standing
+  if (settled_reported_) return;
+  for (const int i : ctx.living()) {
+    msgs::Route stop;  // empty: stop where it stands
+    settling_.emplace_back(i, ctx.out.route(i, stop));
+  }
 }
 
 void MapfGroupTask::note(int k) {
@@ -120,6 +127,11 @@ void MapfGroupTask::stop_own_robots(GroupContext& ctx) {
 }
 
 void MapfGroupTask::on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) {
+  if (!settling_.empty()) {
+    std::erase_if(settling_, [&](const std::pair<int, std::uint32_t>& s) {
+      return s.first == index && s.second == p.id && p.state == planner::RouteState::Stopped;
+    });
+  }
   if (!have_plan_) return;
   if (!stopping_.empty() || stopped_all_) {
     std::erase_if(stopping_, [&](int k) {
@@ -181,6 +193,17 @@ void MapfGroupTask::step(GroupContext& ctx) {
     // at one tick, stops them all together; by the graph they may stop at once (the others wait).
     if (have_plan_ && (!timed_ || holding_)) stop_own_robots(ctx);
   }
+  if (!settled_reported_) {
+    // A robot lost before its stop was confirmed stands still anyway.
+    std::erase_if(settling_, [&](const std::pair<int, std::uint32_t>& s) { return !ctx.alive[static_cast<std::size_t>(s.first)]; });
+    if (settling_.empty()) {
+      msgs::TaskReport r;
+      r.state(task::kHeld);
+      r.values({0});
+      ctx.out.report(r);
+      settled_reported_ = true;
+    }
+  }
   if (!have_plan_) return;
   if (!stopping_.empty()) {  // a robot lost before its stop was confirmed stands still anyway
     std::erase_if(stopping_, [&](int k) { return !ctx.alive[static_cast<std::size_t>(index_of_[static_cast<std::size_t>(k)])]; });
@@ -216,7 +239,10 @@ void MapfGroupTask::step(GroupContext& ctx) {
 
 void MapfGroupTask::gcs_back(GroupContext&) {
   // Every robot's progress and release, and the group's done or held, again.
-  if (!have_plan_) return;
+  if (!have_plan_) {
+    if (settling_.empty()) settled_reported_ = false;  // that the group stands, again
+    return;
+  }
   for (int k : own_) note(k);
   reported_done_ = reported_held_ = false;
 }

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -28,6 +29,7 @@ struct PhaseFacts {
   record::MotionNumbers motion;                  // since the phase began
   std::uint64_t diagonal_moves = 0;              // since the phase began
   std::optional<std::uint32_t> steps_to_99;      // the run's: the tick 99 % of the map was explored
+  std::vector<bool> alive;                       // per robot id, when judged
 };
 
 class PhaseJudge {

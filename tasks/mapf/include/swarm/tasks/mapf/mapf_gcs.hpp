@@ -27,6 +27,9 @@
 //     early would run into one that has not left. The GCS knows every robot's progress (the
 //     leaders' reports), so it names the rotations that may go, with a start tick late enough for
 //     the order to reach every leader and its route every member (configured delays and jitter).
+// A phase after another starts with the leaders stopping every robot (the last phase's routes may
+// still be driving): TaskReport kHeld with values = [0] says a group's robots all stand, and the
+// first plan is made from where they stand once every group with a living leader has said so.
 // A planned robot lost midway, or a group's leader replaced by its standby: the GCS holds the
 // plan, waits until every group reports its robots still, and plans again from where the living
 // robots stand (seq s + 1).
@@ -35,6 +38,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,7 +50,14 @@ namespace swarm::gcs {
 
 class MapfGcsTask : public GcsTask {
  public:
-  MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given);
+  // Where the robots go: called at every plan (the phase's start, and again after a loss) with the
+  // map the plan is made on (the known map, every robot not planned for standing on its cell as an
+  // obstacle) and the robots that may be planned for (living, in a led group); returns a goal per
+  // robot id, {-1, -1} for a robot that is not to move. Absent: the phase's goals, or random ones.
+  using GoalPicker = std::function<std::vector<planner::Cell>(const GcsContext& ctx, const planner::OccupancyGrid& map,
+                                                              const std::vector<int>& robots)>;
+
+  MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, GoalPicker goals = {});
   void start(GcsContext& ctx) override;
   void step(GcsContext& ctx) override;
   [[nodiscard]] bool complete() const override { return complete_; }
@@ -56,6 +67,9 @@ class MapfGcsTask : public GcsTask {
   [[nodiscard]] ProgressLine progress(const GcsContext& ctx) const override;
   void on_report(const msgs::TaskReport& r, GcsContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
+  // The goal of every robot id in the current plan ({-1, -1}: none).
+  [[nodiscard]] const std::vector<planner::Cell>& goals() const { return goals_; }
+  [[nodiscard]] const std::vector<int>& planned() const { return planned_; }
 
  private:
   // Plans for the living robots (falling back to LaCAM when the configured solver times out) and
@@ -74,12 +88,14 @@ class MapfGcsTask : public GcsTask {
   swarm::scenario::Mapf config_;
   std::uint32_t phase_;
   bool map_given_;
+  GoalPicker pick_goals_;
   planner::OccupancyGrid known_;
   std::vector<planner::Cell> goals_;  // per robot id
   std::vector<int> planned_;          // robot ids in the current plan
   std::vector<bool> group_in_plan_, group_done_, group_held_;
   std::uint32_t seq_ = 0;
   bool holding_ = false;
+  bool settling_ = false;  // waiting for every group's robots to stand before the first plan
   bool failed_ = false;  // the last plan could not be made: nothing to drive
   std::string failure_;  // why
   std::vector<int> plan_leaders_;  // per group: its leader when the current plan was made

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "swarm/leader/group_task.hpp"
@@ -75,6 +76,11 @@ class MapfGroupTask : public GroupTask {
   void stop_own_robots(GroupContext& ctx);
   bool reported_done_ = false;
   bool reported_held_ = false;
+  // Settling (a phase after another, whose routes may still be driving): every living robot of the
+  // group is stopped where it stands before the GCS plans; (group index, stop's route id) of those
+  // not yet confirmed, and whether the GCS has been told they all stand (kHeld of plan 0).
+  std::vector<std::pair<int, std::uint32_t>> settling_;
+  bool settled_reported_ = true;
   std::uint64_t releases_sent_ = 0;
   std::uint64_t plans_taken_ = 0;
 };
