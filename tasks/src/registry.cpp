@@ -5,11 +5,12 @@
 #include "swarm/tasks/cover/cover_row.hpp"
 #include "swarm/tasks/explore/explore_row.hpp"
 #include "swarm/tasks/mapf/mapf_row.hpp"
+#include "swarm/tasks/rendezvous/rendezvous_row.hpp"
 
 namespace swarm::tasks {
 
 const std::vector<TaskRow>& task_rows() {
-  static const std::vector<TaskRow> rows = {explore_row(), cover_row(), mapf_row(), collect_row()};
+  static const std::vector<TaskRow> rows = {explore_row(), cover_row(), mapf_row(), collect_row(), rendezvous_row()};
   return rows;
 }
 

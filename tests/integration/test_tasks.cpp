@@ -171,6 +171,32 @@ TEST(Tasks, MapfWithAnInfeasiblePlanEndsTheMissionAtOnce) {
   EXPECT_NE(r.output.find("INCOMPLETE: phase mapf given up: no plan for 2 robots"), std::string::npos) << r.output;
 }
 
+// The robots explore, then gather around a point: every one on a cell of the tightest cluster the
+// true map allows there, judged by the simulator, with no conflict.
+TEST(Tasks, ExploreThenRendezvousGathersEveryRobotAroundThePoint) {
+  const auto m = run_task("rendezvous", "small.pbtxt",
+                          "mission { phase { explore {} } phase { rendezvous { point { x: 6.1 y: 1.1 } } } }",
+                          "--max-ticks 3000");
+  const auto& p = phase_named(m, "rendezvous");
+  EXPECT_EQ(p["task"]["robots_alive"], 4);
+  EXPECT_EQ(p["task"]["on_gathering_cells"], 4);
+  EXPECT_TRUE(p["task"]["packed"].get<bool>()) << p;
+  EXPECT_EQ(p["task"]["conflicts"], 0);
+  EXPECT_EQ(p["motion"]["blocked_moves"], 0);
+}
+
+// A member killed on the way home: the GCS gathers the three others and reports it lost.
+TEST(Tasks, RendezvousWithARobotLostOnTheWayGathersTheOthers) {
+  const auto m = run_task("rendezvous_kill", "small.pbtxt", "",
+                          "--mission mapf,rendezvous --kill member-1-1@40 --max-ticks 3000");
+  const auto& p = phase_named(m, "rendezvous");
+  EXPECT_EQ(p["task"]["robots_lost"], nlohmann::json::array({3}));
+  EXPECT_EQ(p["task"]["robots_alive"], 3);
+  EXPECT_EQ(p["task"]["on_gathering_cells"], 3);
+  EXPECT_TRUE(p["task"]["packed"].get<bool>()) << p;
+  EXPECT_EQ(p["task"]["conflicts"], 0);
+}
+
 // A leader killed mid-collection: its standby resumes the group from the GCS's record of what the
 // old leader reported and from what the members hold; the simulator counts every object delivered.
 TEST(Tasks, CollectWithALeaderKilledMidwayStillDeliversEveryObject) {

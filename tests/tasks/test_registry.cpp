@@ -17,7 +17,7 @@ namespace {
 
 TEST(TaskRegistry, OneRowPerTaskOfTheSchemaNamedAsItsField) {
   const std::vector<std::string> names = config::task_names();
-  EXPECT_EQ(names, (std::vector<std::string>{"explore", "cover", "mapf", "collect"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"explore", "cover", "mapf", "collect", "rendezvous"}));
   ASSERT_EQ(task_rows().size(), names.size());
   std::set<int> cases;
   for (std::size_t i = 0; i < names.size(); ++i) {
@@ -44,12 +44,12 @@ TEST(TaskRegistry, EachPhaseOfAMissionFindsItsRowAndItsName) {
   try {
     config::set_mission(s, {"dance"});
   } catch (const config::ConfigError& e) {
-    EXPECT_STREQ(e.what(), "unknown task 'dance': expected explore, cover, mapf or collect");
+    EXPECT_STREQ(e.what(), "unknown task 'dance': expected explore, cover, mapf, collect or rendezvous");
   }
 }
 
 // Every row makes its three parts for a phase of a real set-up, and its motion model is the one
-// its planner assumes (coverage and MAPF on the 4-connected grid).
+// its planner assumes (coverage, MAPF and the rendezvous, which MAPF drives, on the 4-connected grid).
 TEST(TaskRegistry, EveryRowMakesItsPartsAndMovesAsItsPlannerAssumes) {
   auto s = config::parse_scenario_text("groups: 1 robots_per_group: 2", "t");
   config::set_mission(s, config::task_names());
@@ -62,7 +62,7 @@ TEST(TaskRegistry, EveryRowMakesItsPartsAndMovesAsItsPlannerAssumes) {
     EXPECT_NE(group_task(phases[i], setup, 0, i), nullptr) << i;
     const sim::PhaseSim part = sim_part(phases[i], setup, i);
     EXPECT_NE(part.judge, nullptr) << i;
-    const bool four = phases[i].has_cover() || phases[i].has_mapf();
+    const bool four = phases[i].has_cover() || phases[i].has_mapf() || phases[i].has_rendezvous();
     EXPECT_EQ(part.motion.neighbour_count(), four ? 4 : 8) << config::task_name(phases[i]);
   }
 }

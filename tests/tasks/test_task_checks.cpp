@@ -37,6 +37,18 @@ TEST(TaskChecks, EachTaskChecksItsOwnSettings) {
             "(valid)");
 }
 
+TEST(TaskChecks, ARendezvousPointLiesOnTheMap) {
+  EXPECT_EQ(check_error("mission { phase { rendezvous { point { x: 9 y: 0.5 } } } }"),
+            "t.pbtxt: field mission.phase[0].rendezvous.point: must lie inside the map, which spans x [0.00, 2.40) m "
+            "and y [0.00, 1.20) m (got (9, 0.5))");
+  EXPECT_EQ(check_error("mission { phase { rendezvous { point { x: 1 } home: true w: 0.5 } } }"),
+            "t.pbtxt: field mission.phase[0].rendezvous.w: must be at least 1 (got 0.5)\n"
+            "t.pbtxt: field mission.phase[0].rendezvous: must give point or home: true, not both (got both)\n"
+            "t.pbtxt: field mission.phase[0].rendezvous.point: must give both x and y in metres (got only x)");
+  EXPECT_EQ(check_error("mission { phase { rendezvous { point { x: 1.1 y: 0.5 } } } phase { rendezvous {} } }"),
+            "(valid)");
+}
+
 // A plan driven by its timing needs every route on time: a re-sent one would set off late.
 TEST(TaskChecks, ATimedPlanNeedsBoundedDelivery) {
   EXPECT_EQ(check_error("links { member_leader { loss: 0.2 } } mission { phase { mapf { execution: MAPF_EXECUTE_TIMED } } }"),
