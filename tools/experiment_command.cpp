@@ -195,8 +195,8 @@ int experiment_command(const ExperimentOptions& o, std::ostream& out, std::ostre
         RunOverrides ov;
         ov.map = map;
         apply_overrides(s, ov);
-        swarm::tasks::check_mission(
-            cfg::resolve_world(s, fs::absolute(scenario_path).parent_path().string(), scenario_path), scenario_path);
+        cfg::World world = cfg::resolve_world(s, fs::absolute(scenario_path).parent_path().string(), scenario_path);
+        swarm::tasks::resolve_mission(world, scenario_path);
       }
     } catch (const cfg::ConfigError& e) {
       throw BadInput(e.what());

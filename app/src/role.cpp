@@ -83,11 +83,12 @@ comm::LinkTable link_table(const swarm::scenario::Scenario& s, const comm::Topol
   return t;
 }
 
-RoleSetup load_role(const RoleOptions& o, RoleKind kind) {
+RoleSetup load_role(const RoleOptions& o, RoleKind kind, const std::function<void(config::World&)>& complete_world) {
   RoleSetup setup;
   const auto scenario = config::load_scenario(o.scenario_path);
   const std::string dir = std::filesystem::path(o.scenario_path).parent_path().string();
   setup.world = config::resolve_world(scenario, dir.empty() ? "." : dir);
+  if (complete_world) complete_world(setup.world);
   const auto& s = setup.world.scenario;
   setup.topology = comm::Topology(static_cast<int>(s.groups()), static_cast<int>(s.robots_per_group()),
                             config::leader_standbys(s));

@@ -159,23 +159,6 @@ std::string MapFrame::extent_text() const {
          " m";
 }
 
-void resolve_phases(World& w, const std::string& source) {
-  const OccupancyGrid& g = w.truth;
-  w.frame = {g.width(), g.height(), g.resolution(), g.origin_x(), g.origin_y()};
-  // Checked now, so that a bad goal or object stops the run before it starts.
-  const auto phases = mission_phases(w.scenario);
-  const int robots = static_cast<int>(w.robot_cells.size());
-  w.mapf_goals.assign(phases.size(), {});
-  w.collect.assign(phases.size(), {});
-  for (std::size_t i = 0; i < phases.size(); ++i) {
-    const std::string field = source + ": mission.phase[" + std::to_string(i) + "]";
-    if (phases[i].has_mapf()) w.mapf_goals[i] = mapf_goals(phases[i].mapf(), g, robots, field + ".mapf");
-    if (phases[i].has_collect()) {
-      w.collect[i] = collect_world(phases[i].collect(), g, w.robot_cells, w.scenario.seed(), field + ".collect");
-    }
-  }
-}
-
 World resolve_world(const swarm::scenario::Scenario& scenario, const std::string& scenario_dir,
                     const std::string& source) {
   const std::string src = source.empty() ? "scenario '" + scenario.name() + "'" : source;
@@ -270,7 +253,7 @@ World resolve_world(const swarm::scenario::Scenario& scenario, const std::string
                       std::to_string(w.robot_cells.size()) + " of " + std::to_string(robots) +
                       " robots around " + start_text + " in " + w.map_path);
   }
-  resolve_phases(w, src);
+  w.frame = MapFrame::of(g);
   return w;
 }
 

@@ -23,20 +23,24 @@ const TaskRow& task_row(const Phase& phase) {
   throw config::ConfigError("task '" + name + "' is not in this build's task registry");
 }
 
-void check_mission(const config::World& world, const std::string& source) {
+void resolve_mission(config::World& world, const std::string& source) {
   config::Problems problems(source);
   const auto phases = config::mission_phases(world.scenario);
+  const auto field = [&](std::size_t i) { return "mission.phase[" + std::to_string(i) + "]." + task_row(phases[i]).name; };
   for (std::size_t i = 0; i < phases.size(); ++i) {
     const TaskRow& row = task_row(phases[i]);
-    if (row.check) row.check(phases[i], world, "mission.phase[" + std::to_string(i) + "]." + row.name, problems);
+    if (row.check) row.check(phases[i], world, field(i), problems);
   }
   problems.throw_if_any();
+  world.phase_data.assign(phases.size(), {});
+  for (std::size_t i = 0; i < phases.size(); ++i) {
+    const TaskRow& row = task_row(phases[i]);
+    if (row.resolve) world.phase_data[i] = row.resolve(phases[i], world, source + ": " + field(i));
+  }
 }
 
 app::RoleSetup load_role(const app::RoleOptions& options, app::RoleKind kind) {
-  app::RoleSetup setup = app::load_role(options, kind);
-  check_mission(setup.world, options.scenario_path);
-  return setup;
+  return app::load_role(options, kind, [&](config::World& world) { resolve_mission(world, options.scenario_path); });
 }
 
 std::unique_ptr<gcs::GcsTask> gcs_task(const Phase& phase, const app::RoleSetup& setup, std::uint32_t index) {

@@ -1,5 +1,6 @@
 // Scenario text: parsing with positioned errors, defaults, printing, mode names.
 #include "swarm/config/scenario.hpp"
+#include "swarm_test/text.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -35,14 +36,7 @@ class ScenarioFile : public ::testing::Test {
   fs::path dir_;
 };
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const cfg::ConfigError& e) {
-    return e.what();
-  }
-  return "(no ConfigError)";
-}
+std::string error_of(const std::function<void()>& f) { return swarm::test::error_of<cfg::ConfigError>(f, "(no ConfigError)"); }
 
 TEST(ScenarioDefaults, EqualThePapersTable1) {
   const Scenario s = cfg::parse_scenario_text("", "empty");

@@ -1,92 +1,11 @@
-// A task phase's settings turned into planner inputs (config/task_config.hpp), and bad input in
-// them named by field: mapf goals, collect objects and destinations.
+// A task phase's settings turned into planner inputs (config/task_config.hpp): whether a phase is
+// given the map.
 #include "swarm/config/task_config.hpp"
 
 #include <gtest/gtest.h>
 
 #include "swarm/config/scenario.hpp"
 #include "swarm_test/ascii_grid.hpp"
-
-namespace swarm::config {
-namespace {
-
-using planner::Cell;
-
-// 6 x 3 cells of 0.2 m: a wall at x = 3 in the middle row.
-planner::OccupancyGrid room() { return swarm::test::grid_from({"......", "...#..", "......"}); }
-
-swarm::scenario::Phase phase_from(const std::string& text) {
-  const auto s = parse_scenario_text("mission { phase { " + text + " } }", "test");
-  return s.mission().phase(0);
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-TEST(MapfGoals, PointsBecomeCellsAndBadOnesAreNamed) {
-  const auto map = room();
-  const auto ok = phase_from("mapf { goals { x: 0.1 y: 0.1 } goals { x: 1.1 y: 0.5 } }");
-  EXPECT_EQ(mapf_goals(ok.mapf(), map, 2, "f"), (std::vector<Cell>{{0, 0}, {5, 2}}));
-  EXPECT_TRUE(mapf_goals(phase_from("mapf {}").mapf(), map, 2, "f").empty());  // random, later
-  EXPECT_EQ(error_of([&] { (void)mapf_goals(phase_from("mapf { goals { x: 0.7 y: 0.3 } }").mapf(), map, 1, "f"); }),
-            "f.goals[0] (robot 0): the goal, cell (3, 1), is not a free cell of the map");
-  EXPECT_EQ(error_of([&] { (void)mapf_goals(phase_from("mapf { goals { x: 5 y: 0.1 } }").mapf(), map, 1, "f"); }),
-            "f.goals[0] (robot 0): the goal is outside the map");
-  EXPECT_EQ(error_of([&] {
-              (void)mapf_goals(phase_from("mapf { goals { x: 0.1 y: 0.1 } goals { x: 0.15 y: 0.15 } }").mapf(), map, 2, "f");
-            }),
-            "f.goals[1] (robot 1): another robot has the same goal cell (0, 0)");
-}
-
-TEST(CollectWorld, ScatteredObjectsAreDistinctReachableAndDeterministic) {
-  const auto map = room();
-  const auto c = phase_from("collect { scatter: 2 types: 2 }").collect();
-  const CollectWorld a = collect_world(c, map, {{0, 0}}, 7, "f");
-  const CollectWorld b = collect_world(c, map, {{0, 0}}, 7, "f");
-  ASSERT_EQ(a.objects.size(), 4u);
-  ASSERT_EQ(a.destinations.size(), 2u);
-  for (std::size_t i = 0; i < a.objects.size(); ++i) {
-    EXPECT_EQ(a.objects[i].cell, b.objects[i].cell);
-    EXPECT_EQ(a.objects[i].type, static_cast<int>(i / 2));
-    EXPECT_TRUE(map.is_free(a.objects[i].cell));
-    EXPECT_NE(a.objects[i].cell, (Cell{0, 0}));  // not a robot's start cell
-    for (std::size_t j = 0; j < i; ++j) EXPECT_NE(a.objects[i].cell, a.objects[j].cell);
-  }
-}
-
-TEST(CollectWorld, BadObjectsAndDestinationsAreNamed) {
-  const auto map = room();
-  EXPECT_EQ(error_of([&] {
-              (void)collect_world(phase_from("collect { objects { at { x: 0.7 y: 0.3 } type: 0 } destinations { x: 0.1 y: 0.1 } }").collect(),
-                                  map, {{0, 0}}, 1, "f");
-            }),
-            "f.objects[0]: on a cell that is not free");
-  EXPECT_EQ(error_of([&] {
-              (void)collect_world(phase_from("collect { objects { at { x: 0.3 y: 0.1 } type: 1 } destinations { x: 0.1 y: 0.1 } }").collect(),
-                                  map, {{0, 0}}, 1, "f");
-            }),
-            "f.objects[0]: its type 1 has no destination (1 given)");
-  EXPECT_EQ(error_of([&] {
-              (void)collect_world(phase_from("collect { destinations { x: 9 y: 9 } }").collect(), map, {{0, 0}}, 1, "f");
-            }),
-            "f.destinations[0]: outside the map");
-  // A free cell walled in on four sides (no diagonal cuts a corner): no robot can reach it.
-  const auto pocket = swarm::test::grid_from({"..#...", ".#.#..", "..#..."});
-  EXPECT_EQ(error_of([&] {
-              (void)collect_world(phase_from("collect { objects { at { x: 0.5 y: 0.3 } type: 0 } destinations { x: 0.1 y: 0.1 } }").collect(),
-                                  pocket, {{0, 0}}, 1, "f");
-            }),
-            "f.objects[0]: no robot can reach it");
-}
-
-}  // namespace
-}  // namespace swarm::config
 
 namespace swarm::config {
 namespace {
@@ -105,30 +24,6 @@ TEST(MapGiven, OnlyPhasesThatNoExplorationPrecedesAreGivenTheMap) {
   EXPECT_FALSE(map_given(cover_first, 3));
   EXPECT_FALSE(map_given(cover_first, 4));  // past the mission
   EXPECT_TRUE(any_map_given(cover_first));
-}
-
-TEST(ResolvePhases, EachPhaseGetsItsGoalsOrObjectsAndTheFrame) {
-  World w;
-  w.scenario = parse_scenario_text(
-      "mission { phase { explore {} } phase { mapf { goals { x: 0.1 y: 0.1 } goals { x: 1.1 y: 0.5 } } }"
-      " phase { collect { objects { at { x: 0.3 y: 0.1 } type: 0 } destinations { x: 0.1 y: 0.5 } } } }",
-      "t");
-  w.truth = room();
-  w.robot_cells = {{0, 1}, {1, 1}};
-  resolve_phases(w, "t");
-  EXPECT_EQ(w.frame.width, 6);
-  EXPECT_EQ(w.frame.height, 3);
-  EXPECT_EQ(w.frame.cells(), 18u);
-  ASSERT_EQ(w.mapf_goals.size(), 3u);
-  EXPECT_TRUE(w.mapf_goals[0].empty());
-  EXPECT_EQ(w.mapf_goals[1], (std::vector<Cell>{{0, 0}, {5, 2}}));
-  ASSERT_EQ(w.collect.size(), 3u);
-  ASSERT_EQ(w.collect[2].objects.size(), 1u);
-  EXPECT_EQ(w.collect[2].objects[0].cell, (Cell{1, 0}));
-  EXPECT_EQ(w.collect[2].destinations, (std::vector<Cell>{{0, 2}}));
-  // A bad goal is named by its phase.
-  w.scenario = parse_scenario_text("mission { phase { mapf { goals { x: 0.7 y: 0.3 } goals { x: 0.1 y: 0.1 } } } }", "t");
-  EXPECT_NE(error_of([&] { resolve_phases(w, "s"); }).find("s: mission.phase[0].mapf"), std::string::npos);
 }
 
 }  // namespace

@@ -27,14 +27,7 @@ using swarm::planner::CellState;
 using swarm::planner::OccupancyGrid;
 using swarm::scenario::Scenario;
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const cfg::ConfigError& e) {
-    return e.what();
-  }
-  return "(no ConfigError)";
-}
+std::string error_of(const std::function<void()>& f) { return swarm::test::error_of<cfg::ConfigError>(f, "(no ConfigError)"); }
 
 using swarm::test::contains;
 

@@ -135,7 +135,7 @@ TEST(MapfTask, ARotationAcrossGroupsMovesInOneTickUnderDelayAndJitter) {
     g->set_x(truth.origin_x() + (next.x + 0.5) * truth.resolution());
     g->set_y(truth.origin_y() + (next.y + 0.5) * truth.resolution());
   }
-  config::resolve_phases(setup.world, "rotation test");  // the goals set here
+  tasks::resolve_mission(setup.world, "rotation test");  // the goals set here
   swarm::test::FakeSwarm s(setup);
   const auto m = s.run_to_end();
   ASSERT_TRUE(m["complete"].get<bool>());
@@ -193,7 +193,7 @@ TEST(MapfTask, AnInfeasiblePlanEndsThePhaseAndTheMissionAtOnce) {
     g->set_x(truth.origin_x() + (c.x + 0.5) * truth.resolution());
     g->set_y(truth.origin_y() + (c.y + 0.5) * truth.resolution());
   }
-  config::resolve_phases(setup.world, "corridor test");  // the goals set here
+  tasks::resolve_mission(setup.world, "corridor test");  // the goals set here
   swarm::test::FakeSwarm s(setup);
   const auto m = s.run_to_end();
   EXPECT_FALSE(m["complete"].get<bool>());

@@ -33,14 +33,7 @@ TEST(MapfMovingAi, ReadsTheFirstKRowsInGridCoordinates) {
   EXPECT_EQ(to_movingai_xy(map, in.goals[0]), (Cell{31, 24}));
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const MapFileError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string error_of(const std::function<void()>& f) { return swarm::test::error_of<MapFileError>(f); }
 
 TEST(MapfMovingAi, NamesTheFileAndLineOfBadInput) {
   swarm::test::TempDir tmp;

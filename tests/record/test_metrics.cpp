@@ -14,14 +14,7 @@ namespace {
 
 using swarm::test::contains;
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const MetricsError& e) {
-    return e.what();
-  }
-  return "(no MetricsError)";
-}
+std::string error_of(const std::function<void()>& f) { return swarm::test::error_of<MetricsError>(f, "(no MetricsError)"); }
 
 TEST(Metrics, RoundTripsThroughJson) {
   RunMetrics m = swarm::test::run_metrics("maze1", "baseline", 7, 345, 18);

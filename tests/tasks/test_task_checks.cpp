@@ -1,4 +1,4 @@
-// tasks::check_mission: each task's row checks its phase's settings at load, and every impossible
+// tasks::resolve_mission: each task's row checks its phase's settings at load, and every impossible
 // value is one line naming its field, what was expected and what was given.
 #include <gtest/gtest.h>
 
@@ -15,10 +15,14 @@ namespace {
 std::string check_error(const std::string& text) {
   const auto truth = swarm::test::grid_from(
       {"############", "#..........#", "#..........#", "#..........#", "#..........#", "############"});
-  const app::RoleSetup setup =
-      swarm::test::setup_for(truth, {5, 2}, config::parse_scenario_text("groups: 1 robots_per_group: 2 " + text, "t"));
+  config::World world;
+  world.scenario = config::parse_scenario_text("groups: 1 robots_per_group: 2 " + text, "t");
+  world.truth = truth;
+  world.frame = config::MapFrame::of(truth);
+  world.start = {5, 2};
+  world.robot_cells = planner::start_cells(truth, world.start, 2);
   try {
-    check_mission(setup.world, "t.pbtxt");
+    resolve_mission(world, "t.pbtxt");
   } catch (const config::ConfigError& e) {
     return e.what();
   }

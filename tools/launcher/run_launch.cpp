@@ -192,7 +192,7 @@ PreparedRun prepare_run(const RunOptions& options) {
   cfg::validate(s, scenario_path + " (with the command-line flags)");
 
   PreparedRun run{cfg::resolve_world(s, scenario_dir, scenario_path), {}};
-  swarm::tasks::check_mission(run.world, scenario_path);
+  swarm::tasks::resolve_mission(run.world, scenario_path);
   swarm::scenario::Scenario& used = run.world.scenario;
   // The roles read RUN_DIR/scenario.pbtxt, whose folder is the run directory: a map file must
   // be named absolutely there.

@@ -1,5 +1,6 @@
 #include "swarm/tasks/collect/collect_gcs.hpp"
 
+#include <any>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -16,7 +17,7 @@ CollectGcsTask::CollectGcsTask(const swarm::scenario::Collect& config, std::uint
 
 void CollectGcsTask::start(GcsContext& ctx) {
   const comm::Topology& t = ctx.setup.topology;
-  world_ = ctx.setup.world.collect.at(phase_);
+  world_ = std::any_cast<const tasks::CollectWorld&>(ctx.setup.world.phase_data.at(phase_));
   std::vector<int> groups;
   for (int g = 0; g < t.groups(); ++g) {
     if (ctx.alive(ctx.leader_of(g))) groups.push_back(g);

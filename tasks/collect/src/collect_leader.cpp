@@ -1,5 +1,6 @@
 #include "swarm/tasks/collect/collect_leader.hpp"
 
+#include <any>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -26,7 +27,7 @@ CollectGroupTask::CollectGroupTask(const swarm::scenario::Collect& config, const
                                    std::uint32_t index)
     : group_(group),
       map_given_(config::map_given(setup.world.scenario, index)),
-      world_(setup.world.collect.at(index)),
+      world_(std::any_cast<const tasks::CollectWorld&>(setup.world.phase_data.at(index))),
       robots_(static_cast<std::size_t>(setup.topology.robots_per_group())) {}
 
 void CollectGroupTask::start(GroupContext&) {

@@ -1,5 +1,6 @@
 #include "swarm/tasks/collect/collect_row.hpp"
 
+#include <any>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -7,16 +8,16 @@
 #include "swarm/config/task_config.hpp"
 #include "swarm/tasks/collect/collect_gcs.hpp"
 #include "swarm/tasks/collect/collect_leader.hpp"
+#include "swarm/tasks/collect/collect_world.hpp"
 
 namespace swarm::tasks {
 
 namespace {
-// The simulator's judge: it lays the phase's objects out (config::resolve_phases drew them at
-// load), counts what was picked, delivered and dropped at a wrong destination, with a point of
+// The simulator's judge: it lays the phase's objects out (its `resolve` drew them at load), counts what was picked, delivered and dropped at a wrong destination, with a point of
 // the delivered curve at every delivery, and what the robots drove in the tour planner's terms.
 class CollectJudge : public sim::PhaseJudge {
  public:
-  explicit CollectJudge(config::CollectWorld world) : world_(std::move(world)) {}
+  explicit CollectJudge(CollectWorld world) : world_(std::move(world)) {}
   void start(sim::World& world, std::uint32_t tick) override {
     world.set_objects(world_.objects, world_.destinations);
     curve_.emplace_back(tick, 0.0);
@@ -45,7 +46,7 @@ class CollectJudge : public sim::PhaseJudge {
   }
 
  private:
-  config::CollectWorld world_;
+  CollectWorld world_;
   std::vector<std::pair<std::uint32_t, double>> curve_;  // (tick, objects delivered)
   std::optional<std::uint32_t> full_tick_;                // every object delivered
 };
@@ -63,7 +64,10 @@ TaskRow collect_row() {
     return std::make_unique<leader::CollectGroupTask>(phase.collect(), setup, group, index);
   };
   row.judge = [](const Phase&, const app::RoleSetup& setup, std::uint32_t index) {
-    return std::make_unique<CollectJudge>(setup.world.collect.at(index));
+    return std::make_unique<CollectJudge>(std::any_cast<const CollectWorld&>(setup.world.phase_data.at(index)));
+  };
+  row.resolve = [](const Phase& phase, const config::World& world, const std::string& field) -> std::any {
+    return collect_world(phase.collect(), world.truth, world.robot_cells, world.scenario.seed(), field);
   };
   row.check = [](const Phase& phase, const config::World&, const std::string& field, config::Problems& p) {
     const auto& c = phase.collect();

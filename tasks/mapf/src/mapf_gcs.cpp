@@ -1,5 +1,6 @@
 #include "swarm/tasks/mapf/mapf_gcs.hpp"
 
+#include <any>
 #include <algorithm>
 #include <cstdio>
 #include <utility>
@@ -46,7 +47,7 @@ void MapfGcsTask::start(GcsContext& ctx) {
   known_ = map_given_ ? ctx.setup.given_map : ctx.mission.fused();
   start_tick_ = ctx.tick();
   if (!pick_goals_) {
-    goals_ = ctx.setup.world.mapf_goals.at(phase_);
+    goals_ = std::any_cast<const std::vector<Cell>&>(ctx.setup.world.phase_data.at(phase_));
     if (goals_.empty()) goals_ = random_goals(ctx);
   }
   const auto groups = static_cast<std::size_t>(ctx.setup.topology.groups());

@@ -2,6 +2,7 @@
 
 #include "swarm/config/task_config.hpp"
 #include "swarm/tasks/mapf/mapf_gcs.hpp"
+#include "swarm/tasks/mapf/mapf_goals.hpp"
 #include "swarm/tasks/mapf/mapf_leader.hpp"
 
 namespace swarm::tasks {
@@ -49,6 +50,9 @@ TaskRow mapf_row() {
     return std::make_unique<leader::MapfGroupTask>(config::resolved_mapf(phase.mapf(), setup.world.scenario), group);
   };
   row.judge = [](const Phase&, const app::RoleSetup&, std::uint32_t) { return std::make_unique<MapfJudge>(); };
+  row.resolve = [](const Phase& phase, const config::World& world, const std::string& field) -> std::any {
+    return mapf_goals(phase.mapf(), world.truth, static_cast<int>(world.robot_cells.size()), field);
+  };
   row.check = [](const Phase& phase, const config::World& world, const std::string& field, config::Problems& p) {
     const auto& m = phase.mapf();
     check_mapf_paths(m, world.scenario, field, p);

@@ -57,7 +57,8 @@ inline app::RoleSetup setup_for(const planner::OccupancyGrid& truth, planner::Ce
   if (setup.world.robot_cells.size() != s.groups() * s.robots_per_group()) {
     throw std::invalid_argument("setup_for: not enough free cells around the start for every robot");
   }
-  config::resolve_phases(setup.world, "test scenario");
+  setup.world.frame = config::MapFrame::of(truth);
+  tasks::resolve_mission(setup.world, "test scenario");
   setup.topology = comm::Topology(static_cast<int>(s.groups()), static_cast<int>(s.robots_per_group()),
                                   config::leader_standbys(s));
   setup.links = app::link_table(s, setup.topology);
@@ -73,6 +74,7 @@ inline app::RoleSetup setup_from_text(const std::string& scenario_text) {
   config::validate(s, "test scenario");
   app::RoleSetup setup;
   setup.world = config::resolve_world(s, "");
+  tasks::resolve_mission(setup.world, "test scenario");
   setup.topology = comm::Topology(static_cast<int>(setup.world.scenario.groups()),
                                   static_cast<int>(setup.world.scenario.robots_per_group()),
                                   config::leader_standbys(setup.world.scenario));

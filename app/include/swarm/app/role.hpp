@@ -58,7 +58,10 @@ struct RoleSetup {
 };
 
 // Loads and resolves the scenario, checks the role's ids against it. Throws config::ConfigError.
-RoleSetup load_role(const RoleOptions& options, RoleKind kind);
+// `complete_world` runs on the world while it still holds the map file's cells, before the role
+// keeps only what it may know (the task registry's resolve_mission: tasks::load_role).
+RoleSetup load_role(const RoleOptions& options, RoleKind kind,
+                    const std::function<void(config::World&)>& complete_world = {});
 
 // Leaves a role other than the simulator only what it may know of the map: the frame always, the
 // cells as given_map when the scenario gives the robots the map. load_role applies it.

@@ -10,6 +10,8 @@
 //   2. resolve_world: find and load the map (a built-in name or a ROS map_server YAML path), pick
 //      the start (scenario.start, or the free cell nearest the map centre) and every robot's start
 //      cell. Problems that need the map (start in a wall, start sealed off) are ConfigErrors too.
+//   3. tasks::resolve_mission (tasks/registry.hpp): each phase's task checks its settings and
+//      resolves what they fix in advance (World::phase_data).
 // Callers print ConfigError::what() and exit with status 2.
 //
 //   namespace cfg = swarm::config;
@@ -27,6 +29,8 @@
 // Units: metres (map frame) for positions and ranges, cells for grid indices, ticks for steps.
 // All functions are thread-safe (no shared state; data_dir() reads the environment).
 #pragma once
+
+#include <any>
 
 #include <stdexcept>
 #include <string>
@@ -138,6 +142,9 @@ struct MapFrame {
   }
   // What the map spans, for messages: "x [0.00, 8.00) m and y [0.00, 8.00) m".
   std::string extent_text() const;
+  static MapFrame of(const swarm::planner::OccupancyGrid& g) {
+    return {g.width(), g.height(), g.resolution(), g.origin_x(), g.origin_y()};
+  }
 };
 
 // Everything a run needs that follows from the scenario and its map. Only the simulator (and
@@ -151,17 +158,12 @@ struct World {
   // robots_per_group + index, index 0 being the group's leader.
   std::vector<swarm::planner::Cell> robot_cells;
   std::string map_path;  // the YAML file read
-  // Per phase of mission_phases(scenario), resolved and checked at load from the scenario and the
-  // map, so that every process agrees without reading the map itself: a mapf phase's goals (empty:
-  // random goals, chosen when the phase starts) and a collect phase's objects and destinations.
-  std::vector<std::vector<swarm::planner::Cell>> mapf_goals;
-  std::vector<CollectWorld> collect;
+  // Per phase of mission_phases(scenario): what its task fixes in advance from the scenario and the
+  // map (a mapf phase's goals, a collect phase's objects), resolved and checked once at load by the
+  // task's registry row (tasks::resolve_mission), so every process agrees without reading the map
+  // itself; empty for a task that fixes nothing.
+  std::vector<std::any> phase_data;
 };
-
-// Fills w.frame and the per-phase goals and objects from w.scenario, w.truth and w.robot_cells
-// (resolve_world calls it; a test that builds a World by hand calls it too). Throws ConfigError
-// naming `source`'s field for a bad goal or object.
-void resolve_phases(World& w, const std::string& source);
 
 // validate()s `scenario`, loads its map, picks the start and the robots' cells (see World).
 // `source` names the scenario in messages (default: "scenario 'NAME'"). Throws ConfigError when

@@ -43,27 +43,4 @@ namespace swarm::config {
 // The MAPF solver of a mapf phase (ECBS with its w by default).
 [[nodiscard]] planner::mapf::SolverConfig mapf_solver_config(const swarm::scenario::Mapf& mapf, std::uint64_t seed);
 
-// The goals of a mapf phase, one per robot in robot-id order: the scenario's points (metres in the
-// map frame) or the first rows of its MovingAI `scen` (x = column, y = row from the top); empty
-// when it gives neither (a random free cell per robot, chosen when the phase starts). Throws
-// ConfigError naming `field` (and the file and line) for a goal outside the map, on a blocked
-// cell, two robots with one goal, or a scen whose map size differs or with too few rows.
-[[nodiscard]] std::vector<planner::Cell> mapf_goals(const swarm::scenario::Mapf& mapf, const planner::OccupancyGrid& map,
-                                                    int robots, const std::string& field);
-
-// The objects and destinations of a collect phase: the scenario's (metres in the map frame) or,
-// none listed, `scatter` objects of each of `types` types at distinct free cells reachable from
-// the start (8-connected, not a robot's start cell), drawn from the run's seed; destinations the
-// scenario's or, none listed, `types` free cells beside a wall spread over the map. The simulator,
-// the GCS and the leaders all compute it from the scenario, so object i is the same everywhere.
-// Throws ConfigError naming `field` for an object or destination outside the map, on a blocked or
-// unreachable cell, or a type with no destination.
-struct CollectWorld {
-  std::vector<planner::TourObject> objects;
-  std::vector<planner::Cell> destinations;  // per type
-};
-[[nodiscard]] CollectWorld collect_world(const swarm::scenario::Collect& collect, const planner::OccupancyGrid& map,
-                                         const std::vector<planner::Cell>& robot_cells, std::uint64_t seed,
-                                         const std::string& field);
-
 }  // namespace swarm::config

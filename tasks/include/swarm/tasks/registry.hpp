@@ -20,14 +20,16 @@ namespace swarm::tasks {
 // The row of the phase's task; throws config::ConfigError for a phase that names no known task.
 [[nodiscard]] const TaskRow& task_row(const Phase& phase);
 
-// Checks every phase's settings with its row's `check` against the world it will run in (the map's
-// frame, the start cells); throws config::ConfigError with every problem, one per line, each
-// "SOURCE: field mission.phase[i].TASK...: must ... (got ...)". The launcher calls it before it
-// starts a process, and every role's process after it loads its scenario.
-void check_mission(const config::World& world, const std::string& source);
+// Checks every phase's settings with its row's `check` against the world it will run in (the map,
+// the start cells): throws config::ConfigError with every problem, one per line, each
+// "SOURCE: field mission.phase[i].TASK...: must ... (got ...)". Then resolves what they fix in
+// advance with its row's `resolve` into world.phase_data (one entry per phase; a ConfigError
+// names the field of a bad goal or object). The launcher calls it before it starts a process, and
+// every role's process when it loads its scenario (load_role), before it drops the map file.
+void resolve_mission(config::World& world, const std::string& source);
 
-// A role's set-up (app::load_role) whose mission passed check_mission: what every role's process
-// loads.
+// A role's set-up (app::load_role) with its mission resolved (resolve_mission): what every role's
+// process loads.
 [[nodiscard]] app::RoleSetup load_role(const app::RoleOptions& options, app::RoleKind kind);
 
 // The parts of phase `index` of the mission (the row's factories).

@@ -9,16 +9,21 @@
 //   judge       its ground-truth judge in the simulator (sim/phase_judge.hpp), one per phase
 //   check       its settings' checks at load (optional): each impossible value one line of
 //               `problems`, named from `field` ("mission.phase[2].mapf"); the run does not start
+//   resolve     what its settings fix in advance from the scenario and the map (optional: goals,
+//               objects), made once at load, where the map file is read, into World::phase_data
+//               (its parts read it there); throws config::ConfigError naming `field`
 //
 // Adding a task:
 //   1. its settings message and a field in Phase's oneof, in idl/scenario.proto;
 //   2. tasks/<name>/: its planner calls, the three parts, and `TaskRow <name>_row()`;
 //   3. that row in tasks/src/registry.cpp and the folder in tasks/CMakeLists.txt.
 // The lockstep protocol, link emulation, faults, traffic accounting, the CLI's --mission and the
-// phase machine do not change. Settings are checked at load by the row's `check`
-// (tasks::check_mission, before any process starts).
+// phase machine do not change. Settings are checked and resolved at load by the row's `check`
+// and `resolve` (tasks::resolve_mission: in the launcher before any process starts, and in every
+// role's process).
 #pragma once
 
+#include <any>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -45,6 +50,7 @@ struct TaskRow {
       leader;
   std::function<std::unique_ptr<sim::PhaseJudge>(const Phase&, const app::RoleSetup&, std::uint32_t index)> judge;
   std::function<void(const Phase&, const config::World&, const std::string& field, config::Problems& problems)> check;
+  std::function<std::any(const Phase&, const config::World&, const std::string& field)> resolve;
 };
 
 }  // namespace swarm::tasks

@@ -1,5 +1,5 @@
 // The GCS's collection task (issue 10; docs/papers.md section 4): every object carried to its type's
-// destination. The objects and destinations come from the scenario (config::collect_world, the
+// destination. The objects and destinations come from the scenario (tasks::collect_world, the
 // same for the simulator, the GCS and the leaders, so an object is known by its number).
 //
 // The GCS splits the objects among the groups whose leader lives (each object to the nearest
@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "swarm/config/task_config.hpp"
+#include "swarm/tasks/collect/collect_world.hpp"
 #include "swarm/gcs/gcs_task.hpp"
 
 namespace swarm::gcs {
@@ -39,7 +40,7 @@ class CollectGcsTask : public GcsTask {
  private:
   swarm::scenario::Collect config_;
   std::uint32_t phase_;
-  config::CollectWorld world_;
+  tasks::CollectWorld world_;
   std::vector<std::uint32_t> seq_;     // per group: its latest order's
   std::vector<int> objects_of_group_;  // how many each group was given
   std::vector<int> owner_;             // per object: its group

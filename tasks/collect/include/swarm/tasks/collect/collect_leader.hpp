@@ -28,13 +28,14 @@
 #include <vector>
 
 #include "swarm/config/task_config.hpp"
+#include "swarm/tasks/collect/collect_world.hpp"
 #include "swarm/leader/group_task.hpp"
 
 namespace swarm::leader {
 
 class CollectGroupTask : public GroupTask {
  public:
-  // Phase `index` of the mission: its objects and destinations are setup.world.collect[index].
+  // Phase `index` of the mission: its objects and destinations are setup.world.phase_data[index].
   CollectGroupTask(const swarm::scenario::Collect& config, const app::RoleSetup& setup, int group,
                    std::uint32_t index);
   void start(GroupContext& ctx) override;
@@ -82,7 +83,7 @@ class CollectGroupTask : public GroupTask {
 
   int group_;
   bool map_given_;
-  config::CollectWorld world_;
+  tasks::CollectWorld world_;
   std::uint32_t seq_ = 0;
   bool have_order_ = false;
   bool reported_ = false;
