@@ -1,4 +1,4 @@
-// `swarm mapf` and `swarm experiment mapf` (tools/mapf_command.hpp, experiment_mapf.hpp): what
+// `swarm mapf` and `swarm experiment mapf` (tools/cli/mapf_command.hpp, tools/experiments/experiment_mapf.hpp): what
 // they write, their exit statuses and the messages for bad input. No process is started.
 #include <gtest/gtest.h>
 

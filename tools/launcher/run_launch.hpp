@@ -1,5 +1,5 @@
 // The launcher: one swarm run's processes from a scenario and flags (scenario + flags -> run
-// directory -> the role processes -> supervise, supervisor.hpp). `swarm run` (tools/run_command.hpp)
+// directory -> the role processes -> supervise, supervisor.hpp). `swarm run` (tools/cli/run_command.hpp)
 // adds pictures and a summary; `swarm experiment` reuses prepare_run and
 // build_run_processes to start many runs at once (one run_processes call per run, each on its own
 // thread; every concurrent run gets its own DDS domain, RunOptions::domain_id, and every run its
