@@ -26,10 +26,14 @@ namespace {
 using namespace swarm;
 
 // One robot's whole life on the shared participant: lockstep until the run stops, then its report.
+// Its agent goes into `keep`, which outlives the run: the process ends with exit_after_work and
+// never tears Fast DDS down (destroying a writer with a long unacknowledged history took minutes
+// at the end of a 3000-tick run).
 void run_member(comm::Participant& participant, const app::RoleSetup& setup, int group, int index,
-                app::FaultInjector& faults) {
+                app::FaultInjector& faults, std::unique_ptr<comm::LockstepAgent>& keep) {
   const comm::AgentId self = setup.topology.robot(group, index);
-  comm::LockstepAgent agent(participant, setup.topology, setup.links, self);
+  keep = std::make_unique<comm::LockstepAgent>(participant, setup.topology, setup.links, self);
+  comm::LockstepAgent& agent = *keep;
   const auto run = [&](auto& node) {
     comm::run_lockstep(agent, [&](const msgs::Clock& clock) {
       faults.at_tick(clock.tick());
@@ -69,8 +73,9 @@ int main(int argc, char** argv) {
       names += (names.empty() ? "" : ",") + name;
     }
     comm::Participant participant(setup.dds);
+    std::vector<std::unique_ptr<comm::LockstepAgent>> agents(options.indices.size());
     if (options.indices.size() == 1) {
-      run_member(participant, setup, options.group, options.indices[0], *faults[0]);
+      run_member(participant, setup, options.group, options.indices[0], *faults[0], agents[0]);
       app::exit_after_work(names);
     }
     // A robot that fails ends the process at once with the role's exit code for a runtime
@@ -79,7 +84,7 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < options.indices.size(); ++i) {
       robots.emplace_back([&, i] {
         try {
-          run_member(participant, setup, options.group, options.indices[i], *faults[i]);
+          run_member(participant, setup, options.group, options.indices[i], *faults[i], agents[i]);
         } catch (const std::exception& e) {
           std::cerr << "swarm-member: " << setup.topology.name_of(setup.topology.robot(options.group, options.indices[i]))
                     << ": " << e.what() << std::endl;
