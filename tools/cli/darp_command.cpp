@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "darp_placement.hpp"
+#include "swarm/planner/coverage/placement.hpp"
 #include "experiment.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/planner/coverage/coverage_check.hpp"
@@ -223,15 +223,15 @@ int darp_command(const DarpOptions& o, std::ostream& out, std::ostream& err) {
     if (!o.robots.empty()) robots = parse_robot_list(o.robots, map);
     if (!o.robots_file.empty()) robots = read_robots_file(o.robots_file, map);
     if (o.count) {
-      const long piece = static_cast<long>(largest_piece(map).size());
+      const long piece = static_cast<long>(planner::largest_piece(map).size());
       if (*o.count < 1) throw DarpInputError("--count " + std::to_string(*o.count) + ": at least 1 robot");
       if (*o.count > piece) {
         throw DarpInputError("--count " + std::to_string(*o.count) + ": more robots than free cells (the map's largest "
                              "connected free area has " + std::to_string(piece) + ")");
       }
       planner::Rng rng(planner::mix_seed(o.seed, 0x9ace));
-      if (o.placement == "spread") robots = spread_cells(map, *o.count, rng);
-      else if (o.placement == "bunched") robots = bunched_cells(map, *o.count, std::nullopt, 0, rng);
+      if (o.placement == "spread") robots = planner::spread_cells(map, *o.count, rng);
+      else if (o.placement == "bunched") robots = planner::bunched_cells(map, *o.count, std::nullopt, 0, rng);
       else throw DarpInputError("--placement \"" + o.placement + "\": expected spread or bunched");
     }
     weights = parse_weights(o.weights, robots.size());

@@ -19,7 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "darp_command.hpp"
-#include "darp_placement.hpp"
+#include "swarm/planner/coverage/placement.hpp"
 #include "experiment.hpp"
 #include "plot.hpp"
 #include "stats.hpp"
@@ -61,7 +61,7 @@ MapInfo map_info(const std::string& name) {
   if (name == "rectangle") m.entrance = Cell{40, 1}, m.bottleneck = Cell{39, 28};
   if (!m.entrance) {  // any other map: the free cell nearest the middle of the bottom row
     double best = 1e300;
-    for (const Cell& c : largest_piece(g)) {
+    for (const Cell& c : planner::largest_piece(g)) {
       const double d = planner::euclidean_distance(c, {g.width() / 2, 0});
       if (d < best) best = d, m.entrance = c;
     }
@@ -93,10 +93,10 @@ std::vector<Cell> starts_for(const MapInfo& m, const std::string& condition, int
   std::uint64_t tag = std::find(kConditions.begin(), kConditions.end(), condition) - kConditions.begin();
   planner::Rng rng(planner::mix_seed(seed, tag, n, map_index));
   const planner::OccupancyGrid& g = m.loaded.grid;
-  if (condition == "bottleneck") return cells_near(g, n, *m.bottleneck, 8, rng);
-  if (condition == "entrance") return bunched_cells(g, n, m.entrance, 3, rng);
-  if (condition == "far") return spread_cells(g, n, rng);
-  return bunched_cells(g, n, std::nullopt, 0, rng);
+  if (condition == "bottleneck") return planner::cells_near(g, n, *m.bottleneck, 8, rng);
+  if (condition == "entrance") return planner::bunched_cells(g, n, m.entrance, 3, rng);
+  if (condition == "far") return planner::spread_cells(g, n, rng);
+  return planner::bunched_cells(g, n, std::nullopt, 0, rng);
 }
 
 DarpConfig config_for(const std::string& method, const DarpExperimentOptions& o, int seed) {

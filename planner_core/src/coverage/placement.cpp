@@ -1,17 +1,12 @@
-#include "darp_placement.hpp"
+#include "swarm/planner/coverage/placement.hpp"
 
 #include <algorithm>
 #include <limits>
 
 #include "swarm/planner/coverage/region_graph.hpp"
 
-namespace swarm::tools {
+namespace swarm::planner {
 namespace {
-
-using planner::Cell;
-using planner::OccupancyGrid;
-using planner::RegionGraph;
-using planner::Rng;
 
 // The cells within `radius` steps of `around` (around first), 4-connected through free cells.
 std::vector<Cell> within(const OccupancyGrid& map, Cell around, int radius) {
@@ -19,7 +14,7 @@ std::vector<Cell> within(const OccupancyGrid& map, Cell around, int radius) {
   const int s = g.index_of(around);
   if (s < 0) return {};
   std::vector<int> order;
-  const std::vector<int> steps = planner::bfs_steps(g, {s}, &order);
+  const std::vector<int> steps = bfs_steps(g, {s}, &order);
   std::vector<Cell> out;
   for (int c : order) {
     if (steps[c] <= radius) out.push_back(g.cells[c]);
@@ -40,7 +35,7 @@ std::vector<Cell> draw(std::vector<Cell> cells, int n, Rng& rng) {
 std::vector<Cell> largest_piece(const OccupancyGrid& map) {
   const RegionGraph g = RegionGraph::build(map);
   int count = 0;
-  const std::vector<int> label = planner::components(g, count);
+  const std::vector<int> label = components(g, count);
   std::vector<int> size(count, 0);
   for (int l : label) ++size[l];
   const int best = static_cast<int>(std::max_element(size.begin(), size.end()) - size.begin());
@@ -61,7 +56,7 @@ std::vector<Cell> spread_cells(const OccupancyGrid& map, int n, Rng& rng) {
     out.push_back(next);
     double far = 0;
     for (std::size_t i = 0; i < piece.size(); ++i) {
-      nearest[i] = std::min(nearest[i], planner::euclidean_distance(piece[i], next));
+      nearest[i] = std::min(nearest[i], euclidean_distance(piece[i], next));
       far = std::max(far, nearest[i]);
     }
     std::vector<Cell> candidates;
@@ -81,7 +76,7 @@ std::vector<Cell> bunched_cells(const OccupancyGrid& map, int n, std::optional<C
   // The zone: the cells within r steps of the centre, r the smallest radius giving 3n cells.
   const RegionGraph g = RegionGraph::build(map);
   std::vector<int> order;
-  const std::vector<int> steps = planner::bfs_steps(g, {g.index_of(centre)}, &order);
+  const std::vector<int> steps = bfs_steps(g, {g.index_of(centre)}, &order);
   const std::size_t wanted = std::min(order.size(), static_cast<std::size_t>(3 * n));
   const int r = steps[order[wanted - 1]];
   std::vector<Cell> zone;
@@ -95,4 +90,4 @@ std::vector<Cell> cells_near(const OccupancyGrid& map, int n, Cell around, int r
   return draw(within(map, around, radius), n, rng);
 }
 
-}  // namespace swarm::tools
+}  // namespace swarm::planner

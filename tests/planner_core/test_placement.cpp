@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <set>
 
-#include "darp_placement.hpp"
+#include "swarm/planner/coverage/placement.hpp"
 #include "swarm_test/ascii_grid.hpp"
 
 namespace {
@@ -13,7 +13,7 @@ namespace {
 using swarm::planner::Cell;
 using swarm::planner::OccupancyGrid;
 using swarm::planner::Rng;
-using namespace swarm::tools;
+using namespace swarm::planner;
 
 OccupancyGrid room() {
   // A 20 x 10 room and, behind a wall, a 3-cell pocket (a smaller piece: never used).
