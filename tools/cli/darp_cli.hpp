@@ -1,6 +1,5 @@
-// The flags of `swarm darp` and `swarm experiment darp` (CLI11), kept here so that swarm_main.cpp
-// registers each with one line: `auto* c = add_darp(app, options);` then, after parsing,
-// `if (c->parsed()) return darp_command(options, std::cout, std::cerr);`.
+// The flags of `swarm darp` and `swarm experiment darp` (CLI11), kept beside their commands; the
+// Commands are add_darp and add_experiment_darp (command.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -10,7 +9,7 @@
 
 namespace swarm::tools {
 
-inline CLI::App* add_darp(CLI::App& app, DarpOptions& o) {
+inline CLI::App* add_darp_flags(CLI::App& app, DarpOptions& o) {
   CLI::App* c = app.add_subcommand(
       "darp", "Divide a map among robots (DARP) and plan their coverage paths (STC): a picture and numbers");
   c->add_option("--map", o.map, "Built-in map, map_server YAML or MovingAI .map")->required();
@@ -29,7 +28,7 @@ inline CLI::App* add_darp(CLI::App& app, DarpOptions& o) {
   return c;
 }
 
-inline CLI::App* add_experiment_darp(CLI::App& experiment, DarpExperimentOptions& o) {
+inline CLI::App* add_experiment_darp_flags(CLI::App& experiment, DarpExperimentOptions& o) {
   CLI::App* c = experiment.add_subcommand(
       "darp", "DARP initialisations compared (paper's Tables 6-11, Fig. 8/9) and the far-vs-close sweep, offline");
   c->add_option("--seeds", o.seeds, "Seeds (randomised starts) per condition (default 5; --full 10)");

@@ -1,5 +1,5 @@
-// The flags of `swarm mapf` and `swarm experiment mapf` (CLI11), kept beside their commands so
-// that swarm_main.cpp registers each with one line and dispatches with one more.
+// The flags of `swarm mapf` and `swarm experiment mapf` (CLI11), kept beside their commands; the
+// Commands are add_mapf and add_experiment_mapf (command.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -6,8 +6,10 @@
 #include <atomic>
 #include <chrono>
 #include <exception>
+#include <memory>
 #include <thread>
 
+#include "command.hpp"
 #include "swarm/comm/endpoint.hpp"
 #include "swarm/comm/participant.hpp"
 #include "swarm/comm/topology.hpp"
@@ -15,7 +17,9 @@
 
 namespace swarm::tools {
 
-CLI::App* add_probe(CLI::App& app, ProbeOptions& o) {
+Command add_probe(CLI::App& app) {
+  auto options = std::make_shared<ProbeOptions>();
+  ProbeOptions& o = *options;
   CLI::App* c = app.add_subcommand(
       "probe",
       "Can a swarm be seen from here? Listen to its clock topic for S seconds as a plain DDS participant "
@@ -37,7 +41,7 @@ CLI::App* add_probe(CLI::App& app, ProbeOptions& o) {
                 "RTPS participant id (fixes the ports; -1 = Fast DDS picks)")
       ->capture_default_str()
       ->check(CLI::Range(-1, 239));
-  return c;
+  return {c, [options](std::ostream& out, std::ostream& err) { return probe_command(*options, out, err); }};
 }
 
 int probe_command(const ProbeOptions& o, std::ostream& out, std::ostream& err) {

@@ -36,7 +36,7 @@ struct ProbeOptions {
 };
 
 // Registers `swarm probe` and its flags on `app`; returns the subcommand (test `parsed()`).
-CLI::App* add_probe(CLI::App& app, ProbeOptions& options);
+
 
 // Runs the probe: a summary line on `out`, problems on `err`; the exit status as above.
 int probe_command(const ProbeOptions& options, std::ostream& out, std::ostream& err);
