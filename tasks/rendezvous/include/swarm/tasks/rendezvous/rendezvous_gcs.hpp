@@ -41,7 +41,7 @@ class RendezvousGcsTask : public GcsTask {
   std::size_t cells_ = 0;
   double path_sum_ = 0;
   std::vector<int> unreachable_;  // robot ids that cannot reach the centre (last pick)
-  std::set<int> lost_;            // robot ids lost during the phase
+  std::set<int> lost_;            // robot ids not alive in the phase (lost before it or on the way)
 };
 
 }  // namespace swarm::gcs
