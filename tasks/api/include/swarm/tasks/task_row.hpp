@@ -17,6 +17,8 @@
 //   1. its settings message and a field in Phase's oneof, in idl/scenario.proto;
 //   2. tasks/<name>/: its planner calls, the three parts, and `TaskRow <name>_row()`;
 //   3. that row in tasks/src/registry.cpp and the folder in tasks/CMakeLists.txt.
+// tasks/rendezvous/ is the smallest example: settings, a GCS part that picks goals and drives
+// them with mapf's parts, a judge and a row (its commit touched 15 files, tests included).
 // The lockstep protocol, link emulation, faults, traffic accounting, the CLI's --mission and the
 // phase machine do not change. Settings are checked and resolved at load by the row's `check`
 // and `resolve` (tasks::resolve_mission: in the launcher before any process starts, and in every
