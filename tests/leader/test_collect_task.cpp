@@ -76,5 +76,27 @@ TEST(CollectTask, ALostLeadersGroupIsResumedByItsStandbyAndEveryObjectIsDelivere
   }
 }
 
+// A member lost in the very tick it picks up an object, after exploration (3 x 3 robots on
+// small): its last report does not say so, but its true cell in the clock shows how far along its
+// route it got, so the leader knows it carried the object, which the simulator put down beside it
+// with the other it held. Both lie on one cell, and a robot picks up everything on the cell it
+// picks at: they go to one robot. Before, one of them was looked for where it had been picked up,
+// another robot drove to an empty cell, and the group never finished (15 of 15 delivered as the
+// simulator judged, 14 as the GCS knew, run to max_ticks).
+TEST(CollectTask, AMemberLostAsItPicksUpStillHasItsLoadCollected) {
+  auto setup = swarm::test::setup_from_text(
+      "map: 'small' max_ticks: 1500 mission { phase { explore {} } phase { collect {} } }");
+  swarm::test::FakeSwarm s(setup);
+  const auto m = s.run_to_end([&](std::uint32_t tick) {
+    if (tick == 130) s.disconnect(setup.topology.robot(0, 2));
+  });
+  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto& p = phase_named(m, "collect");
+  EXPECT_EQ(p["task"]["delivered"], p["task"]["objects"]);
+  EXPECT_EQ(p["task"]["reported_delivered"], p["task"]["objects"]);
+  EXPECT_EQ(p["task"]["wrong_drops"], 0);
+  EXPECT_EQ(m["agents"]["leader-0"]["phases"][1]["numbers"]["delivered_known"], 5);
+}
+
 }  // namespace
 }  // namespace swarm::leader

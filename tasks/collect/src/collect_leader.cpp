@@ -322,16 +322,7 @@ void CollectGroupTask::on_progress(int index, const planner::RouteProgress& p, G
   Robot& r = robots_[static_cast<std::size_t>(index)];
   if (p.id != r.route_id || r.cells.empty()) return;  // (a stop has no cells)
   if (p.step > r.step) r.moved_tick = ctx.clock.tick();
-  r.step = std::max(r.step, p.step);
-  for (const auto& [id, step] : r.picks) {
-    if (r.step >= step && state_[static_cast<std::size_t>(id)] == State::Waiting) {
-      state_[static_cast<std::size_t>(id)] = State::Carried;
-      carrier_[static_cast<std::size_t>(id)] = index;
-    }
-  }
-  for (const auto& [id, step] : r.delivers) {
-    if (r.step >= step) state_[static_cast<std::size_t>(id)] = State::Delivered;
-  }
+  reached(index, p.step);
   if (p.state == planner::RouteState::Finished) {
     r.busy = false;
     plan(index, ctx);
@@ -354,8 +345,32 @@ void CollectGroupTask::on_progress(int index, const planner::RouteProgress& p, G
   }
 }
 
+void CollectGroupTask::reached(int index, std::uint32_t step) {
+  Robot& r = robots_[static_cast<std::size_t>(index)];
+  r.step = std::max(r.step, step);
+  for (const auto& [id, at] : r.picks) {
+    if (r.step >= at && state_[static_cast<std::size_t>(id)] == State::Waiting) {
+      state_[static_cast<std::size_t>(id)] = State::Carried;
+      carrier_[static_cast<std::size_t>(id)] = index;
+    }
+  }
+  for (const auto& [id, at] : r.delivers) {
+    if (r.step >= at) state_[static_cast<std::size_t>(id)] = State::Delivered;
+  }
+}
+
 void CollectGroupTask::member_lost(int index, GroupContext& ctx) {
   Robot& lost = robots_[static_cast<std::size_t>(index)];
+  // The loss is noticed ticks after the robot's last report, and its body drove on along the route
+  // the simulator had: where it stopped (its true cell, in the clock) says how far it got, so a
+  // pick or a drop it made since its last report counts (the first such cell from its last known
+  // step: a route that passes a cell twice is taken at its earlier pass).
+  for (std::uint32_t k = lost.step; k < lost.cells.size(); ++k) {
+    if (lost.cells[k] == ctx.cell_of(index)) {
+      reached(index, k);
+      break;
+    }
+  }
   // Where the simulator put down what it carried: the same rule, from the same robot cells, on the
   // map the group knows (the cells around a robot are in its scans, so they agree with the truth).
   std::vector<Cell> robots;
@@ -374,11 +389,21 @@ void CollectGroupTask::member_lost(int index, GroupContext& ctx) {
   lost = Robot{};
   const std::vector<int> living = ctx.living();
   if (living.empty()) return;
+  // To the living robot with the fewest objects still ahead of it; objects lying on one cell (what
+  // the lost robot carried, put down beside it) all to one robot, as a robot picks up everything
+  // on the cell it picks at.
+  std::vector<std::pair<Cell, int>> taken_by;  // (cell, robot) given so far
   for (int id : orphans) {
-    // To the living robot with the fewest objects still ahead of it.
+    const Cell cell = where_[static_cast<std::size_t>(id)];
     int best = living.front();
     for (int i : living) {
       if (robots_[static_cast<std::size_t>(i)].pending.size() < robots_[static_cast<std::size_t>(best)].pending.size()) best = i;
+    }
+    for (const auto& [c, i] : taken_by) {
+      if (c == cell) best = i;
+    }
+    if (std::none_of(taken_by.begin(), taken_by.end(), [&](const auto& t) { return t.first == cell; })) {
+      taken_by.emplace_back(cell, best);
     }
     robots_[static_cast<std::size_t>(best)].pending.push_back(id);
     ++reassigned_;

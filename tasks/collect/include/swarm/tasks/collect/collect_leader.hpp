@@ -66,6 +66,8 @@ class CollectGroupTask : public GroupTask {
   // What changed since the last report goes to the GCS.
   void report_changes(GroupContext& ctx);
 
+  // Robot `index` has reached `step` of its route: its picks and drops up to there are made.
+  void reached(int index, std::uint32_t step);
   struct Robot {
     std::uint32_t route_id = 0;
     std::uint32_t step = 0;
