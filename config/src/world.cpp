@@ -209,15 +209,12 @@ World resolve_world(const swarm::scenario::Scenario& scenario, const std::string
     const double x = scenario.start().x();
     const double y = scenario.start().y();
     start_text = "start " + metres(x, y) + " m";
-    const double x_end = g.origin_x() + g.width() * g.resolution();
-    const double y_end = g.origin_y() + g.height() * g.resolution();
-    const bool inside = x >= g.origin_x() && x < x_end && y >= g.origin_y() && y < y_end;
+    const MapFrame frame = MapFrame::of(g);
+    const bool inside = frame.contains(x, y);
     if (inside) w.start = g.cell_at(x, y);
     if (!inside || !g.in_bounds(w.start)) {
-      throw ConfigError(src + ": " + start_text + " is outside the map " + w.map_path +
-                        ", which spans x " + span(g.origin_x(), x_end) + " m and y " +
-                        span(g.origin_y(), y_end) +
-                        " m; " + fix(centre, "pick a free cell"));
+      throw ConfigError(src + ": " + start_text + " is outside the map " + w.map_path + ", which spans " +
+                        frame.extent_text() + "; " + fix(centre, "pick a free cell"));
     }
     if (!g.is_free(w.start)) {
       const char* state = g.is_occupied(w.start) ? "occupied" : "unknown";

@@ -26,16 +26,17 @@ const TaskRow& task_row(const Phase& phase) {
 void resolve_mission(config::World& world, const std::string& source) {
   config::Problems problems(source);
   const auto phases = config::mission_phases(world.scenario);
-  const auto field = [&](std::size_t i) { return "mission.phase[" + std::to_string(i) + "]." + task_row(phases[i]).name; };
+  std::vector<const TaskRow*> rows;
+  std::vector<std::string> fields;  // "mission.phase[i].TASK"
   for (std::size_t i = 0; i < phases.size(); ++i) {
-    const TaskRow& row = task_row(phases[i]);
-    if (row.check) row.check(phases[i], world, field(i), problems);
+    rows.push_back(&task_row(phases[i]));
+    fields.push_back("mission.phase[" + std::to_string(i) + "]." + rows.back()->name);
+    if (rows.back()->check) rows.back()->check(phases[i], world, fields.back(), problems);
   }
   problems.throw_if_any();
   world.phase_data.assign(phases.size(), {});
   for (std::size_t i = 0; i < phases.size(); ++i) {
-    const TaskRow& row = task_row(phases[i]);
-    if (row.resolve) world.phase_data[i] = row.resolve(phases[i], world, source + ": " + field(i));
+    if (rows[i]->resolve) world.phase_data[i] = rows[i]->resolve(phases[i], world, source + ": " + fields[i]);
   }
 }
 

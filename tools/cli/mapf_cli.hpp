@@ -11,41 +11,51 @@
 
 namespace swarm::tools {
 
+// GA flags shared by both commands (the parameters the paper does not give: ga.hpp); each sets
+// its option only when given, so the options' own defaults stand otherwise.
+struct GaFlags {
+  int population = 0, g1 = 0, g2 = 0, elite = 0, idle = 0;
+  double crossover = 0, mutation = 0;
+  CLI::Option *pop_opt = nullptr, *g1_opt = nullptr, *g2_opt = nullptr, *elite_opt = nullptr, *idle_opt = nullptr,
+              *cross_opt = nullptr, *mut_opt = nullptr;
+
+  void add_to(CLI::App* c) {
+    pop_opt = c->add_option("--ga-population", population, "GA: chromosomes per generation (default 100)")->check(CLI::PositiveNumber);
+    g1_opt = c->add_option("--ga-generations1", g1, "GA: stage-1 generations (paper: 500)")->check(CLI::NonNegativeNumber);
+    g2_opt = c->add_option("--ga-generations2", g2, "GA: stage-2 generations (paper: 500)")->check(CLI::NonNegativeNumber);
+    elite_opt = c->add_option("--ga-elite", elite, "GA: best chromosomes kept each generation (default 1)")->check(CLI::NonNegativeNumber);
+    idle_opt = c->add_option("--ga-initial-idle", idle, "GA: initial idle genes uniform in [0, N] (default 1)")->check(CLI::NonNegativeNumber);
+    cross_opt = c->add_option("--ga-crossover", crossover, "GA: crossover probability (default 0.9)")->check(CLI::Range(0.0, 1.0));
+    mut_opt = c->add_option("--ga-mutation", mutation, "GA: mutation probability per child (default 0.2)")->check(CLI::Range(0.0, 1.0));
+  }
+  // MapfOptions or MapfExperimentOptions: their ga_* fields.
+  template <class Options>
+  void apply(Options& o) const {
+    if (pop_opt->count()) o.ga_population = population;
+    if (g1_opt->count()) o.ga_generations1 = g1;
+    if (g2_opt->count()) o.ga_generations2 = g2;
+    if (elite_opt->count()) o.ga_elite = elite;
+    if (idle_opt->count()) o.ga_initial_idle = idle;
+    if (cross_opt->count()) o.ga_crossover = crossover;
+    if (mut_opt->count()) o.ga_mutation = mutation;
+  }
+};
+
 struct MapfCli {
   MapfOptions options;
   CLI::App* command = nullptr;
-  int agents = 0, random = 0, ga_population = 0, ga_g1 = 0, ga_g2 = 0, ga_elite = 0, ga_idle = 0;
-  double ga_crossover = 0, ga_mutation = 0;
-  CLI::Option *agents_opt = nullptr, *random_opt = nullptr, *pop_opt = nullptr, *g1_opt = nullptr, *g2_opt = nullptr,
-              *elite_opt = nullptr, *idle_opt = nullptr, *cross_opt = nullptr, *mut_opt = nullptr;
+  int agents = 0, random = 0;
+  CLI::Option *agents_opt = nullptr, *random_opt = nullptr;
+  GaFlags ga;
 
-  [[nodiscard]] bool parsed() const { return command->parsed(); }
   [[nodiscard]] MapfOptions resolved() const {
     MapfOptions o = options;
     if (agents_opt->count()) o.agents = agents;
     if (random_opt->count()) o.random = random;
-    if (pop_opt->count()) o.ga_population = ga_population;
-    if (g1_opt->count()) o.ga_generations1 = ga_g1;
-    if (g2_opt->count()) o.ga_generations2 = ga_g2;
-    if (elite_opt->count()) o.ga_elite = ga_elite;
-    if (idle_opt->count()) o.ga_initial_idle = ga_idle;
-    if (cross_opt->count()) o.ga_crossover = ga_crossover;
-    if (mut_opt->count()) o.ga_mutation = ga_mutation;
+    ga.apply(o);
     return o;
   }
 };
-
-// GA flags shared by both commands (the parameters the paper does not give: ga.hpp).
-template <class Cli>
-void add_ga_flags(CLI::App* c, Cli& cli) {
-  cli.pop_opt = c->add_option("--ga-population", cli.ga_population, "GA: chromosomes per generation (default 100)")->check(CLI::PositiveNumber);
-  cli.g1_opt = c->add_option("--ga-generations1", cli.ga_g1, "GA: stage-1 generations (paper: 500)")->check(CLI::NonNegativeNumber);
-  cli.g2_opt = c->add_option("--ga-generations2", cli.ga_g2, "GA: stage-2 generations (paper: 500)")->check(CLI::NonNegativeNumber);
-  cli.elite_opt = c->add_option("--ga-elite", cli.ga_elite, "GA: best chromosomes kept each generation (default 1)")->check(CLI::NonNegativeNumber);
-  cli.idle_opt = c->add_option("--ga-initial-idle", cli.ga_idle, "GA: initial idle genes uniform in [0, N] (default 1)")->check(CLI::NonNegativeNumber);
-  cli.cross_opt = c->add_option("--ga-crossover", cli.ga_crossover, "GA: crossover probability (default 0.9)")->check(CLI::Range(0.0, 1.0));
-  cli.mut_opt = c->add_option("--ga-mutation", cli.ga_mutation, "GA: mutation probability per child (default 0.2)")->check(CLI::Range(0.0, 1.0));
-}
 
 inline std::unique_ptr<MapfCli> add_mapf_cli(CLI::App& app) {
   auto cli = std::make_unique<MapfCli>();
@@ -70,28 +80,18 @@ inline std::unique_ptr<MapfCli> add_mapf_cli(CLI::App& app) {
   c->add_flag("--last-node-on-timeout", o.last_node_on_timeout, "CBS/ECBS: on timeout return the last CT node explored (the paper's rule)");
   c->add_flag("--refine", o.refine, "LaCAM*: improve the sum of costs until the time limit");
   c->add_option("--scale", o.scale, "Pixels per cell in pictures (default: fit ~900 pixels)")->check(CLI::NonNegativeNumber);
-  add_ga_flags(c, *cli);
+  cli->ga.add_to(c);
   return cli;
 }
 
 struct ExperimentMapfCli {
   MapfExperimentOptions options;
   CLI::App* command = nullptr;
-  int ga_population = 0, ga_g1 = 0, ga_g2 = 0, ga_elite = 0, ga_idle = 0;
-  double ga_crossover = 0, ga_mutation = 0;
-  CLI::Option *pop_opt = nullptr, *g1_opt = nullptr, *g2_opt = nullptr, *elite_opt = nullptr, *idle_opt = nullptr,
-              *cross_opt = nullptr, *mut_opt = nullptr;
+  GaFlags ga;
 
-  [[nodiscard]] bool parsed() const { return command->parsed(); }
   [[nodiscard]] MapfExperimentOptions resolved() const {
     MapfExperimentOptions o = options;
-    if (pop_opt->count()) o.ga_population = ga_population;
-    if (g1_opt->count()) o.ga_generations1 = ga_g1;
-    if (g2_opt->count()) o.ga_generations2 = ga_g2;
-    if (elite_opt->count()) o.ga_elite = ga_elite;
-    if (idle_opt->count()) o.ga_initial_idle = ga_idle;
-    if (cross_opt->count()) o.ga_crossover = ga_crossover;
-    if (mut_opt->count()) o.ga_mutation = ga_mutation;
+    ga.apply(o);
     return o;
   }
 };
@@ -118,7 +118,7 @@ inline std::unique_ptr<ExperimentMapfCli> add_experiment_mapf_cli(CLI::App* expe
   c->add_option("--jobs", o.jobs, "Solves at once (each on one core)")->capture_default_str();
   c->add_option("--seed", o.seed, "(a) instance r uses seed + r")->capture_default_str();
   c->add_option("--out", o.out_dir, "Output directory; default runs/experiment-mapf-<time>");
-  add_ga_flags(c, *cli);
+  cli->ga.add_to(c);
   return cli;
 }
 

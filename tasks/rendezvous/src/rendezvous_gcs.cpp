@@ -8,14 +8,9 @@ namespace swarm::gcs {
 
 using planner::Cell;
 
-namespace {
-// Where the robots gather: the point's cell (clamped into the map: config checks it lies inside),
-// or the run's start.
-Cell target_cell(const swarm::scenario::Rendezvous& c, const GcsContext& ctx, const planner::OccupancyGrid& map) {
-  if (!c.has_point()) return ctx.setup.world.start;
-  return map.cell_at(c.point().x(), c.point().y());
+Cell rendezvous_target(const swarm::scenario::Rendezvous& c, Cell start, const planner::OccupancyGrid& map) {
+  return c.has_point() ? map.cell_at(c.point().x(), c.point().y()) : start;
 }
-}  // namespace
 
 RendezvousGcsTask::RendezvousGcsTask(const swarm::scenario::Rendezvous& config, const swarm::scenario::Mapf& paths,
                                      std::uint32_t phase, bool map_given)
@@ -27,7 +22,7 @@ std::vector<Cell> RendezvousGcsTask::pick(const GcsContext& ctx, const planner::
                                           const std::vector<int>& robots) {
   std::vector<Cell> at;
   for (const int r : robots) at.push_back(ctx.cell_of(r));
-  const tasks::rendezvous::Gathering g = tasks::rendezvous::gather(map, target_cell(config_, ctx, map), at);
+  const tasks::rendezvous::Gathering g = tasks::rendezvous::gather(map, rendezvous_target(config_, ctx.setup.world.start, map), at);
   centre_ = g.centre;
   cells_ = g.cells.size();
   path_sum_ = g.path_sum;

@@ -59,19 +59,22 @@ class RendezvousJudge : public sim::PhaseJudge {
   Cell target_;
 };
 
-Cell target_of(const swarm::scenario::Rendezvous& r, const config::World& world, const planner::OccupancyGrid& map) {
-  return r.has_point() ? map.cell_at(r.point().x(), r.point().y()) : world.start;
-}
-
 }  // namespace
 
-swarm::scenario::Mapf rendezvous_paths(const swarm::scenario::Rendezvous& r, const swarm::scenario::Scenario& s) {
+namespace {
+// The mapf settings a rendezvous drives its robots by, as the scenario gives them.
+swarm::scenario::Mapf paths_as_given(const swarm::scenario::Rendezvous& r) {
   swarm::scenario::Mapf m;
   m.set_solver(r.solver());
   m.set_w(r.w());
   m.set_time_limit_s(r.time_limit_s());
   m.set_execution(r.execution());
-  return config::resolved_mapf(m, s);
+  return m;
+}
+}  // namespace
+
+swarm::scenario::Mapf rendezvous_paths(const swarm::scenario::Rendezvous& r, const swarm::scenario::Scenario& s) {
+  return config::resolved_mapf(paths_as_given(r), s);
 }
 
 TaskRow rendezvous_row() {
@@ -88,15 +91,11 @@ TaskRow rendezvous_row() {
     return std::make_unique<leader::MapfGroupTask>(rendezvous_paths(phase.rendezvous(), setup.world.scenario), group);
   };
   row.judge = [](const Phase& phase, const app::RoleSetup& setup, std::uint32_t) {
-    return std::make_unique<RendezvousJudge>(target_of(phase.rendezvous(), setup.world, setup.world.truth));
+    return std::make_unique<RendezvousJudge>(gcs::rendezvous_target(phase.rendezvous(), setup.world.start, setup.world.truth));
   };
   row.check = [](const Phase& phase, const config::World& world, const std::string& field, config::Problems& p) {
     const auto& r = phase.rendezvous();
-    swarm::scenario::Mapf paths;
-    paths.set_w(r.w());
-    paths.set_time_limit_s(r.time_limit_s());
-    paths.set_execution(r.execution());
-    check_mapf_paths(paths, world.scenario, field, p);
+    check_mapf_paths(paths_as_given(r), world.scenario, field, p);
     if (r.has_point() && r.home()) p.add(field, "give point or home: true, not both", "both");
     if (!r.has_point()) return;
     const auto& at = r.point();

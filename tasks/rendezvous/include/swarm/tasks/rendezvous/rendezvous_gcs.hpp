@@ -17,6 +17,11 @@
 
 namespace swarm::gcs {
 
+// Where a rendezvous gathers the robots: its point's cell on `map` (config checks the point lies
+// on the map), or `start`, the run's start, for home.
+[[nodiscard]] planner::Cell rendezvous_target(const swarm::scenario::Rendezvous& config, planner::Cell start,
+                                              const planner::OccupancyGrid& map);
+
 class RendezvousGcsTask : public GcsTask {
  public:
   // `paths`: how the plan is made and driven (a mapf phase's settings, without goals).
