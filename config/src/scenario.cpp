@@ -17,6 +17,7 @@
 #include <fstream>
 #include <optional>
 #include <regex>
+#include <memory>
 #include <sstream>
 
 namespace swarm::config {
@@ -401,11 +402,13 @@ void validate(const Scenario& s, const std::string& source) {
   p.throw_if_any();
 }
 
-std::string task_name(const swarm::scenario::Phase& phase) {
+const pb::FieldDescriptor& task_field(const swarm::scenario::Phase& phase) {
   const pb::FieldDescriptor* f = phase.GetReflection()->GetOneofFieldDescriptor(phase, &task_oneof());
   // A phase that names none runs the oneof's first task (exploration), as the default mission does.
-  return (f == nullptr ? task_oneof().field(0) : f)->name();
+  return f == nullptr ? *task_oneof().field(0) : *f;
 }
+
+std::string task_name(const swarm::scenario::Phase& phase) { return task_field(phase).name(); }
 
 std::vector<std::string> task_names() {
   std::vector<std::string> out;
@@ -421,12 +424,23 @@ int leader_standbys(const Scenario& s) {
 std::vector<swarm::scenario::Phase> mission_phases(const Scenario& s) {
   std::vector<swarm::scenario::Phase> out;
   for (const auto& ph : s.mission().phase()) out.push_back(ph);
-  if (out.empty()) out.emplace_back().mutable_explore();
+  if (out.empty()) {
+    auto& ph = out.emplace_back();
+    ph.GetReflection()->MutableMessage(&ph, task_oneof().field(0));
+  }
+  const pb::Descriptor& top = *Scenario::descriptor();
   for (auto& ph : out) {
-    if (!ph.has_explore()) continue;
-    swarm::scenario::Explore merged = s.explore();
-    merged.MergeFrom(ph.explore());
-    *ph.mutable_explore() = merged;
+    if (ph.task_case() == swarm::scenario::Phase::TASK_NOT_SET) continue;  // validate() refuses it
+    const pb::FieldDescriptor& task = task_field(ph);
+    for (int i = 0; i < top.field_count(); ++i) {
+      const pb::FieldDescriptor* defaults = top.field(i);
+      if (defaults->is_repeated() || defaults->message_type() != task.message_type()) continue;
+      pb::Message* own = ph.GetReflection()->MutableMessage(&ph, &task);
+      std::unique_ptr<pb::Message> merged(own->New());
+      merged->CopyFrom(s.GetReflection()->GetMessage(s, defaults));
+      merged->MergeFrom(*own);
+      own->CopyFrom(*merged);
+    }
   }
   return out;
 }

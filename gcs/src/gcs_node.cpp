@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "swarm/app/convert.hpp"
+#include "swarm/app/task_wire.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/planner/grid/map_patch.hpp"
 #include "swarm/record/metrics.hpp"
@@ -20,6 +21,14 @@ using nlohmann::json;
 namespace topic = comm::topic;
 
 namespace {
+
+// The encoding whole maps travel in (task orders, planning rounds) for the run's map_encoding:
+// run-length, zstd-compressed when the run's encoding is ZstdRunLength.
+planner::PatchEncoding map_encoding(const app::RoleSetup& setup) {
+  return app::patch_encoding(setup.world.scenario.map_encoding()) == planner::PatchEncoding::ZstdRunLength
+             ? planner::PatchEncoding::ZstdRunLength
+             : planner::PatchEncoding::RunLength;
+}
 
 MissionConfig mission_config(const app::RoleSetup& setup) {
   const auto& s = setup.world.scenario;
@@ -92,11 +101,21 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const 
   auto& phase = agent.advertise<msgs::PhaseStart>(topic::kPhase, LinkClass::LeaderGcs, leaders_and_sim);
   auto& order = agent.advertise<msgs::TaskOrder>(topic::kTaskOrder, LinkClass::LeaderGcs, leaders);
   auto& round = agent.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, leaders);
-  outlets_.order = [this, &order](msgs::TaskOrder& o) {
-    o.phase(phase_);
-    order.send(o);
+  outlets_.order = [this, &order](const task::Order& o) {
+    msgs::TaskOrder m = app::order_msg(o, phase_, map_encoding(setup_));
+    order.send(m);
   };
-  outlets_.round = [&round](msgs::RoundStart& r) { round.send(r); };
+  outlets_.round = [this, &round](std::uint32_t index, std::uint32_t fused_tick, const planner::OccupancyGrid& map) {
+    const planner::PatchEncoding encoding = map_encoding(setup_);
+    msgs::RoundStart r;
+    r.round(index);
+    r.fused_tick(fused_tick);
+    r.width(static_cast<std::uint16_t>(map.width()));
+    r.height(static_cast<std::uint16_t>(map.height()));
+    r.encoding(static_cast<std::uint8_t>(encoding));
+    r.map_rle(app::encode_map(map, encoding));
+    round.send(r);
+  };
   announce_phase_ = [&phase](std::uint32_t index, const std::string& task) {
     msgs::PhaseStart p;
     p.phase(index);
@@ -202,18 +221,19 @@ bool GcsNode::step(const msgs::Clock& clock) {
   }
   record_.append(poses);
 
-  GcsContext ctx{setup_, phase_, clock, mission_, record_, outlets_};
+  const task::Clock tick_clock = app::task_clock(clock, setup_.topology);
+  GcsContext ctx{setup_, phase_, tick_clock, mission_, record_, outlets_};
   if (phase_starts_.empty()) {
     phase_starts_.push_back(clock.tick());
     record_phase(clock.tick(), false, false);
     tasks_[phase_]->start(ctx);
   }
-  for (const auto& st : statuses_) tasks_[phase_]->on_group_status(st, ctx);
+  for (const auto& st : statuses_) tasks_[phase_]->on_round_done(st.group(), st.round(), ctx);
   statuses_.clear();
   for (const auto& r : task_reports_) {
     if (r.phase() != phase_) continue;
     try {
-      tasks_[phase_]->on_report(r, ctx);  // decodes the report's cells
+      tasks_[phase_]->on_report(app::report_from(r), ctx);
     } catch (const std::exception& e) {
       agent_.drop_malformed(comm::topic::kTaskReport, r.header().sender(), e.what());
     }

@@ -1,8 +1,5 @@
 #include "swarm/gcs/gcs_task.hpp"
 
-#include "swarm/app/convert.hpp"
-#include "swarm/config/scenario.hpp"
-#include "swarm/config/task_config.hpp"
 #include "swarm/planner/grid/map_patch.hpp"
 
 namespace swarm::gcs {
@@ -32,12 +29,6 @@ record::Frame route_frame(std::uint32_t tick, std::uint32_t phase, int robot, co
   }
   if (region_cells > 0) rp->set_region_cells(region_cells);
   return f;
-}
-
-planner::PatchEncoding map_encoding(const app::RoleSetup& setup) {
-  return app::patch_encoding(setup.world.scenario.map_encoding()) == planner::PatchEncoding::ZstdRunLength
-             ? planner::PatchEncoding::ZstdRunLength
-             : planner::PatchEncoding::RunLength;
 }
 
 }  // namespace swarm::gcs

@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "swarm/app/convert.hpp"
+#include "swarm/app/task_wire.hpp"
 #include "swarm/comm/leadership.hpp"
-#include "swarm/comm/task_codes.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/member/member_node.hpp"
 #include "swarm/planner/grid/map_patch.hpp"
@@ -19,8 +19,7 @@ using planner::Cell;
 namespace topic = comm::topic;
 
 planner::Cell GroupContext::leader_cell(int g) const {
-  const comm::AgentId a = comm::leader_in(clock, setup.topology, g);
-  return {clock.robots()[a].x(), clock.robots()[a].y()};
+  return clock.robots[static_cast<std::size_t>(clock.leaders[static_cast<std::size_t>(g)])].cell;
 }
 
 std::vector<int> GroupContext::living() const {
@@ -68,10 +67,8 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, 
     release = &agent.advertise<msgs::RouteRelease>(topic::release(group), LinkClass::MemberLeader, others);
   }
   // The task's outlets; the leader's own robot (self_index_) is told directly.
-  outlets_.route = [this, route](int index, msgs::Route& r) {
-    r.robot(topology_.robot(group_, index));
-    r.phase(phase_);
-    r.route_id(++route_ids_);
+  outlets_.route = [this, route](int index, const task::Route& plan) {
+    msgs::Route r = app::route_msg(plan, phase_, topology_.robot(group_, index), ++route_ids_);
     if (index == self_index_) {
       member::follow_route(robot_, r);
     } else if (route != nullptr) {
@@ -79,24 +76,39 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, 
     }
     return r.route_id();
   };
-  outlets_.release = [this, release](int index, msgs::RouteRelease& r) {
-    r.robot(topology_.robot(group_, index));
+  outlets_.release = [this, release](int index, std::uint32_t route_id, std::uint32_t step) {
     if (index == self_index_) {
-      robot_.release(r.route_id(), r.release());
+      robot_.release(route_id, step);
     } else if (release != nullptr) {
+      msgs::RouteRelease r;
+      r.robot(topology_.robot(group_, index));
+      r.route_id(route_id);
+      r.release(step);
       release->send(r);
     }
   };
-  outlets_.report = [this, &task_report](msgs::TaskReport& r) {
-    r.phase(phase_);
-    r.group(static_cast<std::uint16_t>(group_));
-    task_report.send(r);
+  outlets_.report = [this, &task_report](const task::Report& r) {
+    msgs::TaskReport m = app::report_msg(r, phase_);
+    m.group(static_cast<std::uint16_t>(group_));
+    task_report.send(m);
   };
-  outlets_.assignment = [assign](msgs::Assignment& a) {
-    if (assign != nullptr) assign->send(a);
+  outlets_.waypoints = [assign](std::uint32_t round, const std::vector<std::optional<Cell>>& waypoints) {
+    if (assign == nullptr) return;
+    msgs::Assignment a;
+    a.round(round);
+    a.waypoints_xy(app::to_xy(waypoints));
+    assign->send(a);
   };
-  outlets_.group_status = [&group_status](msgs::GroupStatus& s) { group_status.send(s); };
-  outlets_.plan_report = [&plan_report](msgs::PlanReport& p) { plan_report.send(p); };
+  outlets_.round_done = [this, &group_status](std::uint32_t round) {
+    msgs::GroupStatus s;
+    s.group(static_cast<std::uint16_t>(group_));
+    s.round(round);
+    group_status.send(s);
+  };
+  outlets_.plan_telemetry = [this, &plan_report](const task::PlanTelemetry& p) {
+    msgs::PlanReport m = app::plan_report_msg(p, group_);
+    plan_report.send(m);
+  };
 
   // Subscription order fixes the order in which same-tick messages are handled. A standby (not
   // leading) keeps only the group map up to date from what it hears, and the GCS's latest phase,
@@ -131,7 +143,7 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, 
                                     [this](const msgs::PhaseStart& p) { next_phase_ = p.phase(); },
                                     comm::Delivery::Reliable, 1);
   agent.subscribe<msgs::TaskOrder>(topic::kTaskOrder, LinkClass::LeaderGcs, [this](const msgs::TaskOrder& o) {
-    if (o.group() == group_ || o.group() == comm::task::kAllGroups) orders_.push_back(o);
+    if (o.group() == group_ || o.group() == task::kAllGroups) orders_.push_back(o);
   }, comm::Delivery::Reliable, 1);
 }
 
@@ -205,28 +217,28 @@ void LeaderNode::learn(const std::vector<planner::CellChange>& fresh, bool own_o
   robot_.learn(fresh);
 }
 
-void LeaderNode::track_members(GroupContext& ctx) {
+void LeaderNode::track_members(const msgs::Clock& clock, GroupContext& ctx) {
   // A member the simulator lost gets no more work and nobody waits for it; one that comes back
   // (its link healed) is planned for again.
   for (int i = 0; i < topology_.robots_per_group(); ++i) {
     if (i == self_index_) continue;
-    const bool alive = ctx.clock.robots()[topology_.robot(group_, i)].alive();
+    const bool alive = clock.robots()[topology_.robot(group_, i)].alive();
     if (alive == alive_[static_cast<std::size_t>(i)]) continue;
     alive_[static_cast<std::size_t>(i)] = alive;
     const std::string name = topology_.name_of(topology_.robot(group_, i));
     if (!alive) {
-      members_lost_.push_back({name, ctx.clock.tick(), std::nullopt});
+      members_lost_.push_back({name, clock.tick(), std::nullopt});
       tasks_[phase_]->member_lost(i, ctx);
     } else {
       if (auto it = std::find_if(members_lost_.rbegin(), members_lost_.rend(),
                                  [&](const MemberLoss& l) { return l.name == name; });
           it != members_lost_.rend()) {
-        it->rejoined_tick = ctx.clock.tick();
+        it->rejoined_tick = clock.tick();
       }
       tasks_[phase_]->member_back(i, ctx);
     }
     std::fprintf(stderr, "%s: %s %s at tick %u\n", topology_.name_of(agent_.self()).c_str(), name.c_str(),
-                 alive ? "is back; planning for it again" : "lost; planning without it", ctx.clock.tick());
+                 alive ? "is back; planning for it again" : "lost; planning without it", clock.tick());
   }
 }
 
@@ -235,13 +247,13 @@ void LeaderNode::dispatch(GroupContext& ctx) {
   for (const auto& o : orders_) {
     if (o.phase() != phase_) continue;
     try {
-      task.on_order(o, ctx);  // decodes the order's cells, maps and routes
+      task.on_order(app::order_from(o, setup_.world.frame), ctx);
     } catch (const std::exception& e) {
       agent_.drop_malformed(comm::topic::kTaskOrder, o.header().sender(), e.what());
     }
   }
   orders_.clear();
-  for (const auto& s : statuses_) task.on_member_status(s, ctx);
+  for (const auto& s : statuses_) task.on_waypoint(app::waypoint_report_from(s), ctx);
   statuses_.clear();
   for (const auto& p : progress_) {
     task.on_carrying(topology_.index_of(p.robot()), p.carrying(), ctx);
@@ -258,14 +270,15 @@ void LeaderNode::dispatch(GroupContext& ctx) {
 
 void LeaderNode::step(const msgs::Clock& clock) {
   enter_phase();
-  GroupContext ctx{setup_, group_, self_index_, phase_, clock, alive_, map_, robot_, outlets_};
+  const task::Clock now = app::task_clock(clock, topology_);
+  GroupContext ctx{setup_, group_, self_index_, phase_, now, alive_, map_, robot_, outlets_};
   if (!started_) {
     tasks_[phase_]->start(ctx);
     if (taking_over_) tasks_[phase_]->took_over(ctx);
     started_ = true;
     taking_over_ = false;
   }
-  track_members(ctx);
+  track_members(clock, ctx);
   // The GCS restarted (Clock.counted_from, comm/lockstep.hpp "Restart"): what it missed, again.
   if (const auto& from = clock.counted_from(); from.size() > topology_.gcs() && from[topology_.gcs()] > gcs_back_at_) {
     gcs_back_at_ = from[topology_.gcs()];
@@ -281,14 +294,10 @@ void LeaderNode::step(const msgs::Clock& clock) {
   dispatch(ctx);
   tasks_[phase_]->step(ctx);
 
-  const member::RobotAgent::Step s = robot_.step(ctx.clock.tick());
+  const member::RobotAgent::Step s = robot_.step(clock.tick());
   member::publish_motion(motion_, agent_.self(), s);
   if (s.report) {
-    msgs::MemberStatus own;
-    own.robot(agent_.self());
-    own.round(s.round);
-    own.state(static_cast<std::uint8_t>(*s.report));
-    tasks_[phase_]->on_member_status(own, ctx);
+    tasks_[phase_]->on_waypoint({static_cast<int>(agent_.self()), s.round, static_cast<std::uint8_t>(*s.report)}, ctx);
   }
   if (!own_carrying_ || *own_carrying_ != robot_.carrying()) {
     own_carrying_ = robot_.carrying();

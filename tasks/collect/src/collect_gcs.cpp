@@ -6,11 +6,10 @@
 #include <limits>
 
 #include "swarm/comm/link.hpp"
-#include "swarm/comm/task_codes.hpp"
+#include "swarm/tasks/collect/object_facts.hpp"
 
 namespace swarm::gcs {
 
-namespace task = comm::task;
 
 CollectGcsTask::CollectGcsTask(const swarm::scenario::Collect& config, std::uint32_t phase)
     : config_(config), phase_(phase) {}
@@ -27,7 +26,7 @@ void CollectGcsTask::start(GcsContext& ctx) {
   seq_.assign(static_cast<std::size_t>(t.groups()), 1);
   owner_.assign(world_.objects.size(), -1);
   known_.clear();
-  for (const auto& o : world_.objects) known_.push_back({task::kObjectLying, o.cell.x, o.cell.y});
+  for (const auto& o : world_.objects) known_.push_back({collect::kObjectLying, o.cell.x, o.cell.y});
   leader_.clear();
   for (int g = 0; g < t.groups(); ++g) leader_.push_back(ctx.leader_of(g));
   resume_at_.assign(static_cast<std::size_t>(t.groups()), std::nullopt);
@@ -51,23 +50,23 @@ void CollectGcsTask::start(GcsContext& ctx) {
     objects_of_group_[static_cast<std::size_t>(g)] = static_cast<int>(mine.size());
     done_[static_cast<std::size_t>(g)] = mine.empty();
     for (std::int32_t id : mine) owner_[static_cast<std::size_t>(id)] = g;
-    msgs::TaskOrder o;
-    o.group(static_cast<std::uint16_t>(g));
-    o.kind(task::kOrderWork);
-    o.seq(seq_[static_cast<std::size_t>(g)]);
-    o.values(std::move(mine));
+    task::Order o;
+    o.group = static_cast<std::uint16_t>(g);
+    o.kind = task::OrderKind::Work;
+    o.seq = seq_[static_cast<std::size_t>(g)];
+    o.values = std::move(mine);
     ctx.out.order(o);
   }
 }
 
-void CollectGcsTask::on_report(const msgs::TaskReport& r, GcsContext&) {
-  if (r.group() >= done_.size() || r.values().empty()) return;
-  if (static_cast<std::uint32_t>(r.values()[0]) != seq_[r.group()]) return;  // for an order since replaced
-  if (r.state() == task::kDone) done_[r.group()] = true;
-  const auto& v = r.values();
+void CollectGcsTask::on_report(const task::Report& r, GcsContext&) {
+  if (r.group >= done_.size() || r.values.empty()) return;
+  if (static_cast<std::uint32_t>(r.values[0]) != seq_[r.group]) return;  // for an order since replaced
+  if (r.state == task::GroupState::Done) done_[r.group] = true;
+  const auto& v = r.values;
   for (std::size_t k = 1; k + 3 < v.size(); k += 4) {
     const auto id = static_cast<std::size_t>(v[k]);
-    if (v[k] < 0 || id >= owner_.size() || owner_[id] != r.group()) continue;  // not the group's
+    if (v[k] < 0 || id >= owner_.size() || owner_[id] != r.group) continue;  // not the group's
     known_[id] = {v[k + 1], v[k + 2], v[k + 3]};
   }
 }
@@ -76,15 +75,15 @@ void CollectGcsTask::send_resume(int g, GcsContext& ctx) {
   const auto gu = static_cast<std::size_t>(g);
   std::vector<std::int32_t> values;
   for (std::size_t id = 0; id < owner_.size(); ++id) {
-    if (owner_[id] != g || known_[id][0] == task::kObjectDelivered) continue;
+    if (owner_[id] != g || known_[id][0] == collect::kObjectDelivered) continue;
     values.push_back(static_cast<std::int32_t>(id));
     values.insert(values.end(), known_[id].begin(), known_[id].end());
   }
-  msgs::TaskOrder o;
-  o.group(static_cast<std::uint16_t>(g));
-  o.kind(task::kOrderResume);
-  o.seq(++seq_[gu]);
-  o.values(values);
+  task::Order o;
+  o.group = static_cast<std::uint16_t>(g);
+  o.kind = task::OrderKind::Resume;
+  o.seq = ++seq_[gu];
+  o.values = values;
   ctx.out.order(o);
   ++resumes_;
   std::fprintf(stderr, "gcs: collect: group %d resumed by %s at tick %u with %zu objects\n", g,
@@ -113,7 +112,7 @@ void CollectGcsTask::step(GcsContext& ctx) {
 
 int CollectGcsTask::delivered_known() const {
   int n = 0;
-  for (const auto& k : known_) n += k[0] == task::kObjectDelivered ? 1 : 0;
+  for (const auto& k : known_) n += k[0] == collect::kObjectDelivered ? 1 : 0;
   return n;
 }
 

@@ -6,16 +6,14 @@
 #include <cstdio>
 #include <limits>
 
-#include "swarm/app/convert.hpp"
 #include "swarm/comm/link.hpp"
-#include "swarm/comm/task_codes.hpp"
+#include "swarm/tasks/collect/object_facts.hpp"
 #include "swarm/planner/grid/astar.hpp"
 #include "swarm/planner/coverage/cover_routes.hpp"
 #include "swarm/planner/tours/tour.hpp"
 
 namespace swarm::leader {
 
-namespace task = comm::task;
 using planner::Cell;
 
 namespace {
@@ -39,7 +37,7 @@ void CollectGroupTask::start(GroupContext&) {
   told_.clear();
   for (const auto& o : world_.objects) {
     where_.push_back(o.cell);
-    told_.push_back({task::kObjectLying, o.cell.x, o.cell.y});
+    told_.push_back({collect::kObjectLying, o.cell.x, o.cell.y});
   }
   for (Robot& r : robots_) r = Robot{};
   holds_.assign(robots_.size(), std::nullopt);
@@ -55,7 +53,7 @@ void CollectGroupTask::took_over(GroupContext& ctx) {
   }
   // Every living member sends what it holds to a new leader at once: all heard the tick after its
   // last arrival.
-  grippers_heard_by_ = comm::last_arrival_tick(ctx.setup.links[comm::LinkClass::MemberLeader], ctx.clock.tick()) + 1;
+  grippers_heard_by_ = comm::last_arrival_tick(ctx.setup.links[comm::LinkClass::MemberLeader], ctx.clock.tick) + 1;
 }
 
 void CollectGroupTask::on_carrying(int index, const std::vector<std::uint32_t>& objects, GroupContext&) {
@@ -70,26 +68,26 @@ void check_object(std::int64_t id, std::size_t objects) {
 }
 }  // namespace
 
-void CollectGroupTask::on_order(const msgs::TaskOrder& o, GroupContext& ctx) {
-  if (o.kind() == task::kOrderResume) {
-    if (o.values().size() % 4 != 0) throw std::runtime_error("a collect resume order's values are not (object, what, a, b) sets");
-    for (std::size_t k = 0; k < o.values().size(); k += 4) check_object(o.values()[k], world_.objects.size());
-    if (resuming_ && (!resume_order_ || o.seq() > resume_order_->seq())) resume_order_ = o;
+void CollectGroupTask::on_order(const task::Order& o, GroupContext& ctx) {
+  if (o.kind == task::OrderKind::Resume) {
+    if (o.values.size() % 4 != 0) throw std::runtime_error("a collect resume order's values are not (object, what, a, b) sets");
+    for (std::size_t k = 0; k < o.values.size(); k += 4) check_object(o.values[k], world_.objects.size());
+    if (resuming_ && (!resume_order_ || o.seq > resume_order_->seq)) resume_order_ = o;
     return;
   }
-  if (o.kind() != task::kOrderWork || (have_order_ && o.seq() <= seq_)) return;
+  if (o.kind != task::OrderKind::Work || (have_order_ && o.seq <= seq_)) return;
   if (resuming_) return;  // a take-over starts from the resume order: what was done since this one
-  for (std::int32_t id : o.values()) check_object(id, world_.objects.size());
-  seq_ = o.seq();
+  for (std::int32_t id : o.values) check_object(id, world_.objects.size());
+  seq_ = o.seq;
   have_order_ = true;
-  mine_.assign(o.values().begin(), o.values().end());
+  mine_.assign(o.values.begin(), o.values.end());
   share(mine_, ctx);
   for (int i : ctx.living()) plan(i, ctx);
 }
 
 void CollectGroupTask::resume(GroupContext& ctx) {
-  const msgs::TaskOrder& o = *resume_order_;
-  seq_ = o.seq();
+  const task::Order& o = *resume_order_;
+  seq_ = o.seq;
   have_order_ = true;
   resuming_ = false;
   ++resumes_;
@@ -104,7 +102,7 @@ void CollectGroupTask::resume(GroupContext& ctx) {
     return -1;
   };
   std::vector<int> lying;
-  const auto& v = o.values();
+  const auto& v = o.values;
   for (std::size_t k = 0; k + 3 < v.size(); k += 4) {
     const int id = v[k];
     const auto idu = static_cast<std::size_t>(id);
@@ -113,7 +111,7 @@ void CollectGroupTask::resume(GroupContext& ctx) {
     state_[idu] = State::Waiting;
     carrier_[idu] = -1;
     int on = holder(static_cast<std::uint32_t>(id));
-    const bool carried = v[k + 1] == task::kObjectCarried && v[k + 2] >= 0 && v[k + 2] < t.robots() &&
+    const bool carried = v[k + 1] == collect::kObjectCarried && v[k + 2] >= 0 && v[k + 2] < t.robots() &&
                          t.group_of(static_cast<comm::AgentId>(v[k + 2])) == group_;
     const int was_on = carried ? t.index_of(static_cast<comm::AgentId>(v[k + 2])) : -1;
     // The report's holder, if its gripper was not heard: trust the report.
@@ -125,7 +123,7 @@ void CollectGroupTask::resume(GroupContext& ctx) {
       carrier_[idu] = on;
       where_[idu] = ctx.cell_of(on);  // its tour "picks it up" where it starts: it holds it already
       robots_[static_cast<std::size_t>(on)].pending.push_back(id);
-    } else if (v[k + 1] == task::kObjectDelivered) {
+    } else if (v[k + 1] == collect::kObjectDelivered) {
       state_[idu] = State::Delivered;
     } else if (was_on >= 0 && put_down_[static_cast<std::size_t>(was_on)]) {
       where_[idu] = *put_down_[static_cast<std::size_t>(was_on)];  // its robot was lost
@@ -150,7 +148,7 @@ void CollectGroupTask::resume(GroupContext& ctx) {
     if (robots_[static_cast<std::size_t>(i)].busy) continue;
     // No tour for it: it must not drive on along the old leader's, picking up what is now
     // another's. An empty route stops it where it stands.
-    msgs::Route stop;
+    const task::Route stop;
     robots_[static_cast<std::size_t>(i)].route_id = ctx.out.route(i, stop);
   }
 }
@@ -183,8 +181,8 @@ planner::OccupancyGrid CollectGroupTask::planning_map(const GroupContext& ctx) c
   // A lost robot stands where it stopped for good (the clock says who is lost, in every group):
   // tours and detours go round it.
   planner::OccupancyGrid map = known_map(ctx);
-  for (const auto& r : ctx.clock.robots()) {
-    if (!r.alive()) map.set({r.x(), r.y()}, planner::CellState::Occupied);
+  for (const task::RobotAt& r : ctx.clock.robots) {
+    if (!r.alive) map.set(r.cell, planner::CellState::Occupied);
   }
   return map;
 }
@@ -238,21 +236,21 @@ void CollectGroupTask::plan(int index, GroupContext& ctx) {
 
 void CollectGroupTask::send(int index, GroupContext& ctx, std::vector<Cell> cells) {
   Robot& r = robots_[static_cast<std::size_t>(index)];
-  msgs::Route m;
-  m.path_xy(app::to_xy(cells));
-  m.release(static_cast<std::uint32_t>(cells.size() - 1));
+  task::Route m;
+  m.path = cells;
+  m.release = static_cast<std::uint32_t>(cells.size() - 1);
   for (const auto& [id, step] : r.picks) {
-    if (step != kDone) m.pick_steps().push_back(step);
+    if (step != kDone) m.pick_steps.push_back(step);
   }
   for (const auto& [id, step] : r.delivers) {
-    if (step != kDone && std::find(m.drop_steps().begin(), m.drop_steps().end(), step) == m.drop_steps().end()) {
-      m.drop_steps().push_back(step);
+    if (step != kDone && std::find(m.drop_steps.begin(), m.drop_steps.end(), step) == m.drop_steps.end()) {
+      m.drop_steps.push_back(step);
     }
   }
   r.route_id = ctx.out.route(index, m);
   r.step = 0;
   r.busy = cells.size() > 1;
-  r.moved_tick = ctx.clock.tick();
+  r.moved_tick = ctx.clock.tick;
   r.cells = std::move(cells);
 }
 
@@ -262,8 +260,8 @@ void CollectGroupTask::reroute(int index, int waits, GroupContext& ctx) {
   const Cell here = r.cells[at];
   // Around the robots in the way if there is a way (a swap is never undone by waiting), else wait.
   std::vector<Cell> others;
-  for (const auto& s : ctx.clock.robots()) {
-    if (Cell{s.x(), s.y()} != here) others.push_back({s.x(), s.y()});
+  for (const task::RobotAt& s : ctx.clock.robots) {
+    if (s.cell != here) others.push_back(s.cell);
   }
   const planner::OccupancyGrid map = planning_map(ctx);
   // (4-connected, so legal under the tour's 8-connected motion too)
@@ -321,7 +319,7 @@ void CollectGroupTask::reroute(int index, int waits, GroupContext& ctx) {
 void CollectGroupTask::on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) {
   Robot& r = robots_[static_cast<std::size_t>(index)];
   if (p.id != r.route_id || r.cells.empty()) return;  // (a stop has no cells)
-  if (p.step > r.step) r.moved_tick = ctx.clock.tick();
+  if (p.step > r.step) r.moved_tick = ctx.clock.tick;
   reached(index, p.step);
   if (p.state == planner::RouteState::Finished) {
     r.busy = false;
@@ -374,7 +372,7 @@ void CollectGroupTask::member_lost(int index, GroupContext& ctx) {
   // Where the simulator put down what it carried: the same rule, from the same robot cells, on the
   // map the group knows (the cells around a robot are in its scans, so they agree with the truth).
   std::vector<Cell> robots;
-  for (const auto& s : ctx.clock.robots()) robots.push_back({s.x(), s.y()});
+  for (const task::RobotAt& s : ctx.clock.robots) robots.push_back(s.cell);
   const Cell at = planner::put_down_cell(known_map(ctx), ctx.cell_of(index), robots);
   put_down_[static_cast<std::size_t>(index)] = at;
   if (resuming_) return;  // what it held is judged with the resume order
@@ -416,31 +414,31 @@ void CollectGroupTask::report_changes(GroupContext& ctx) {
   const comm::Topology& t = ctx.topology();
   for (int id : mine_) {
     const auto idu = static_cast<std::size_t>(id);
-    std::array<std::int32_t, 3> now{task::kObjectLying, where_[idu].x, where_[idu].y};
-    if (state_[idu] == State::Delivered) now = {task::kObjectDelivered, 0, 0};
-    if (state_[idu] == State::Carried && carrier_[idu] >= 0) now = {task::kObjectCarried, t.robot(group_, carrier_[idu]), 0};
+    std::array<std::int32_t, 3> now{collect::kObjectLying, where_[idu].x, where_[idu].y};
+    if (state_[idu] == State::Delivered) now = {collect::kObjectDelivered, 0, 0};
+    if (state_[idu] == State::Carried && carrier_[idu] >= 0) now = {collect::kObjectCarried, t.robot(group_, carrier_[idu]), 0};
     if (now == told_[idu]) continue;
     told_[idu] = now;
     values.push_back(id);
     values.insert(values.end(), now.begin(), now.end());
   }
   if (values.size() == 1) return;
-  msgs::TaskReport report;
-  report.state(task::kWorking);
-  report.values(std::move(values));
+  task::Report report;
+  report.state = task::GroupState::Working;
+  report.values = std::move(values);
   ctx.out.report(report);
 }
 
 void CollectGroupTask::step(GroupContext& ctx) {
   if (resuming_) {
-    if (!resume_order_ || ctx.clock.tick() < grippers_heard_by_) return;
+    if (!resume_order_ || ctx.clock.tick < grippers_heard_by_) return;
     resume(ctx);
   }
   if (!have_order_ || reported_) return;
   for (int i : ctx.living()) {
     plan(i, ctx);  // an idle robot with objects waiting
     Robot& r = robots_[static_cast<std::size_t>(i)];
-    if (r.busy && ctx.clock.tick() >= r.moved_tick + kStallTicks && ctx.cell_of(i) == r.cells[r.step]) {
+    if (r.busy && ctx.clock.tick >= r.moved_tick + kStallTicks && ctx.cell_of(i) == r.cells[r.step]) {
       reroute(i, 1 + static_cast<int>(ctx.topology().robot(group_, i)), ctx);
     }
   }
@@ -448,9 +446,9 @@ void CollectGroupTask::step(GroupContext& ctx) {
   for (int id : mine_) {
     if (state_[static_cast<std::size_t>(id)] != State::Delivered) return;
   }
-  msgs::TaskReport report;
-  report.state(task::kDone);
-  report.values({static_cast<std::int32_t>(seq_)});
+  task::Report report;
+  report.state = task::GroupState::Done;
+  report.values = {static_cast<std::int32_t>(seq_)};
   ctx.out.report(report);
   reported_ = true;
 }

@@ -3,9 +3,8 @@
 #include <chrono>
 #include <cstdio>
 
-#include "swarm/app/convert.hpp"
-#include "swarm/comm/task_codes.hpp"
 #include "swarm/config/task_config.hpp"
+#include "swarm/tasks/cover/cover_settings.hpp"
 #include "swarm/planner/explore/frontier.hpp"
 
 namespace swarm::gcs {
@@ -81,7 +80,7 @@ void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cell
   }
   std::vector<Cell> at;
   for (int r : robot_ids) at.push_back(ctx.cell_of(r));
-  planner::CoverRoutesConfig cfg = config::cover_routes_config(config_, ctx.setup.world.scenario.seed(), seq_);
+  planner::CoverRoutesConfig cfg = tasks::cover_routes_config(config_, ctx.setup.world.scenario.seed(), seq_);
   cfg.routes = !config_.hierarchical();
   const planner::CoverRoutes plan = planner::divide_and_route(known_, cells, at, weights, cfg, stop);
 
@@ -107,22 +106,16 @@ void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cell
       group_of_cell_[i] = g;
     }
   }
-  const planner::PatchEncoding encoding = map_encoding(ctx.setup);
-  const auto known_bytes = app::encode_map(known_, encoding);
   for (int g : groups) {
-    msgs::TaskOrder o;
-    o.group(static_cast<std::uint16_t>(g));
-    o.seq(seq_);
-    o.width(static_cast<std::uint16_t>(known_.width()));
-    o.height(static_cast<std::uint16_t>(known_.height()));
-    o.map_encoding(static_cast<std::uint8_t>(encoding));
-    o.known_map(known_bytes);
-    o.cells(app::encode_mask(share[static_cast<std::size_t>(g)], known_.width(), known_.height()));
+    task::Order o;
+    o.group = static_cast<std::uint16_t>(g);
+    o.seq = seq_;
+    o.known_map = known_;
+    o.cells = share[static_cast<std::size_t>(g)];
     if (!config_.hierarchical()) {
       for (std::size_t a = 0; a < robot_ids.size(); ++a) {
         if (t.group_of(static_cast<comm::AgentId>(robot_ids[a])) != g) continue;
-        o.route_robots().push_back(static_cast<std::uint16_t>(robot_ids[a]));
-        o.routes_xy().push_back(app::to_xy(plan.routes[a]));
+        o.routes.push_back({robot_ids[a], plan.routes[a]});
       }
     }
     ctx.out.order(o);
@@ -151,10 +144,10 @@ void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cell
                planner::to_string(plan.darp.status), plan.darp.iterations, plan.seconds_division);
 }
 
-void CoverGcsTask::on_report(const msgs::TaskReport& r, GcsContext&) {
-  if (r.group() < group_done_.size() && r.state() == comm::task::kDone) group_done_[r.group()] = true;
+void CoverGcsTask::on_report(const task::Report& r, GcsContext&) {
+  if (r.group < group_done_.size() && r.state == task::GroupState::Done) group_done_[r.group] = true;
   // Cells a leader knows covered (after a restart of the GCS, which missed the clocks meanwhile).
-  for (const planner::Cell c : app::from_xy(r.xy())) tracker_.mark(c);
+  for (const planner::Cell c : r.cells) tracker_.mark(c);
 }
 
 void CoverGcsTask::step(GcsContext& ctx) {

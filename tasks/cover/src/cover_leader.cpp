@@ -3,9 +3,8 @@
 #include <chrono>
 #include <cstdio>
 
-#include "swarm/app/convert.hpp"
-#include "swarm/comm/task_codes.hpp"
 #include "swarm/config/task_config.hpp"
+#include "swarm/tasks/cover/cover_settings.hpp"
 
 namespace swarm::leader {
 
@@ -30,9 +29,9 @@ void CoverGroupTask::start(GroupContext&) {
 
 void CoverGroupTask::send(GroupContext& ctx, int index, std::vector<Cell> route) {
   Robot& r = robots_[static_cast<std::size_t>(index)];
-  msgs::Route m;
-  m.path_xy(app::to_xy(route));
-  m.release(static_cast<std::uint32_t>(route.size() - 1));
+  task::Route m;
+  m.path = route;
+  m.release = static_cast<std::uint32_t>(route.size() - 1);
   r.route_id = ctx.out.route(index, m);
   r.step = 0;
   r.state = route.size() > 1 ? RouteState::Active : RouteState::Finished;
@@ -40,35 +39,26 @@ void CoverGroupTask::send(GroupContext& ctx, int index, std::vector<Cell> route)
   r.route = std::move(route);
 }
 
-void CoverGroupTask::on_order(const msgs::TaskOrder& o, GroupContext& ctx) {
-  if (o.seq() <= order_seq_ && have_share_) return;  // an older order
-  const config::MapFrame& map = ctx.setup.world.frame;
-  if (static_cast<int>(o.width()) != map.width || static_cast<int>(o.height()) != map.height) {
-    throw std::runtime_error("a cover order for a " + std::to_string(o.width()) + " x " + std::to_string(o.height()) +
-                             " map; the run's map is " + std::to_string(map.width) + " x " +
-                             std::to_string(map.height));
-  }
-  order_seq_ = o.seq();
-  tick_ = ctx.clock.tick();
-  known_ = planner::OccupancyGrid(o.width(), o.height(), ctx.map.group().resolution());
-  app::decode_map(o.known_map(), static_cast<planner::PatchEncoding>(o.map_encoding()), known_);
-  share_ = app::decode_mask(o.cells(), o.width(), o.height());
+void CoverGroupTask::on_order(const task::Order& o, GroupContext& ctx) {
+  if (o.seq <= order_seq_ && have_share_) return;  // an older order
+  if (!o.known_map || o.cells.empty()) throw std::runtime_error("a cover order without its map and share");
+  order_seq_ = o.seq;
+  tick_ = ctx.clock.tick;
+  known_ = *o.known_map;
+  share_ = o.cells;
   tracker_ = planner::CoverageTracker(known_, share_, footprint_);
-  const comm::Topology& t = ctx.topology();
-  for (int r = 0; r < t.robots(); ++r) {
-    const auto& s = ctx.clock.robots()[static_cast<std::size_t>(r)];
-    tracker_.visit({s.x(), s.y()});
-  }
+  for (const task::RobotAt& s : ctx.clock.robots) tracker_.visit(s.cell);
   have_share_ = true;
   reported_done_ = false;
-  if (o.route_robots().empty()) {
+  if (o.routes.empty()) {
     divide(ctx, "order");
     return;
   }
   // Flat: the GCS planned every robot's route.
-  for (std::size_t k = 0; k < o.route_robots().size(); ++k) {
-    const int index = t.index_of(o.route_robots()[k]);
-    if (ctx.alive[static_cast<std::size_t>(index)]) send(ctx, index, app::from_xy(o.routes_xy()[k]));
+  const comm::Topology& t = ctx.topology();
+  for (const task::PlannedRoute& r : o.routes) {
+    const int index = t.index_of(static_cast<comm::AgentId>(r.robot));
+    if (ctx.alive[static_cast<std::size_t>(index)]) send(ctx, index, r.path);
   }
 }
 
@@ -81,7 +71,7 @@ void CoverGroupTask::divide(GroupContext& ctx, const char* why) {
   for (int i : living) at.push_back(ctx.cell_of(i));
   ++divisions_count_;
   const planner::CoverRoutesConfig cfg =
-      config::cover_routes_config(config_, seed_, static_cast<std::uint64_t>(1000 + group_ * 100 + divisions_count_));
+      tasks::cover_routes_config(config_, seed_, static_cast<std::uint64_t>(1000 + group_ * 100 + divisions_count_));
   const planner::CoverRoutes plan = planner::divide_and_route(
       known_, tracker_.uncovered(), at, {}, cfg, [deadline] { return std::chrono::steady_clock::now() > deadline; });
   nlohmann::json cells = nlohmann::json::array(), lengths = nlohmann::json::array(), turns = nlohmann::json::array();
@@ -91,7 +81,7 @@ void CoverGroupTask::divide(GroupContext& ctx, const char* why) {
     lengths.push_back(plan.routes[k].size() - 1);
     turns.push_back(plan.turns[k]);
   }
-  divisions_.push_back({{"tick", ctx.clock.tick()},
+  divisions_.push_back({{"tick", ctx.clock.tick},
                         {"why", why},
                         {"robots", living.size()},
                         {"darp_status", planner::to_string(plan.darp.status)},
@@ -106,7 +96,7 @@ void CoverGroupTask::divide(GroupContext& ctx, const char* why) {
 void CoverGroupTask::on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) {
   Robot& r = robots_[static_cast<std::size_t>(index)];
   if (p.id != r.route_id) return;  // about a route replaced since
-  if (p.step != r.step) r.moved_tick = ctx.clock.tick();
+  if (p.step != r.step) r.moved_tick = ctx.clock.tick;
   r.step = p.step;
   r.state = p.state;
 }
@@ -130,21 +120,21 @@ void CoverGroupTask::gcs_back(GroupContext& ctx) {
   for (std::size_t i = 0; i < target.size(); ++i) {
     if (target[i] && !left[i]) covered.push_back(ctx.map.group().cell_of(static_cast<int>(i)));
   }
-  msgs::TaskReport report;
-  report.state(comm::task::kWorking);
-  report.xy(app::to_xy(covered));
+  task::Report report;
+  report.state = task::GroupState::Working;
+  report.cells = std::move(covered);
   ctx.out.report(report);
   reported_done_ = false;
 }
 
 void CoverGroupTask::step(GroupContext& ctx) {
-  tick_ = ctx.clock.tick();
+  tick_ = ctx.clock.tick;
   if (!have_share_) return;
-  for (const auto& s : ctx.clock.robots()) tracker_.visit({s.x(), s.y()});
+  for (const task::RobotAt& s : ctx.clock.robots) tracker_.visit(s.cell);
   if (tracker_.complete()) {
     if (!reported_done_) {
-      msgs::TaskReport report;
-      report.state(comm::task::kDone);  // the share is covered
+      task::Report report;
+      report.state = task::GroupState::Done;  // the share is covered
       ctx.out.report(report);
       reported_done_ = true;
     }
@@ -154,7 +144,7 @@ void CoverGroupTask::step(GroupContext& ctx) {
   // A robot whose route has not advanced for stall_ticks: another robot is in its way (robots of
   // other groups cross the share, and regions touch). Go around it.
   std::vector<Cell> others;
-  for (const auto& s : ctx.clock.robots()) others.push_back({s.x(), s.y()});
+  for (const task::RobotAt& s : ctx.clock.robots) others.push_back(s.cell);
   bool idle = true;
   for (int i : living) {
     Robot& r = robots_[static_cast<std::size_t>(i)];

@@ -2,7 +2,6 @@
 
 #include <cstdio>
 
-#include "swarm/app/convert.hpp"
 
 namespace swarm::gcs {
 
@@ -11,26 +10,18 @@ void ExploreGcsTask::start(GcsContext& ctx) {
   rounds_at_start_ = ctx.mission.round();
 }
 
-void ExploreGcsTask::on_group_status(const msgs::GroupStatus& s, GcsContext& ctx) {
-  ctx.mission.group_arrived(s.group(), s.round());
+void ExploreGcsTask::on_round_done(int group, std::uint32_t round, GcsContext& ctx) {
+  ctx.mission.group_arrived(group, round);
 }
 
 void ExploreGcsTask::step(GcsContext& ctx) {
   std::vector<planner::Cell> robots;
-  for (const auto& r : ctx.clock.robots()) robots.push_back({r.x(), r.y()});
+  for (const auto& r : ctx.clock.robots) robots.push_back(r.cell);
   const Mission::Decision d = ctx.mission.tick(ctx.tick(), robots);
   if (d.start_round) {
-    const planner::PatchEncoding encoding = map_encoding(ctx.setup);
-    msgs::RoundStart rs;
-    rs.round(*d.start_round);
-    rs.fused_tick(d.map_tick);
-    rs.width(static_cast<std::uint16_t>(d.map->width()));
-    rs.height(static_cast<std::uint16_t>(d.map->height()));
-    rs.encoding(static_cast<std::uint8_t>(encoding));
-    rs.map_rle(app::encode_map(*d.map, encoding));
-    ctx.out.round(rs);
+    ctx.out.round(*d.start_round, d.map_tick, *d.map);
     record::Frame version = map_frame(ctx.tick(), *d.start_round, phase_, ctx.mission.fused());
-    version.mutable_map()->set_planning_map_tick(d.map_tick);  // names the map rs carries
+    version.mutable_map()->set_planning_map_tick(d.map_tick);  // names the map the round carries
     ctx.record.append(version);
   }
   complete_ = d.complete;

@@ -2,7 +2,6 @@
 
 #include <chrono>
 
-#include "swarm/app/convert.hpp"
 
 namespace swarm::leader {
 
@@ -32,10 +31,10 @@ void ExploreGroupTask::start(GroupContext&) {
 
 void ExploreGroupTask::on_round(std::uint32_t round, GroupContext&) { pending_round_ = round; }
 
-void ExploreGroupTask::on_member_status(const msgs::MemberStatus& s, GroupContext& ctx) {
-  if (s.round() != round_) return;
-  arrived_[static_cast<std::size_t>(ctx.topology().index_of(s.robot()))] = true;
-  if (s.state() < 4) ++waypoints_[s.state()];
+void ExploreGroupTask::on_waypoint(const task::WaypointReport& s, GroupContext& ctx) {
+  if (s.round != round_) return;
+  arrived_[static_cast<std::size_t>(ctx.topology().index_of(static_cast<comm::AgentId>(s.robot)))] = true;
+  if (s.state < 4) ++waypoints_[s.state];
 }
 
 void ExploreGroupTask::member_lost(int index, GroupContext&) { arrived_[static_cast<std::size_t>(index)] = true; }
@@ -67,19 +66,9 @@ void ExploreGroupTask::plan(std::uint32_t round, GroupContext& ctx) {
   for (int i = 0; i < t.robots_per_group(); ++i) arrived_[static_cast<std::size_t>(i)] = !plan.waypoints[static_cast<std::size_t>(i)].has_value();
   group_reported_ = false;
   ctx.own.assign(round, plan.waypoints[static_cast<std::size_t>(ctx.self)]);
-  msgs::Assignment a;
-  a.round(round);
-  a.waypoints_xy(app::to_xy(plan.waypoints));
-  ctx.out.assignment(a);
-  msgs::PlanReport report;
-  report.group(static_cast<std::uint16_t>(ctx.group));
-  report.round(round);
-  report.plan_case(static_cast<std::uint8_t>(plan.plan_case));
-  report.waypoints_xy(app::to_xy(plan.waypoints));
-  report.group_frontiers_xy(app::to_xy(plan.group_frontiers));
-  for (const auto& seg : plan.global_segments) report.global_segments_xy().push_back(app::to_xy(seg));
-  report.chosen_segment(plan.chosen_segment);
-  ctx.out.plan_report(report);
+  ctx.out.waypoints(round, plan.waypoints);
+  ctx.out.plan_telemetry({round, static_cast<std::uint8_t>(plan.plan_case), plan.waypoints, plan.group_frontiers,
+                          plan.global_segments, plan.chosen_segment});
 }
 
 void ExploreGroupTask::step(GroupContext& ctx) {
@@ -93,22 +82,14 @@ void ExploreGroupTask::finish_step(GroupContext& ctx) {
   bool all_arrived = true;
   for (bool a : arrived_) all_arrived = all_arrived && a;
   if (round_ > 0 && all_arrived && !group_reported_) {
-    msgs::GroupStatus status;
-    status.group(static_cast<std::uint16_t>(ctx.group));
-    status.round(round_);
-    ctx.out.group_status(status);
+    ctx.out.round_done(round_);
     group_reported_ = true;
   }
 }
 
 void ExploreGroupTask::gcs_back(GroupContext& ctx) {
   // The round's arrival, if the GCS may have missed it.
-  if (round_ > 0 && group_reported_) {
-    msgs::GroupStatus status;
-    status.group(static_cast<std::uint16_t>(ctx.group));
-    status.round(round_);
-    ctx.out.group_status(status);
-  }
+  if (round_ > 0 && group_reported_) ctx.out.round_done(round_);
 }
 
 nlohmann::json ExploreGroupTask::numbers() const {

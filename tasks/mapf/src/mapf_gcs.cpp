@@ -5,10 +5,9 @@
 #include <cstdio>
 #include <utility>
 
-#include "swarm/app/convert.hpp"
 #include "swarm/comm/link.hpp"
-#include "swarm/comm/task_codes.hpp"
 #include "swarm/config/task_config.hpp"
+#include "swarm/tasks/mapf/mapf_settings.hpp"
 #include "swarm/planner/explore/frontier.hpp"
 #include "swarm/planner/mapf/solver.hpp"
 #include "swarm/planner/grid/rng.hpp"
@@ -16,7 +15,6 @@
 namespace swarm::gcs {
 
 using planner::Cell;
-namespace task = comm::task;
 
 MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, GoalPicker goals)
     : config_(config), phase_(phase), map_given_(map_given), pick_goals_(std::move(goals)) {}
@@ -95,7 +93,7 @@ void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
   plan_leaders_.clear();
   for (int g = 0; g < t.groups(); ++g) plan_leaders_.push_back(ctx.leader_of(g));
 
-  planner::mapf::SolverConfig solver = config::mapf_solver_config(config_, ctx.setup.world.scenario.seed());
+  planner::mapf::SolverConfig solver = tasks::mapf_solver_config(config_, ctx.setup.world.scenario.seed());
   planner::mapf::Result res = planner::mapf::solve(in, solver, planner::mapf::StopCondition::after(config_.time_limit_s()));
   if (res.status == planner::mapf::Status::Timeout && solver.kind != planner::mapf::SolverKind::Lacam) {
     // A (bounded-)optimal search that runs out of time leaves nothing safe to drive; LaCAM is
@@ -143,18 +141,17 @@ void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res) {
     progress_.assign(res.paths.size(), 0);
     rotation_ordered_.assign(adg_.rotations.size(), false);
   }
-  msgs::TaskOrder o;
-  o.group(task::kAllGroups);
-  o.kind(task::kOrderWork);
-  o.seq(seq_);
+  task::Order o;
+  o.group = task::kAllGroups;
+  o.kind = task::OrderKind::Work;
+  o.seq = seq_;
   if (config_.execution() == swarm::scenario::MAPF_EXECUTE_TIMED) {
     // One start tick for every robot: late enough for the order to reach every leader and its
     // routes every member, with the configured delays and jitter (loss is not allowed for).
-    o.values().push_back(static_cast<std::int32_t>(start_tick(ctx)));
+    o.values.push_back(static_cast<std::int32_t>(start_tick(ctx)));
   }
   for (std::size_t k = 0; k < planned_.size(); ++k) {
-    o.route_robots().push_back(static_cast<std::uint16_t>(planned_[k]));
-    o.routes_xy().push_back(app::to_xy(res.paths[k]));
+    o.routes.push_back({planned_[k], res.paths[k]});
     ctx.record.append(route_frame(ctx.tick(), phase_, planned_[k], res.paths[k]));
   }
   ctx.out.order(o);
@@ -173,22 +170,22 @@ void MapfGcsTask::order_rotations(GcsContext& ctx) {
     if (rotation_ordered_[qu]) continue;
     rotation_ordered_[qu] = true;
     ++rotations_ordered_;
-    send_order(ctx, task::kOrderRotate,
+    send_order(ctx, task::OrderKind::Rotate,
                {static_cast<std::int32_t>(seq_), q, static_cast<std::int32_t>(start_tick(ctx))});
   }
 }
 
-void MapfGcsTask::send_order(GcsContext& ctx, std::uint8_t kind, std::vector<std::int32_t> values) {
-  msgs::TaskOrder o;
-  o.group(task::kAllGroups);
-  o.kind(kind);
-  o.seq(seq_);
-  o.values(std::move(values));
+void MapfGcsTask::send_order(GcsContext& ctx, task::OrderKind kind, std::vector<std::int32_t> values) {
+  task::Order o;
+  o.group = task::kAllGroups;
+  o.kind = kind;
+  o.seq = seq_;
+  o.values = std::move(values);
   ctx.out.order(o);
 }
 
-void MapfGcsTask::on_report(const msgs::TaskReport& r, GcsContext&) {
-  const auto& v = r.values();
+void MapfGcsTask::on_report(const task::Report& r, GcsContext&) {
+  const auto& v = r.values;
   if (!v.empty() && static_cast<std::uint32_t>(v[0]) == seq_ && v.size() % 3 == 1) {
     relay_.insert(relay_.end(), v.begin() + 1, v.end());
     for (std::size_t i = 1; by_graph_ && i + 2 < v.size(); i += 3) {
@@ -198,9 +195,9 @@ void MapfGcsTask::on_report(const msgs::TaskReport& r, GcsContext&) {
       p = std::max(p, static_cast<std::uint32_t>(v[i + 1]));
     }
   }
-  if (r.group() >= group_done_.size() || v.empty() || static_cast<std::uint32_t>(v[0]) != seq_) return;
-  if (r.state() == task::kDone) group_done_[r.group()] = true;
-  if (r.state() == task::kHeld) group_held_[r.group()] = true;
+  if (r.group >= group_done_.size() || v.empty() || static_cast<std::uint32_t>(v[0]) != seq_) return;
+  if (r.state == task::GroupState::Done) group_done_[r.group] = true;
+  if (r.state == task::GroupState::Held) group_held_[r.group] = true;
 }
 
 void MapfGcsTask::step(GcsContext& ctx) {
@@ -217,7 +214,7 @@ void MapfGcsTask::step(GcsContext& ctx) {
     std::vector<std::int32_t> values{static_cast<std::int32_t>(seq_)};
     values.insert(values.end(), relay_.begin(), relay_.end());
     relay_.clear();
-    send_order(ctx, task::kOrderProgress, std::move(values));
+    send_order(ctx, task::OrderKind::Progress, std::move(values));
   }
   if (by_graph_ && !holding_ && !failed_) order_rotations(ctx);
   arrived_ = 0;
@@ -241,7 +238,7 @@ void MapfGcsTask::step(GcsContext& ctx) {
   }
   if (lost && !holding_ && !all_done) {
     holding_ = true;
-    send_order(ctx, task::kOrderHold, {static_cast<std::int32_t>(seq_)});
+    send_order(ctx, task::OrderKind::Hold, {static_cast<std::int32_t>(seq_)});
     std::fprintf(stderr, "gcs: mapf: a planned robot was lost at tick %u; holding plan %u\n", ctx.tick(), seq_);
     return;
   }

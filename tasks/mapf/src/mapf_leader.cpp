@@ -4,12 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "swarm/app/convert.hpp"
-#include "swarm/comm/task_codes.hpp"
-
 namespace swarm::leader {
-
-namespace task = comm::task;
 
 MapfGroupTask::MapfGroupTask(const swarm::scenario::Mapf& config, int group)
     : timed_(config.execution() == swarm::scenario::MAPF_EXECUTE_TIMED), group_(group) {}
@@ -21,7 +16,7 @@ void MapfGroupTask::start(GroupContext& ctx) {
   settled_reported_ = ctx.phase == 0;  // the first phase starts with every robot standing
   if (settled_reported_) return;
   for (const int i : ctx.living()) {
-    msgs::Route stop;  // empty: stop where it stands
+    const task::Route stop;  // empty: stop where it stands
     settling_.emplace_back(i, ctx.out.route(i, stop));
   }
 }
@@ -32,16 +27,16 @@ void MapfGroupTask::note(int k) {
   report_.push_back(static_cast<std::int32_t>(released_[static_cast<std::size_t>(k)]));
 }
 
-void MapfGroupTask::take_plan(const msgs::TaskOrder& o, GroupContext& ctx) {
+void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
   std::vector<planner::mapf::Path> paths;
-  for (const auto& xy : o.routes_xy()) paths.push_back(app::from_xy(xy));
+  for (const task::PlannedRoute& r : o.routes) paths.push_back(r.path);
   try {
     adg_ = planner::mapf::dependencies(paths);
   } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "leader-%d: mapf plan %u dropped: %s\n", group_, o.seq(), e.what());
+    std::fprintf(stderr, "leader-%d: mapf plan %u dropped: %s\n", group_, o.seq, e.what());
     return;
   }
-  seq_ = o.seq();
+  seq_ = o.seq;
   have_plan_ = true;
   holding_ = false;
   stopping_.clear();
@@ -50,7 +45,8 @@ void MapfGroupTask::take_plan(const msgs::TaskOrder& o, GroupContext& ctx) {
   ++plans_taken_;
   const std::size_t n = paths.size();
   routes_ = timed_ ? paths : adg_.routes;
-  robot_of_.assign(o.route_robots().begin(), o.route_robots().end());
+  robot_of_.clear();
+  for (const task::PlannedRoute& r : o.routes) robot_of_.push_back(r.robot);
   index_of_.assign(n, -1);
   progress_.assign(n, 0);
   released_.assign(n, 0);
@@ -72,37 +68,37 @@ void MapfGroupTask::take_plan(const msgs::TaskOrder& o, GroupContext& ctx) {
     const auto ku = static_cast<std::size_t>(k);
     released_[ku] = timed_ ? static_cast<std::uint32_t>(routes_[ku].size() - 1)
                            : planner::mapf::releasable(adg_, k, progress_, planner::mapf::Rotations::Held);
-    msgs::Route m;
-    m.path_xy(app::to_xy(routes_[ku]));
-    m.release(released_[ku]);
-    if (timed_ && !o.values().empty()) m.start_tick(static_cast<std::uint32_t>(o.values()[0]));
+    task::Route m;
+    m.path = routes_[ku];
+    m.release = released_[ku];
+    if (timed_ && !o.values.empty()) m.start_tick = static_cast<std::uint32_t>(o.values[0]);
     route_id_[ku] = ctx.out.route(index_of_[ku], m);
     note(k);
   }
 }
 
-void MapfGroupTask::on_order(const msgs::TaskOrder& o, GroupContext& ctx) {
-  if (o.kind() == task::kOrderWork) {
-    if (!have_plan_ || o.seq() > seq_) take_plan(o, ctx);
+void MapfGroupTask::on_order(const task::Order& o, GroupContext& ctx) {
+  if (o.kind == task::OrderKind::Work) {
+    if (!have_plan_ || o.seq > seq_) take_plan(o, ctx);
     return;
   }
-  if (!have_plan_ || o.values().empty() || static_cast<std::uint32_t>(o.values()[0]) != seq_) return;  // stale
-  if (o.kind() == task::kOrderHold) {
+  if (!have_plan_ || o.values.empty() || static_cast<std::uint32_t>(o.values[0]) != seq_) return;  // stale
+  if (o.kind == task::OrderKind::Hold) {
     holding_ = true;
     // Timed, every robot holds its whole route: stop them. Timed driving is chosen only with no
     // link delay, so every robot of the plan stops at the same tick: a frozen step of a valid plan.
     if (timed_ && !adopting_) stop_own_robots(ctx);
     return;
   }
-  if (o.kind() == task::kOrderRotate) {
-    if (!adopting_ && stopping_.empty() && !stopped_all_ && o.values().size() == 3 && !timed_ && o.values()[1] >= 0 &&
-        static_cast<std::size_t>(o.values()[1]) < adg_.rotations.size()) {
-      rotate(o.values()[1], static_cast<std::uint32_t>(o.values()[2]), ctx);
+  if (o.kind == task::OrderKind::Rotate) {
+    if (!adopting_ && stopping_.empty() && !stopped_all_ && o.values.size() == 3 && !timed_ && o.values[1] >= 0 &&
+        static_cast<std::size_t>(o.values[1]) < adg_.rotations.size()) {
+      rotate(o.values[1], static_cast<std::uint32_t>(o.values[2]), ctx);
     }
     return;
   }
-  if (o.kind() != task::kOrderProgress) return;
-  const auto& v = o.values();
+  if (o.kind != task::OrderKind::Progress) return;
+  const auto& v = o.values;
   for (std::size_t i = 1; i + 2 < v.size(); i += 3) {
     const auto it = std::find(robot_of_.begin(), robot_of_.end(), v[i]);
     if (it == robot_of_.end()) continue;
@@ -119,7 +115,7 @@ void MapfGroupTask::stop_own_robots(GroupContext& ctx) {
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
     if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
-    msgs::Route stop;  // empty: stop where it stands
+    const task::Route stop;  // empty: stop where it stands
     route_id_[ku] = ctx.out.route(index_of_[ku], stop);
     stopping_.push_back(k);
   }
@@ -158,10 +154,7 @@ void MapfGroupTask::release(GroupContext& ctx) {
     const std::uint32_t may = planner::mapf::releasable(adg_, k, progress_, planner::mapf::Rotations::Held);
     if (may <= released_[ku]) continue;
     released_[ku] = may;
-    msgs::RouteRelease r;
-    r.route_id(route_id_[ku]);
-    r.release(may - base_[ku]);
-    ctx.out.release(index_of_[ku], r);
+    ctx.out.release(index_of_[ku], route_id_[ku], may - base_[ku]);
     ++releases_sent_;
     note(k);
   }
@@ -175,10 +168,10 @@ void MapfGroupTask::rotate(int q, std::uint32_t tick, GroupContext& ctx) {
     // The rest of its route from the cell it stands on, its first step released from `tick` on:
     // every member's simulator command then leaves in one tick.
     const std::uint32_t from = m.step - 1;
-    msgs::Route r;
-    r.path_xy(app::to_xy(std::vector<planner::Cell>(routes_[ku].begin() + from, routes_[ku].end())));
-    r.release(1);
-    r.start_tick(tick);
+    task::Route r;
+    r.path.assign(routes_[ku].begin() + from, routes_[ku].end());
+    r.release = 1;
+    r.start_tick = tick;
     base_[ku] = from;
     released_[ku] = m.step;
     route_id_[ku] = ctx.out.route(index_of_[ku], r);
@@ -197,9 +190,9 @@ void MapfGroupTask::step(GroupContext& ctx) {
     // A robot lost before its stop was confirmed stands still anyway.
     std::erase_if(settling_, [&](const std::pair<int, std::uint32_t>& s) { return !ctx.alive[static_cast<std::size_t>(s.first)]; });
     if (settling_.empty()) {
-      msgs::TaskReport r;
-      r.state(task::kHeld);
-      r.values({0});
+      task::Report r;
+      r.state = task::GroupState::Held;
+      r.values = {0};
       ctx.out.report(r);
       settled_reported_ = true;
     }
@@ -219,20 +212,19 @@ void MapfGroupTask::step(GroupContext& ctx) {
     still = still && progress_[ku] >= released_[ku];
   }
   if (stopped) still = stopped_all_;
-  std::uint8_t state = task::kWorking;
+  task::GroupState state = task::GroupState::Working;
   if (arrived && !reported_done_) {
-    state = task::kDone;
+    state = task::GroupState::Done;
     reported_done_ = true;
   } else if (holding_ && still && !reported_held_) {
-    state = task::kHeld;
+    state = task::GroupState::Held;
     reported_held_ = true;
   }
-  if (report_.empty() && state == task::kWorking) return;
-  msgs::TaskReport r;
-  r.state(state);
-  std::vector<std::int32_t> values{static_cast<std::int32_t>(seq_)};
-  values.insert(values.end(), report_.begin(), report_.end());
-  r.values(std::move(values));
+  if (report_.empty() && state == task::GroupState::Working) return;
+  task::Report r;
+  r.state = state;
+  r.values = {static_cast<std::int32_t>(seq_)};
+  r.values.insert(r.values.end(), report_.begin(), report_.end());
   report_.clear();
   ctx.out.report(r);
 }

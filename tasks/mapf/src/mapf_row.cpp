@@ -1,6 +1,7 @@
 #include "swarm/tasks/mapf/mapf_row.hpp"
 
 #include "swarm/config/task_config.hpp"
+#include "swarm/tasks/mapf/mapf_settings.hpp"
 #include "swarm/tasks/mapf/mapf_gcs.hpp"
 #include "swarm/tasks/mapf/mapf_goals.hpp"
 #include "swarm/tasks/mapf/mapf_leader.hpp"
@@ -43,11 +44,11 @@ TaskRow mapf_row() {
   row.phase_case = Phase::kMapf;
   row.motion = planner::MotionModel::four();  // the MAPF paper's 4-connected grid
   row.gcs = [](const Phase& phase, const app::RoleSetup& setup, std::uint32_t index) {
-    return std::make_unique<gcs::MapfGcsTask>(config::resolved_mapf(phase.mapf(), setup.world.scenario), index,
+    return std::make_unique<gcs::MapfGcsTask>(tasks::resolved_mapf(phase.mapf(), setup.world.scenario), index,
                                               config::map_given(setup.world.scenario, index));
   };
   row.leader = [](const Phase& phase, const app::RoleSetup& setup, int group, std::uint32_t) {
-    return std::make_unique<leader::MapfGroupTask>(config::resolved_mapf(phase.mapf(), setup.world.scenario), group);
+    return std::make_unique<leader::MapfGroupTask>(tasks::resolved_mapf(phase.mapf(), setup.world.scenario), group);
   };
   row.judge = [](const Phase&, const app::RoleSetup&, std::uint32_t) { return std::make_unique<MapfJudge>(); };
   row.resolve = [](const Phase& phase, const config::World& world, const std::string& field) -> std::any {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "swarm/config/task_config.hpp"
+#include "swarm/tasks/mapf/mapf_settings.hpp"
 #include "swarm/tasks/mapf/mapf_leader.hpp"
 #include "swarm/tasks/mapf/mapf_row.hpp"
 #include "swarm/tasks/rendezvous/gather.hpp"
@@ -74,7 +75,7 @@ swarm::scenario::Mapf paths_as_given(const swarm::scenario::Rendezvous& r) {
 }  // namespace
 
 swarm::scenario::Mapf rendezvous_paths(const swarm::scenario::Rendezvous& r, const swarm::scenario::Scenario& s) {
-  return config::resolved_mapf(paths_as_given(r), s);
+  return tasks::resolved_mapf(paths_as_given(r), s);
 }
 
 TaskRow rendezvous_row() {

@@ -84,12 +84,16 @@ void validate(const swarm::scenario::Scenario& scenario, const std::string& sour
 // The name of the phase's task (the oneof's first, exploration, for a phase that names none:
 // validate() refuses such a phase in a scenario).
 [[nodiscard]] std::string task_name(const swarm::scenario::Phase& phase);
+// The phase's field in that oneof (the first for a phase that names none): its options say what
+// the task needs of the run (idl/scenario.proto `learns_map`).
+[[nodiscard]] const google::protobuf::FieldDescriptor& task_field(const swarm::scenario::Phase& phase);
 // Every task name, in the oneof's order.
 [[nodiscard]] std::vector<std::string> task_names();
 
 // The phases a scenario's mission runs, in order, each with its full configuration: the mission's
-// phases, or (no mission) explore alone with the top-level `explore`. An explore phase's settings
-// are merged over the top-level `explore` (so `--mode` and the top-level settings apply to it).
+// phases, or (no mission) the oneof's first task alone (exploration). A top-level field of the
+// scenario of a task's settings type gives that task's defaults: a phase's own settings are merged
+// over it (so the top-level `explore` and `--mode` apply to every explore phase).
 [[nodiscard]] std::vector<swarm::scenario::Phase> mission_phases(const swarm::scenario::Scenario& scenario);
 // The standby leaders per group the run really has: leader_standbys, at most robots_per_group - 1.
 [[nodiscard]] int leader_standbys(const swarm::scenario::Scenario& scenario);

@@ -13,8 +13,10 @@
 //                infeasible. The GCS then ends the phase and the mission there, incomplete,
 //                instead of running on to max_ticks
 //   progress()   what the progress display shows
-//   on_report / on_group_status   the leaders' messages of the current phase
+//   on_report / on_round_done     the leaders' messages of the current phase
 //   numbers()    the task's own numbers: metrics.json phases[i].task
+// What a task sends and receives is plain C++ (app/task_messages.hpp); the node puts it on the
+// wire.
 #pragma once
 
 #include <cstdint>
@@ -25,36 +27,34 @@
 
 #include <nlohmann/json.hpp>
 
-#include "swarm/comm/leadership.hpp"
 #include "swarm/app/role.hpp"
+#include "swarm/app/task_messages.hpp"
 #include "swarm/gcs/mission.hpp"
-#include "swarm/planner/grid/map_patch.hpp"
+#include "swarm/planner/grid/grid.hpp"
 #include "swarm/record/record.hpp"
-#include "swarm_msgs.h"
 
 namespace swarm::gcs {
 
 struct GcsOutlets {
-  std::function<void(msgs::TaskOrder&)> order;    // to every leader (the order names its group)
-  std::function<void(msgs::RoundStart&)> round;   // explore
+  std::function<void(const task::Order&)> order;  // to every leader (the order names its group)
+  // A planning round: to every leader, with the fused map of fused_tick (each adopts it as its
+  // global map; leader/group_map.hpp).
+  std::function<void(std::uint32_t round, std::uint32_t fused_tick, const planner::OccupancyGrid& map)> round;
 };
 
 struct GcsContext {
   const app::RoleSetup& setup;
   std::uint32_t phase = 0;
-  const msgs::Clock& clock;
+  const task::Clock& clock;
   Mission& mission;  // the fused map (and exploration's planning rounds)
   record::RecordWriter& record;
   GcsOutlets& out;
 
-  std::uint32_t tick() const { return clock.tick(); }
-  planner::Cell cell_of(int robot) const {
-    const auto& r = clock.robots()[static_cast<std::size_t>(robot)];
-    return {r.x(), r.y()};
-  }
-  bool alive(int robot) const { return clock.robots()[static_cast<std::size_t>(robot)].alive(); }
+  std::uint32_t tick() const { return clock.tick; }
+  planner::Cell cell_of(int robot) const { return clock.robots[static_cast<std::size_t>(robot)].cell; }
+  bool alive(int robot) const { return clock.robots[static_cast<std::size_t>(robot)].alive; }
   // Group g's leader at this tick (comm/leadership.hpp: a standby may have taken over).
-  int leader_of(int g) const { return comm::leader_in(clock, setup.topology, g); }
+  int leader_of(int g) const { return clock.leaders[static_cast<std::size_t>(g)]; }
 };
 
 struct ProgressLine {
@@ -71,8 +71,9 @@ class GcsTask {
   [[nodiscard]] virtual bool complete() const = 0;
   [[nodiscard]] virtual std::string given_up() const { return {}; }
   [[nodiscard]] virtual ProgressLine progress(const GcsContext& ctx) const = 0;
-  virtual void on_report(const msgs::TaskReport&, GcsContext&) {}
-  virtual void on_group_status(const msgs::GroupStatus&, GcsContext&) {}
+  virtual void on_report(const task::Report&, GcsContext&) {}
+  // Group `group` reached every waypoint of planning round `round` (or could not).
+  virtual void on_round_done(int /*group*/, std::uint32_t /*round*/, GcsContext&) {}
   [[nodiscard]] virtual nlohmann::json numbers() const = 0;
 };
 
@@ -92,8 +93,4 @@ namespace swarm::gcs {
 // region size, 0 otherwise).
 [[nodiscard]] record::Frame route_frame(std::uint32_t tick, std::uint32_t phase, int robot,
                                         const std::vector<planner::Cell>& route, std::uint32_t region_cells = 0);
-// The encoding whole maps travel in for the run's map_encoding: run-length, zstd-compressed when
-// the run's encoding is ZstdRunLength.
-[[nodiscard]] planner::PatchEncoding map_encoding(const app::RoleSetup& setup);
-
 }  // namespace swarm::gcs

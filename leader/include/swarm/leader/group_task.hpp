@@ -8,7 +8,7 @@
 //                         before the leader's own robot acts
 //   finish_step(ctx)      every tick, after the own robot acted (its waypoint report, if any,
 //                         came through on_member_status)
-//   on_order / on_round / on_member_status / on_progress / on_carrying
+//   on_order / on_round / on_waypoint / on_progress / on_carrying
 //                         the messages of the current phase, routed by the node
 //   member_lost / member_back
 //                         a member the simulator declared lost, or one whose link healed
@@ -20,7 +20,7 @@
 //   numbers()             the task's own numbers for the leader's end-of-run report
 // What a task may do goes through the GroupContext: the group map, the living members and the
 // robots' true cells (the clock), the leader's own robot, and outlets that send routes, releases,
-// assignments and reports. The node owns every topic (created once at start-up, as DDS discovery
+// waypoints and reports, all plain C++ (app/task_messages.hpp). The node owns every topic (created once at start-up, as DDS discovery
 // must be complete before tick 0), the map merging, the map relays to members and GCS, the
 // heartbeat and the leader's own robot; a task never touches DDS.
 //
@@ -38,22 +38,26 @@
 #include <nlohmann/json.hpp>
 
 #include "swarm/app/role.hpp"
+#include "swarm/app/task_messages.hpp"
 #include "swarm/leader/group_map.hpp"
 #include "swarm/member/robot_agent.hpp"
 #include "swarm/planner/grid/grid.hpp"
-#include "swarm_msgs.h"
 
 namespace swarm::leader {
 
 // Sending, for a task (the node stamps and routes: index ctx.self is the leader's own robot).
 struct GroupOutlets {
   // Gives the route a number of its own (route ids never repeat in a run) and returns it.
-  std::function<std::uint32_t(int index, msgs::Route&)> route;
-  std::function<void(int index, msgs::RouteRelease&)> release;
-  std::function<void(msgs::TaskReport&)> report;
-  std::function<void(msgs::Assignment&)> assignment;     // explore: waypoints for the whole group
-  std::function<void(msgs::GroupStatus&)> group_status;  // explore: the round's waypoints are done
-  std::function<void(msgs::PlanReport&)> plan_report;    // explore: telemetry for pictures
+  std::function<std::uint32_t(int index, const task::Route&)> route;
+  // Robot `index` may drive its route `route_id` as far as step `release`.
+  std::function<void(int index, std::uint32_t route_id, std::uint32_t release)> release;
+  std::function<void(const task::Report&)> report;
+  // A planning round's waypoints, one per robot of the group by index (none: stay), to the members
+  // (the leader's own robot is the task's to assign).
+  std::function<void(std::uint32_t round, const std::vector<std::optional<planner::Cell>>&)> waypoints;
+  // To the GCS: the group has finished round `round`'s waypoints.
+  std::function<void(std::uint32_t round)> round_done;
+  std::function<void(const task::PlanTelemetry&)> plan_telemetry;  // for the run record's pictures
 };
 
 struct GroupContext {
@@ -61,7 +65,7 @@ struct GroupContext {
   int group = 0;
   int self = 0;  // the leader's own index in the group (0 unless a standby took over)
   std::uint32_t phase = 0;
-  const msgs::Clock& clock;
+  const task::Clock& clock;
   const std::vector<bool>& alive;  // per index of the group (the leader's own, `self`, always)
   GroupMap& map;
   member::RobotAgent& own;         // the leader's robot
@@ -69,10 +73,7 @@ struct GroupContext {
 
   const comm::Topology& topology() const { return setup.topology; }
   // Robot `index` of the group: its true cell, shared in real time in the clock.
-  planner::Cell cell_of(int index) const {
-    const auto& r = clock.robots()[setup.topology.robot(group, index)];
-    return {r.x(), r.y()};
-  }
+  planner::Cell cell_of(int index) const { return clock.robots[setup.topology.robot(group, index)].cell; }
   std::vector<int> living() const;
   // Where group g's leader of this tick is (the clock names it: comm/leadership.hpp).
   planner::Cell leader_cell(int g) const;
@@ -84,9 +85,9 @@ class GroupTask {
   virtual void start(GroupContext& ctx) = 0;
   virtual void step(GroupContext& ctx) = 0;
   virtual void finish_step(GroupContext&) {}
-  virtual void on_order(const msgs::TaskOrder&, GroupContext&) {}
+  virtual void on_order(const task::Order&, GroupContext&) {}
   virtual void on_round(std::uint32_t /*round*/, GroupContext&) {}
-  virtual void on_member_status(const msgs::MemberStatus&, GroupContext&) {}
+  virtual void on_waypoint(const task::WaypointReport&, GroupContext&) {}
   // Progress of a member's route (index 0: the leader's own robot, polled by the node each tick).
   virtual void on_progress(int /*index*/, const planner::RouteProgress&, GroupContext&) {}
   // What a robot holds, from its gripper's sensor (with its progress; index `self`: the leader's

@@ -42,7 +42,7 @@ class LeaderNode {
 
  private:
   void learn(const std::vector<planner::CellChange>& fresh, bool own_observation);
-  void track_members(GroupContext& ctx);
+  void track_members(const msgs::Clock& clock, GroupContext& ctx);
   void dispatch(GroupContext& ctx);
   void enter_phase();  // a PhaseStart that came makes its phase current
 

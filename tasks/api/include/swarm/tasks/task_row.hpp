@@ -14,8 +14,11 @@
 //               (its parts read it there); throws config::ConfigError naming `field`
 //
 // Adding a task:
-//   1. its settings message and a field in Phase's oneof, in idl/scenario.proto;
-//   2. tasks/<name>/: its planner calls, the three parts, and `TaskRow <name>_row()`;
+//   1. its settings message and a field in Phase's oneof, in idl/scenario.proto (marked
+//      `[(learns_map) = true]` if the task starts without the map, as exploration does);
+//   2. tasks/<name>/: its planner calls, the three parts, and `TaskRow <name>_row()`. The parts
+//      exchange plain messages (app/task_messages.hpp: Order, Report, Route); what their
+//      `values` mean is the task's own contract, written in its folder;
 //   3. that row in tasks/src/registry.cpp and the folder in tasks/CMakeLists.txt.
 // tasks/rendezvous/ is the smallest example: settings, a GCS part that picks goals and drives
 // them with mapf's parts, a judge and a row (its commit touched 15 files, tests included).

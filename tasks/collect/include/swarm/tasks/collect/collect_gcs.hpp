@@ -4,15 +4,15 @@
 //
 // The GCS splits the objects among the groups whose leader lives (each object to the nearest
 // group leader with room left: at most ceil(objects / groups) per group) and sends each group its
-// objects' numbers (TaskOrder kOrderWork, values = [object, ...]); the leader splits them among
+// objects' numbers (Order Work, values = [object, ...]); the leader splits them among
 // its members (tasks/collect/collect_leader.hpp). The phase is complete when every group has reported its
-// objects delivered (TaskReport kDone, values = [seq]). The simulator judges what was delivered.
+// objects delivered (Report Done, values = [seq]). The simulator judges what was delivered.
 //
-// The leaders report what they know of each object as it changes (TaskReport kWorking, values =
-// [seq, then per object: object, what, a, b]; comm::task::kObject*), and the GCS keeps the last
+// The leaders report what they know of each object as it changes (Report Working, values =
+// [seq, then per object: object, what, a, b]; collect::kObject*, object_facts.hpp), and the GCS keeps the last
 // word on each. When a group's leader changes (a standby took over, comm/leadership.hpp) and the
 // group is not done, the GCS waits until every report the old leader sent has arrived (the
-// leader<->GCS delay and jitter) and sends the group kOrderResume with a new seq: its objects not
+// leader<->GCS delay and jitter) and sends the group Resume order with a new seq: its objects not
 // reported delivered, each with what was last reported (values = [object, what, a, b, ...]).
 #pragma once
 
@@ -34,7 +34,7 @@ class CollectGcsTask : public GcsTask {
   void step(GcsContext& ctx) override;
   [[nodiscard]] bool complete() const override { return complete_; }
   [[nodiscard]] ProgressLine progress(const GcsContext& ctx) const override;
-  void on_report(const msgs::TaskReport& r, GcsContext& ctx) override;
+  void on_report(const task::Report& r, GcsContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:

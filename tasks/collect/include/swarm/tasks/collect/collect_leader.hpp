@@ -1,4 +1,4 @@
-// The leader's collection task (issue 10): its group's objects (a TaskOrder of object numbers,
+// The leader's collection task (issue 10): its group's objects (an Order of object numbers,
 // tasks/collect/collect_gcs.hpp) are split among the living robots (each object to the nearest robot with
 // room left) and each robot gets a tour from the tour planner (planner/tours/tour.hpp: type by type, the
 // distance + angle variant, each type's order searched exactly), driven as a route with its
@@ -11,9 +11,9 @@
 // simulator refuses both) waits a number of ticks unique to it and goes on, so one goes first.
 // When every object of the group is delivered the leader reports the group done.
 //
-// What it knows of each object goes to the GCS as it changes (TaskReport kWorking, values = [seq,
-// then per object: object, what, a, b], what = comm::task::kObject*), so that a standby that takes
-// the group over (took_over) can resume it: it waits for the GCS's kOrderResume (the group's
+// What it knows of each object goes to the GCS as it changes (Report Working, values = [seq,
+// then per object: object, what, a, b], what = collect::kObject*, object_facts.hpp), so that a standby that takes
+// the group over (took_over) can resume it: it waits for the GCS's Resume order (the group's
 // objects not delivered, as last reported) and for its robots' grippers (on_carrying: members send
 // what they hold to a new leader), then believes the grippers first: an object a living robot holds
 // is carried by it; one the report says a robot held that holds it no more was delivered (robots
@@ -40,7 +40,7 @@ class CollectGroupTask : public GroupTask {
                    std::uint32_t index);
   void start(GroupContext& ctx) override;
   void step(GroupContext& ctx) override;
-  void on_order(const msgs::TaskOrder& order, GroupContext& ctx) override;
+  void on_order(const task::Order& order, GroupContext& ctx) override;
   void on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) override;
   void member_lost(int index, GroupContext& ctx) override;
   void on_carrying(int index, const std::vector<std::uint32_t>& objects, GroupContext& ctx) override;
@@ -99,7 +99,7 @@ class CollectGroupTask : public GroupTask {
   // take-over, where each robot lost by then left what it held, and from which tick on the
   // members' grippers have been heard (member<->leader delays allowed for).
   bool resuming_ = false;
-  std::optional<msgs::TaskOrder> resume_order_;
+  std::optional<task::Order> resume_order_;
   std::vector<std::optional<std::vector<std::uint32_t>>> holds_;  // per group index
   std::vector<std::optional<planner::Cell>> put_down_;           // per group index
   std::uint32_t grippers_heard_by_ = 0;

@@ -3,7 +3,7 @@
 // with cover: then the robots are given it, as DARP assumes).
 //
 // Hierarchical (default): DARP divides the cells among the groups, the living leaders as agents,
-// portions by living group size; each group gets its share (TaskOrder: the known map, the share
+// portions by living group size; each group gets its share (Order: the known map, the share
 // as a cell set) and its leader divides it among its members (tasks/cover/cover_leader.hpp). Flat: DARP
 // divides among all living robots here, and each group gets its robots' routes.
 // The GCS follows coverage from the robots' cells in the clock (with the footprint radius) and
@@ -27,7 +27,7 @@ class CoverGcsTask : public GcsTask {
   void step(GcsContext& ctx) override;
   [[nodiscard]] bool complete() const override { return started_ && tracker_.complete(); }
   [[nodiscard]] ProgressLine progress(const GcsContext& ctx) const override;
-  void on_report(const msgs::TaskReport& r, GcsContext& ctx) override;
+  void on_report(const task::Report& r, GcsContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:

@@ -1,4 +1,4 @@
-// The leader's coverage task (issue 8): its group's share of the map (a TaskOrder from the GCS,
+// The leader's coverage task (issue 8): its group's share of the map (an Order from the GCS,
 // tasks/cover/cover_gcs.hpp) is divided among the group's living robots with DARP, from where they stand,
 // and each robot gets a route that covers its region (spanning-tree coverage, or plowing /
 // Group-k: the scenario's cover.order), which it follows exactly. In the flat variant the GCS
@@ -26,7 +26,7 @@ class CoverGroupTask : public GroupTask {
   CoverGroupTask(const swarm::scenario::Cover& config, const app::RoleSetup& setup, int group);
   void start(GroupContext& ctx) override;
   void step(GroupContext& ctx) override;
-  void on_order(const msgs::TaskOrder& order, GroupContext& ctx) override;
+  void on_order(const task::Order& order, GroupContext& ctx) override;
   void on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) override;
   void member_lost(int index, GroupContext& ctx) override;
   void member_back(int index, GroupContext& ctx) override;

@@ -14,7 +14,7 @@ class ExploreGcsTask : public GcsTask {
   void step(GcsContext& ctx) override;
   [[nodiscard]] bool complete() const override { return complete_; }
   [[nodiscard]] ProgressLine progress(const GcsContext& ctx) const override;
-  void on_group_status(const msgs::GroupStatus& s, GcsContext& ctx) override;
+  void on_round_done(int group, std::uint32_t round, GcsContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:

@@ -20,7 +20,7 @@ class ExploreGroupTask : public GroupTask {
   void finish_step(GroupContext& ctx) override;
   void gcs_back(GroupContext& ctx) override;
   void on_round(std::uint32_t round, GroupContext& ctx) override;
-  void on_member_status(const msgs::MemberStatus& s, GroupContext& ctx) override;
+  void on_waypoint(const task::WaypointReport& s, GroupContext& ctx) override;
   void member_lost(int index, GroupContext& ctx) override;
   void member_back(int index, GroupContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;

@@ -11,16 +11,16 @@
 // left, as its leader learns from their progress. A leader knows its own members' progress from
 // their RouteProgress; the others' it learns from the GCS, which relays what every leader reports.
 //
-// Messages (the task's contract over TaskOrder / TaskReport, comm/task_codes.hpp):
-//   TaskOrder kOrderWork, group kAllGroups, seq s: route_robots = the planned robot ids,
-//     routes_xy = their timed paths (one cell per tick, waits included); timed execution
-//     (Mapf.execution): values = [the start tick every robot sets off at].
-//   TaskReport (leader -> GCS): values = [s, robot, step, release, robot, step, release, ...] for
-//     its robots whose progress or release changed; state kDone when all its robots of plan s have
-//     arrived; kHeld after a hold when they all stand still.
-//   TaskOrder kOrderProgress, kAllGroups: values = [s, robot, step, release, ...], relayed.
-//   TaskOrder kOrderHold, seq s: stop releasing plan s.
-//   TaskOrder kOrderRotate, kAllGroups, seq s: values = [s, q, T]: the robots of the plan's
+// Messages (the task's contract over task::Order / task::Report, app/task_messages.hpp):
+//   Order Work, group kAllGroups, seq s: routes = the planned robots' timed paths (one cell per
+//     tick, waits included); timed execution (Mapf.execution): values = [the start tick every
+//     robot sets off at].
+//   Report (leader -> GCS): values = [s, robot, step, release, robot, step, release, ...] for
+//     its robots whose progress or release changed; state Done when all its robots of plan s have
+//     arrived; Held after a hold when they all stand still.
+//   Order Progress, kAllGroups: values = [s, robot, step, release, ...], relayed.
+//   Order Hold, seq s: stop releasing plan s.
+//   Order Rotate, kAllGroups, seq s: values = [s, q, T]: the robots of the plan's
 //     rotation q (planner/mapf/adg.hpp: robots moving round a cycle of cells in one time step)
 //     make their step of it at tick T, all together. Driven by the graph, leaders never release a
 //     rotation themselves: they learn of their releases in different ticks, and a robot that moved
@@ -28,12 +28,12 @@
 //     leaders' reports), so it names the rotations that may go, with a start tick late enough for
 //     the order to reach every leader and its route every member (configured delays and jitter).
 // A phase after another starts with the leaders stopping every robot (the last phase's routes may
-// still be driving): TaskReport kHeld with values = [0] says a group's robots all stand, and the
+// still be driving): a Report Held with values = [0] says a group's robots all stand, and the
 // first plan is made from where they stand once every group with a living leader has said so.
 // A planned robot lost midway, or a group's leader replaced by its standby: the GCS holds the
 // plan, waits until every group reports its robots still, and plans again from where the living
 // robots stand (seq s + 1).
-// Complete when every group of the current plan has reported kDone; given up when a plan cannot be
+// Complete when every group of the current plan has reported Done; given up when a plan cannot be
 // made (proven infeasible, or none within the time limit): the mission ends there, incomplete.
 #pragma once
 
@@ -65,7 +65,7 @@ class MapfGcsTask : public GcsTask {
   // LaCAM): the same robots on the same map give the same answer, so the phase ends there.
   [[nodiscard]] std::string given_up() const override { return failed_ ? failure_ : std::string(); }
   [[nodiscard]] ProgressLine progress(const GcsContext& ctx) const override;
-  void on_report(const msgs::TaskReport& r, GcsContext& ctx) override;
+  void on_report(const task::Report& r, GcsContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
   // The goal of every robot id in the current plan ({-1, -1}: none).
   [[nodiscard]] const std::vector<planner::Cell>& goals() const { return goals_; }
@@ -77,7 +77,7 @@ class MapfGcsTask : public GcsTask {
   void plan(GcsContext& ctx, const char* why);
   void note_plan(GcsContext& ctx, const char* why, const planner::mapf::Result& res);  // metrics + log
   void send_plan(GcsContext& ctx, const planner::mapf::Result& res);
-  void send_order(GcsContext& ctx, std::uint8_t kind, std::vector<std::int32_t> values = {});
+  void send_order(GcsContext& ctx, task::OrderKind kind, std::vector<std::int32_t> values = {});
   // The tick a timed plan or a rotation sets off at: late enough for an order sent now to reach
   // every leader and its routes every member, with the configured delays and jitter (loss is not
   // allowed for).

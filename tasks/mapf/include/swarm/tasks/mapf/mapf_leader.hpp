@@ -7,18 +7,18 @@
 // graph allows. Each tick it learns progress: its own robots' from their RouteProgress, the other
 // groups' from the GCS's relay; whenever a robot of its own may go further it sends a
 // RouteRelease. It reports its own robots' progress and releases to the GCS (for the other
-// leaders), kDone when they have all arrived, and after a hold, kHeld once they all stand at their
+// leaders), Done when they have all arrived, and after a hold, Held once they all stand at their
 // release. Late knowledge only makes robots wait longer: never collide, never deadlock (the graph
 // of a valid plan has no cycle; rotations go as one step, planner/mapf/adg.hpp).
 // With `execution: MAPF_EXECUTE_TIMED` each robot instead gets its whole timed path (waits
 // included), released at once, to set off at the plan's start tick (the order's values[0]); a
-// hold then stops them where they stand (an empty route each), and kHeld follows once the
+// hold then stops them where they stand (an empty route each), and Held follows once the
 // simulator has confirmed every stop.
 // A standby that takes the group over mid-plan (took_over) cannot know how far each robot got
 // along the old leader's routes, nor which releases are still on their way: it takes the plan
 // without sending it, stops each of its robots where it stands (an empty route, which the
 // simulator confirms as Stopped; timed, at the GCS's hold, with every other group) and reports
-// kHeld once all have stopped; the GCS, which holds a plan whose group changed leader, then plans
+// Held once all have stopped; the GCS, which holds a plan whose group changed leader, then plans
 // again from where every robot stands.
 #pragma once
 
@@ -36,18 +36,18 @@ class MapfGroupTask : public GroupTask {
   MapfGroupTask(const swarm::scenario::Mapf& config, int group);
   void start(GroupContext& ctx) override;
   void step(GroupContext& ctx) override;
-  void on_order(const msgs::TaskOrder& order, GroupContext& ctx) override;
+  void on_order(const task::Order& order, GroupContext& ctx) override;
   void on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) override;
   void took_over(GroupContext&) override { adopting_ = true; }
   void gcs_back(GroupContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:
-  void take_plan(const msgs::TaskOrder& order, GroupContext& ctx);
+  void take_plan(const task::Order& order, GroupContext& ctx);
   // Sends a release to every robot of the group that may now go further.
   void release(GroupContext& ctx);
   void note(int k);  // robot k's progress/release goes into the next report
-  // kOrderRotate: this group's robots of rotation q make their step of it at `tick`.
+  // Rotate order: this group's robots of rotation q make their step of it at `tick`.
   void rotate(int q, std::uint32_t tick, GroupContext& ctx);
 
   bool timed_;
@@ -78,7 +78,7 @@ class MapfGroupTask : public GroupTask {
   bool reported_held_ = false;
   // Settling (a phase after another, whose routes may still be driving): every living robot of the
   // group is stopped where it stands before the GCS plans; (group index, stop's route id) of those
-  // not yet confirmed, and whether the GCS has been told they all stand (kHeld of plan 0).
+  // not yet confirmed, and whether the GCS has been told they all stand (Held, of plan 0).
   std::vector<std::pair<int, std::uint32_t>> settling_;
   bool settled_reported_ = true;
   std::uint64_t releases_sent_ = 0;

@@ -32,7 +32,7 @@ class RendezvousGcsTask : public GcsTask {
   [[nodiscard]] bool complete() const override { return drive_.complete(); }
   [[nodiscard]] std::string given_up() const override { return drive_.given_up(); }
   [[nodiscard]] ProgressLine progress(const GcsContext& ctx) const override;
-  void on_report(const msgs::TaskReport& r, GcsContext& ctx) override { drive_.on_report(r, ctx); }
+  void on_report(const task::Report& r, GcsContext& ctx) override { drive_.on_report(r, ctx); }
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:

@@ -1,0 +1,35 @@
+// The task seam's messages (app/task_messages.hpp) on the wire (idl/swarm_msgs.idl TaskOrder,
+// TaskReport, Route, ...) and back: the GCS's and the leaders' nodes call these; tasks never do.
+// Decoders throw std::runtime_error on a message that does not decode (the node drops it with a
+// log line, comm/lockstep.hpp).
+#pragma once
+
+#include <cstdint>
+
+#include "swarm/app/task_messages.hpp"
+#include "swarm/comm/topology.hpp"
+#include "swarm/config/scenario.hpp"
+#include "swarm/planner/grid/map_patch.hpp"
+#include "swarm_msgs.h"
+
+namespace swarm::app {
+
+// A tick's clock as a task reads it (the leaders of a hand-made clock without them: the
+// topology's first candidates).
+task::Clock task_clock(const msgs::Clock& clock, const comm::Topology& topology);
+
+// A known map travels in `encoding` (the run's map encoding).
+msgs::TaskOrder order_msg(const task::Order& order, std::uint32_t phase, planner::PatchEncoding encoding);
+// Throws when a map or cell set does not decode, or is not of the run's map size (`frame`).
+task::Order order_from(const msgs::TaskOrder& msg, const config::MapFrame& frame);
+
+msgs::TaskReport report_msg(const task::Report& report, std::uint32_t phase);
+task::Report report_from(const msgs::TaskReport& msg);
+
+msgs::Route route_msg(const task::Route& route, std::uint32_t phase, comm::AgentId robot, std::uint32_t route_id);
+
+task::WaypointReport waypoint_report_from(const msgs::MemberStatus& msg);
+
+msgs::PlanReport plan_report_msg(const task::PlanTelemetry& plan, int group);
+
+}  // namespace swarm::app

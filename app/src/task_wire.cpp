@@ -1,0 +1,126 @@
+#include "swarm/app/task_wire.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "swarm/app/convert.hpp"
+#include "swarm/comm/leadership.hpp"
+
+namespace swarm::app {
+
+task::Clock task_clock(const msgs::Clock& clock, const comm::Topology& topology) {
+  task::Clock out;
+  out.tick = clock.tick();
+  out.robots.reserve(clock.robots().size());
+  for (const auto& r : clock.robots()) out.robots.push_back({{r.x(), r.y()}, r.alive()});
+  for (int g = 0; g < topology.groups(); ++g) out.leaders.push_back(static_cast<int>(comm::leader_in(clock, topology, g)));
+  return out;
+}
+
+msgs::TaskOrder order_msg(const task::Order& o, std::uint32_t phase, planner::PatchEncoding encoding) {
+  msgs::TaskOrder m;
+  m.phase(phase);
+  m.group(o.group);
+  m.kind(static_cast<std::uint8_t>(o.kind));
+  m.seq(o.seq);
+  if (o.known_map) {
+    m.width(static_cast<std::uint16_t>(o.known_map->width()));
+    m.height(static_cast<std::uint16_t>(o.known_map->height()));
+    m.map_encoding(static_cast<std::uint8_t>(encoding));
+    m.known_map(encode_map(*o.known_map, encoding));
+  }
+  if (!o.cells.empty()) {
+    if (!o.known_map) throw std::logic_error("an order's cell set needs its known map");
+    m.cells(encode_mask(o.cells, o.known_map->width(), o.known_map->height()));
+  }
+  m.values(o.values);
+  for (const auto& r : o.routes) {
+    m.route_robots().push_back(static_cast<std::uint16_t>(r.robot));
+    m.routes_xy().push_back(to_xy(r.path));
+  }
+  return m;
+}
+
+task::Order order_from(const msgs::TaskOrder& m, const config::MapFrame& frame) {
+  task::Order o;
+  o.group = m.group();
+  if (m.kind() > static_cast<std::uint8_t>(task::OrderKind::Resume)) {
+    throw std::runtime_error("an order of unknown kind " + std::to_string(m.kind()));
+  }
+  o.kind = static_cast<task::OrderKind>(m.kind());
+  o.seq = m.seq();
+  const bool sized = m.width() != 0 || m.height() != 0;
+  if (sized && (static_cast<int>(m.width()) != frame.width || static_cast<int>(m.height()) != frame.height)) {
+    throw std::runtime_error("an order for a " + std::to_string(m.width()) + " x " + std::to_string(m.height()) +
+                             " map; the run's map is " + std::to_string(frame.width) + " x " +
+                             std::to_string(frame.height));
+  }
+  if (!m.known_map().empty()) {
+    if (!sized) throw std::runtime_error("an order's known map has no size");
+    planner::OccupancyGrid map(frame.width, frame.height, frame.resolution);
+    decode_map(m.known_map(), static_cast<planner::PatchEncoding>(m.map_encoding()), map);
+    o.known_map = std::move(map);
+  }
+  if (!m.cells().empty()) {
+    if (!sized) throw std::runtime_error("an order's cell set has no map size");
+    o.cells = decode_mask(m.cells(), frame.width, frame.height);
+  }
+  o.values = m.values();
+  if (m.route_robots().size() != m.routes_xy().size()) {
+    throw std::runtime_error("an order names " + std::to_string(m.route_robots().size()) + " robots for " +
+                             std::to_string(m.routes_xy().size()) + " routes");
+  }
+  for (std::size_t k = 0; k < m.routes_xy().size(); ++k) o.routes.push_back({m.route_robots()[k], from_xy(m.routes_xy()[k])});
+  return o;
+}
+
+msgs::TaskReport report_msg(const task::Report& r, std::uint32_t phase) {
+  msgs::TaskReport m;
+  m.phase(phase);
+  m.group(r.group);
+  m.state(static_cast<std::uint8_t>(r.state));
+  m.xy(to_xy(r.cells));
+  m.values(r.values);
+  return m;
+}
+
+task::Report report_from(const msgs::TaskReport& m) {
+  task::Report r;
+  r.group = m.group();
+  if (m.state() > static_cast<std::uint8_t>(task::GroupState::Held)) {
+    throw std::runtime_error("a report of unknown state " + std::to_string(m.state()));
+  }
+  r.state = static_cast<task::GroupState>(m.state());
+  r.cells = from_xy(m.xy());
+  r.values = m.values();
+  return r;
+}
+
+msgs::Route route_msg(const task::Route& r, std::uint32_t phase, comm::AgentId robot, std::uint32_t route_id) {
+  msgs::Route m;
+  m.phase(phase);
+  m.robot(robot);
+  m.route_id(route_id);
+  m.path_xy(to_xy(r.path));
+  m.release(r.release);
+  m.pick_steps(r.pick_steps);
+  m.drop_steps(r.drop_steps);
+  m.start_tick(r.start_tick);
+  return m;
+}
+
+task::WaypointReport waypoint_report_from(const msgs::MemberStatus& m) { return {m.robot(), m.round(), m.state()}; }
+
+msgs::PlanReport plan_report_msg(const task::PlanTelemetry& p, int group) {
+  msgs::PlanReport m;
+  m.group(static_cast<std::uint16_t>(group));
+  m.round(p.round);
+  m.plan_case(p.plan_case);
+  m.waypoints_xy(to_xy(p.waypoints));
+  m.group_frontiers_xy(to_xy(p.group_frontiers));
+  for (const auto& seg : p.global_segments) m.global_segments_xy().push_back(to_xy(seg));
+  m.chosen_segment(p.chosen_segment);
+  return m;
+}
+
+}  // namespace swarm::app

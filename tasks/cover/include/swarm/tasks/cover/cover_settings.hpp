@@ -1,0 +1,17 @@
+// A cover phase's settings (idl/scenario.proto Cover) as the coverage planner's inputs: the one
+// translation the GCS's and the leaders' parts both use.
+#pragma once
+
+#include <cstdint>
+
+#include "swarm/planner/coverage/cover_routes.hpp"
+#include "swarm/proto/scenario.pb.h"
+
+namespace swarm::tasks {
+
+// DARP and the coverage order for a cover phase; `seed` is the run's (mixed with `salt` so the
+// GCS's and each leader's divisions draw different numbers).
+[[nodiscard]] planner::CoverRoutesConfig cover_routes_config(const swarm::scenario::Cover& cover, std::uint64_t seed,
+                                                             std::uint64_t salt);
+
+}  // namespace swarm::tasks

@@ -1,0 +1,23 @@
+// A mapf phase's settings (idl/scenario.proto Mapf) made concrete for the run, and as the MAPF
+// solver's inputs: the one translation the GCS's and the leaders' parts (and rendezvous) use.
+#pragma once
+
+#include <cstdint>
+
+#include "swarm/planner/mapf/solver.hpp"
+#include "swarm/proto/scenario.pb.h"
+
+namespace swarm::tasks {
+
+// A mapf phase's settings with `execution: MAPF_EXECUTE_AUTO` made concrete for this scenario:
+// MAPF_EXECUTE_TIMED when every link class has no delay, jitter, loss or bandwidth cap, the scenario schedules no
+// fault (kill, cut or freeze) and the run is in lockstep (the plan's own timing is then exactly executable, so the executed
+// makespan equals the planned one); MAPF_EXECUTE_ADG otherwise (a wait costs a message round
+// trip, but no delay can cause a conflict). The GCS and every leader resolve it alike.
+[[nodiscard]] swarm::scenario::Mapf resolved_mapf(const swarm::scenario::Mapf& mapf,
+                                                  const swarm::scenario::Scenario& scenario);
+
+// The MAPF solver of a mapf phase (ECBS with its w by default).
+[[nodiscard]] planner::mapf::SolverConfig mapf_solver_config(const swarm::scenario::Mapf& mapf, std::uint64_t seed);
+
+}  // namespace swarm::tasks
