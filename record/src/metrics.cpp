@@ -65,6 +65,7 @@ MotionCounts& MotionCounts::operator+=(const MotionCounts& o) {
   wall_stops += o.wall_stops;
   routes_rejected += o.routes_rejected;
   turn_eighths += o.turn_eighths;
+  longest_blocked_ticks = std::max(longest_blocked_ticks, o.longest_blocked_ticks);
   return *this;
 }
 
@@ -76,7 +77,8 @@ MotionCounts MotionCounts::operator-(const MotionCounts& o) const {
           blocked_moves - o.blocked_moves,
           wall_stops - o.wall_stops,
           routes_rejected - o.routes_rejected,
-          turn_eighths - o.turn_eighths};
+          turn_eighths - o.turn_eighths,
+          longest_blocked_ticks};
 }
 
 namespace {
@@ -89,7 +91,8 @@ json counts_json(const MotionCounts& c) {
           {"blocked_moves", c.blocked_moves},
           {"wall_stops", c.wall_stops},
           {"routes_rejected", c.routes_rejected},
-          {"turn_eighths", c.turn_eighths}};
+          {"turn_eighths", c.turn_eighths},
+          {"longest_blocked_ticks", c.longest_blocked_ticks}};
 }
 
 MotionCounts counts_from(const Fields& f) {
@@ -102,6 +105,7 @@ MotionCounts counts_from(const Fields& f) {
   c.wall_stops = f.get<std::uint64_t>("wall_stops");
   c.routes_rejected = f.get<std::uint64_t>("routes_rejected");
   c.turn_eighths = f.get<std::uint64_t>("turn_eighths");
+  c.longest_blocked_ticks = f.get<std::uint64_t>("longest_blocked_ticks");
   return c;
 }
 

@@ -62,6 +62,7 @@ void SimNode::start_phase(std::uint32_t index, std::uint32_t tick) {
   log.task = config::task_name(mission_[index]);
   log.start_tick = tick;
   log.counts_at_start = world_.counts();
+  world_.mark();
   log.events_at_start = world_.events();
   log.diagonals_at_start = world_.diagonal_moves();
   log.judge_part = std::move(part.judge);
@@ -170,7 +171,11 @@ std::uint32_t SimNode::run() {
 record::MotionNumbers SimNode::motion_since(const std::vector<MotionCounts>& start, const ConflictEvents& events) const {
   record::MotionNumbers m;
   for (std::size_t r = 0; r < world_.counts().size(); ++r) {
-    const MotionCounts c = world_.counts()[r] - (start.empty() ? MotionCounts{} : start[r]);
+    MotionCounts c = world_.counts()[r];
+    if (!start.empty()) {  // a phase: since its start
+      c = c - start[r];
+      c.longest_blocked_ticks = world_.longest_blocked_since_mark()[r];
+    }
     m.per_robot[clock_.topology().name_of(static_cast<comm::AgentId>(r))] = c;
     m.total += c;
   }

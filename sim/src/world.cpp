@@ -80,6 +80,9 @@ World::World(planner::OccupancyGrid truth, std::vector<Cell> robot_cells, LidarC
       progress_(robots_.size()),
       seen_(truth_.width(), truth_.height(), truth_.resolution()),
       counts_(robots_.size()),
+      blocked_run_(robots_.size(), 0),
+      run_since_mark_(robots_.size(), 0),
+      longest_since_mark_(robots_.size(), 0),
       heading_(robots_.size(), -1),
       picks_(robots_.size()),
       drops_(robots_.size()) {
@@ -173,6 +176,13 @@ void World::move() {
   events_.edge += res.events.edge;
   for (std::size_t r = 0; r < n; ++r) {
     MotionCounts& c = counts_[r];
+    // A move that the motion model allowed but that did not happen: another robot was in the way.
+    if (intended[r] != robots_[r] && !res.moved[r]) {
+      c.longest_blocked_ticks = std::max(c.longest_blocked_ticks, ++blocked_run_[r]);
+      longest_since_mark_[r] = std::max(longest_since_mark_[r], ++run_since_mark_[r]);
+    } else {
+      blocked_run_[r] = run_since_mark_[r] = 0;
+    }
     c.vertex_conflicts += res.vertex[r];
     c.edge_conflicts += res.edge[r];
     c.blocked_moves += res.blocked[r];
@@ -193,6 +203,11 @@ void World::move() {
     act(static_cast<int>(r));
   }
   for (std::size_t r = 0; r < n; ++r) coverage_.visit(robots_[r]);
+}
+
+void World::mark() {
+  std::fill(run_since_mark_.begin(), run_since_mark_.end(), 0);
+  std::fill(longest_since_mark_.begin(), longest_since_mark_.end(), 0);
 }
 
 void World::scan(int robot, std::vector<float>& ranges) {

@@ -148,8 +148,8 @@ TEST(Tasks, MapfWithALeaderKilledMidwayItsStandbyTakesOverAndTheOthersArrive) {
   EXPECT_EQ(p["motion"]["blocked_moves"], 0);
 }
 
-// A plan proven infeasible ends the mission at once, incomplete and saying why (exit 0: the run
-// itself worked), instead of running on to max_ticks.
+// A plan proven infeasible ends the mission at once, incomplete and saying why (exit 3: the run
+// worked, the mission is not done), instead of running on to max_ticks.
 TEST(Tasks, MapfWithAnInfeasiblePlanEndsTheMissionAtOnce) {
   const std::string dir = fresh_dir("mapf_infeasible");
   // A corridor one cell wide, two robots, each to the other's end.
@@ -161,7 +161,8 @@ TEST(Tasks, MapfWithAnInfeasiblePlanEndsTheMissionAtOnce) {
       << "start { x: 0.3 y: 0.3 }\n"  // robots on the corridor's cells 1 and 2, from the west
       << "mission { phase { mapf { solver: MAPF_LACAM goals { x: 0.5 y: 0.3 } goals { x: 0.3 y: 0.3 } } } }\n";
   const CommandResult r = run_swarm("run --scenario " + dir + "/scenario.pbtxt --out " + dir + "/run");
-  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("the mission is incomplete (exit 3)"), std::string::npos) << r.output;
   const auto m = read_json(dir + "/run/metrics.json");
   EXPECT_FALSE(m["complete"].get<bool>());
   EXPECT_LT(m["ticks_run"].get<int>(), 10);

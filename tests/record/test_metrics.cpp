@@ -23,6 +23,7 @@ TEST(Metrics, RoundTripsThroughJson) {
   m.motion.total.moves = 12;
   m.motion.vertex_conflict_events = 3;
   m.motion.per_robot["leader-0"].blocked_moves = 2;
+  m.motion.per_robot["leader-0"].longest_blocked_ticks = 5;
   m.phases[0].task = {{"planning_rounds", 18}};
   const RunMetrics back = metrics_from_json(to_json(m), "test");
   EXPECT_EQ(to_json(back), to_json(m));
@@ -30,6 +31,7 @@ TEST(Metrics, RoundTripsThroughJson) {
   EXPECT_EQ(back.agents_lost[0].stopped_answering_at_tick, 99u);
   EXPECT_FALSE(back.agents_lost[0].rejoined_at_tick.has_value());
   EXPECT_EQ(back.motion.per_robot.at("leader-0").blocked_moves, 2u);
+  EXPECT_EQ(back.motion.per_robot.at("leader-0").longest_blocked_ticks, 5u);
 }
 
 TEST(Metrics, AMissingKeyOrAnotherVersionIsNamed) {

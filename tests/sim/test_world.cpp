@@ -41,6 +41,29 @@ TEST(World, MovesOneCellPerTickAlongTheRoute) {
   EXPECT_EQ(w.total_counts().blocked_moves, 0u);
 }
 
+// Robot 0 drives east along a one-cell corridor into robot 1, which waits on (2, 0) until tick 5
+// and then drives on: robot 0 is held up on ticks 2, 3 and 4 (each a vertex conflict: both meant
+// for (2, 0)), then follows. A phase mark after tick 3 sees 1 of those ticks.
+TEST(World, CountsTheLongestRunOfConsecutiveBlockedTicksOverTheRunAndSinceAMark) {
+  World w(open_room(8, 1), {{0, 0}, {2, 0}}, kLidar);
+  w.command(0, 1, {{0, 0}, {1, 0}, {2, 0}, {3, 0}});
+  w.command(1, 2, {{2, 0}, {2, 0}, {2, 0}, {2, 0}, {2, 0}, {3, 0}, {4, 0}, {5, 0}});
+  w.move();  // tick 1: robot 0 to (1, 0); robot 1 waits (a wait is never blocked)
+  w.move();  // tick 2: robot 0 held up
+  w.move();  // tick 3
+  EXPECT_EQ(w.counts()[0].longest_blocked_ticks, 2u);
+  w.mark();
+  w.move();  // tick 4: held up
+  w.move();  // tick 5: robot 1 leaves (2, 0) and robot 0 follows it in
+  for (int i = 0; i < 4; ++i) w.move();
+  EXPECT_EQ(w.robots()[0], (Cell{3, 0}));
+  EXPECT_EQ(w.counts()[0].longest_blocked_ticks, 3u);
+  EXPECT_EQ(w.counts()[0].vertex_conflicts, 3u);
+  EXPECT_EQ(w.longest_blocked_since_mark()[0], 1u);
+  EXPECT_EQ(w.counts()[1].longest_blocked_ticks, 0u);  // took part in the conflicts, but stayed by plan
+  EXPECT_EQ(w.total_counts().longest_blocked_ticks, 3u);  // the largest, not a sum
+}
+
 TEST(World, ARouteNotStartingOnTheRobotsCellIsRejectedAndStopsIt) {
   World w(open_room(6, 6), {{0, 0}}, kLidar);
   w.command(0, 1, {{0, 0}, {1, 0}, {2, 0}, {3, 0}});

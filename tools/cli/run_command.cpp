@@ -93,6 +93,15 @@ std::string summarize_metrics(const std::string& path) {
                 static_cast<unsigned long long>(m.motion.total.blocked_moves),
                 static_cast<unsigned long long>(m.motion.total.wall_stops));
   o << buf;
+  // The robot held up longest by another (the simulator's ground truth).
+  const auto stuck = std::max_element(m.motion.per_robot.begin(), m.motion.per_robot.end(), [](const auto& a, const auto& b) {
+    return a.second.longest_blocked_ticks < b.second.longest_blocked_ticks;
+  });
+  if (stuck != m.motion.per_robot.end() && stuck->second.longest_blocked_ticks > 0) {
+    std::snprintf(buf, sizeof buf, "  longest block    %llu ticks in a row (%s)\n",
+                  static_cast<unsigned long long>(stuck->second.longest_blocked_ticks), stuck->first.c_str());
+    o << buf;
+  }
   std::snprintf(buf, sizeof buf, "  wall time        %.1f s (%.1f ticks/s)\n", m.wall_seconds, m.ticks_per_second);
   o << buf;
   std::snprintf(buf, sizeof buf, " in %llu messages\n", static_cast<unsigned long long>(m.traffic.total_messages));
@@ -157,8 +166,10 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err)
     return 1;
   }
   std::string summary;
+  bool complete = false;
   try {
     summary = summarize_metrics(metrics);
+    complete = swarm::record::read_metrics(metrics).complete;
   } catch (const std::exception& e) {
     err << "swarm run: every process exited normally, but " << e.what() << "\n";
     return 1;
@@ -169,6 +180,10 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err)
       << "\n"
       << summary << "  map picture      " << png << "\n"
       << "run dir: " << l.run_dir << "\n";
+  if (!complete) {
+    err << "swarm run: the mission is incomplete (exit " << kExitIncomplete << "); metrics.json says why\n";
+    return kExitIncomplete;
+  }
   return 0;
 }
 

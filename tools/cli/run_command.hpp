@@ -1,7 +1,9 @@
 // `swarm run`: the launcher's run (launcher/run_launch.hpp), then pictures and a summary.
 //
-// Exit statuses of run_command: 0 success, 1 a process failed / timeout / missing outputs,
-// 2 a bad flag or scenario (ConfigError) or an unusable run directory, 130 interrupted.
+// Exit statuses of run_command: 0 the mission is complete; 3 it ran but is incomplete (max_ticks
+// reached, or a phase given up: the summary and metrics.json say which); 1 a process failed, the
+// wall-clock timeout, or missing outputs; 2 a bad flag or scenario (ConfigError) or an unusable
+// run directory; 130 interrupted.
 #pragma once
 
 #include <ostream>
@@ -11,6 +13,8 @@
 #include "run_launch.hpp"
 
 namespace swarm::tools {
+
+inline constexpr int kExitIncomplete = 3;
 
 // The last `n` lines of a text file (fewer if it is shorter; none if it cannot be read).
 [[nodiscard]] std::vector<std::string> last_lines(const std::string& path, int n);

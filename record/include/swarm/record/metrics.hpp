@@ -31,7 +31,7 @@
 
 namespace swarm::record {
 
-inline constexpr int kMetricsSchemaVersion = 3;  // 3: leader hand-overs, addressed_messages
+inline constexpr int kMetricsSchemaVersion = 4;  // 4: longest_blocked_ticks; 3: leader hand-overs
 
 class MetricsError : public std::runtime_error {
  public:
@@ -48,6 +48,10 @@ struct MotionCounts {
   std::uint64_t wall_stops = 0;
   std::uint64_t routes_rejected = 0;
   std::uint64_t turn_eighths = 0;  // rotation between consecutive moves, eighths of a turn (turns.hpp)
+  // The longest run of consecutive ticks on which the robot's move failed because of another
+  // robot (a blocked move, or a vertex or edge conflict): a robot stuck behind another. Not a sum:
+  // += keeps the larger, and a difference keeps the left's (the simulator measures it per phase).
+  std::uint64_t longest_blocked_ticks = 0;
   MotionCounts& operator+=(const MotionCounts& o);
   MotionCounts operator-(const MotionCounts& o) const;
 };

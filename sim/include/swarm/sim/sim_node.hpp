@@ -58,6 +58,8 @@ class SimNode {
   struct PhaseLog;
   [[nodiscard]] nlohmann::json judge_of(const PhaseLog& p, record::MotionNumbers& motion) const;
   // What robots did since `start` (per-robot counts then; empty = the start of the run).
+  // The robots' motion since `start` (a phase's start: the current phase's, as World::mark() was
+  // called there), or over the whole run (start empty).
   record::MotionNumbers motion_since(const std::vector<MotionCounts>& start, const ConflictEvents& events) const;
 
   comm::LockstepClock& clock_;

@@ -126,6 +126,11 @@ class World {
   std::uint64_t diagonal_moves() const { return diagonal_moves_; }
   MotionCounts total_counts() const;
   const ConflictEvents& events() const { return events_; }
+  // From here on, longest_blocked_since_mark() counts blocked runs from this tick (a phase's start).
+  void mark();
+  // Per robot: the longest run of consecutive blocked ticks since the last mark() (a run going on
+  // at the mark counts from it).
+  const std::vector<std::uint64_t>& longest_blocked_since_mark() const { return longest_since_mark_; }
 
  private:
   planner::OccupancyGrid truth_;
@@ -141,6 +146,9 @@ class World {
   int reachable_free_ = 0;
   int reachable_seen_ = 0;
   std::vector<MotionCounts> counts_;
+  std::vector<std::uint64_t> blocked_run_;         // per robot: consecutive blocked ticks up to now
+  std::vector<std::uint64_t> run_since_mark_;      // the same, counted from the last mark()
+  std::vector<std::uint64_t> longest_since_mark_;
   std::vector<int> heading_;  // of each robot's last move, -1 before its first
   std::uint64_t diagonal_moves_ = 0;
   std::vector<std::vector<std::uint32_t>> picks_, drops_;  // per robot, of its route
