@@ -370,6 +370,7 @@ void validate(const Scenario& s, const std::string& source) {
   p.in_range("lidar_beams", 4, 4096, s.lidar_beams());
   p.at_least("max_ticks", 1, s.max_ticks());
   p.positive("tick_seconds", s.tick_seconds());
+  p.positive("map_resolution_m", s.map_resolution_m());
   p.at_least("tick_ms", 1, s.tick_ms());
 
   const auto& e = s.explore();

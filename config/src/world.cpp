@@ -154,6 +154,8 @@ std::string resolve_map_path(const std::string& map, const std::string& scenario
   return p.lexically_normal().string();
 }
 
+bool is_movingai_map(const std::string& path) { return fs::path(path).extension() == ".map"; }
+
 std::string MapFrame::extent_text() const {
   return "x " + span(origin_x, origin_x + width * resolution) + " m and y " + span(origin_y, origin_y + height * resolution) +
          " m";
@@ -172,7 +174,8 @@ World resolve_world(const swarm::scenario::Scenario& scenario, const std::string
     throw ConfigError(src + ": field map: " + e.what());
   }
   try {
-    w.truth = swarm::planner::load_map_yaml(w.map_path);
+    w.truth = is_movingai_map(w.map_path) ? swarm::planner::load_movingai_map(w.map_path, scenario.map_resolution_m())
+                                          : swarm::planner::load_map_yaml(w.map_path);
   } catch (const swarm::planner::MapFileError& e) {
     throw ConfigError(e.what());
   } catch (const std::exception& e) {

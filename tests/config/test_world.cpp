@@ -103,6 +103,28 @@ TEST_F(World, AMapTooLargeForTheWireCoordinatesIsRefusedNamingTheLimit) {
   EXPECT_TRUE(contains(e, "long.yaml")) << e;
 }
 
+// A MovingAI benchmark map has no scale: its cells are the scenario's map_resolution_m.
+TEST_F(World, AMovingAiMapIsReadAtTheScenariosResolution) {
+  OccupancyGrid blocked = pocket_map();
+  blocked.set({12, 12}, CellState::Occupied);  // .map has no unknown cells
+  swarm::planner::save_movingai_map((dir_ / "maps" / "pocket.map").string(), blocked);
+  EXPECT_TRUE(cfg::is_movingai_map("maps/pocket.map"));
+  EXPECT_FALSE(cfg::is_movingai_map("maps/pocket.yaml"));
+  Scenario s = on_pocket(1, 2);
+  s.set_map("maps/pocket.map");
+  s.set_map_resolution_m(0.5);
+  const cfg::World w = cfg::resolve_world(s, dir_.string());
+  EXPECT_EQ(w.frame.width, 20);
+  EXPECT_EQ(w.frame.height, 20);
+  EXPECT_DOUBLE_EQ(w.frame.resolution, 0.5);
+  for (int i = 0; i < static_cast<int>(blocked.size()); ++i) {
+    EXPECT_EQ(w.truth.is_free(w.truth.cell_of(i)), blocked.is_free(blocked.cell_of(i))) << i;
+  }
+  s.set_map_resolution_m(0);
+  const std::string e = error_of([&] { (void)cfg::resolve_world(s, dir_.string()); });
+  EXPECT_TRUE(contains(e, "map_resolution_m")) << e;
+}
+
 TEST_F(World, PathsAreTakenFromTheScenarioFolder) {
   const std::string expected = (dir_ / "maps" / "pocket.yaml").string();
   EXPECT_EQ(cfg::resolve_map_path("maps/pocket.yaml", dir_.string()), expected);

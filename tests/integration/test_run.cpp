@@ -1,6 +1,7 @@
 // Whole runs over real DDS: the simulator, the GCS, every leader and member as processes.
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <map>
 
 #include <gtest/gtest.h>
@@ -16,6 +17,32 @@ namespace swarm::test {
 namespace {
 
 namespace fs = std::filesystem;
+
+// A MovingAI benchmark map, at the resolution --map-resolution gives: two rooms joined by a door.
+TEST(IntegrationRun, ExploresAMovingAiMapAtTheGivenResolution) {
+  const std::string dir = fresh_dir("movingai_map");
+  std::ofstream(dir + "/rooms.map") << "type octile\nheight 8\nwidth 16\nmap\n"
+                                    << "@@@@@@@@@@@@@@@@\n"
+                                    << "@......@.......@\n"
+                                    << "@......@.......@\n"
+                                    << "@..............@\n"
+                                    << "@......@.......@\n"
+                                    << "@......@.......@\n"
+                                    << "@......@.......@\n"
+                                    << "@@@@@@@@@@@@@@@@\n";
+  const CommandResult r = run_swarm("run --map " + dir + "/rooms.map --map-resolution 0.25 --groups 1 "
+                                    "--robots-per-group 2 --max-ticks 400 --out " + dir + "/run");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("run finished: rooms,"), std::string::npos) << r.output;
+  const auto m = read_json(dir + "/run/metrics.json");
+  EXPECT_TRUE(m["complete"].get<bool>());
+  EXPECT_GE(m["explored_fraction"].get<double>(), 0.99);
+  const auto frames = record::read_record(dir + "/run/run.pb");
+  ASSERT_FALSE(frames.empty());
+  EXPECT_EQ(frames[0].header().width(), 16u);
+  EXPECT_EQ(frames[0].header().height(), 8u);
+  EXPECT_DOUBLE_EQ(frames[0].header().resolution(), 0.25);
+}
 
 // The small built-in scenario: 2 groups x 2 robots on the 8 m x 8 m three-room map.
 TEST(IntegrationRun, SmallMissionCompletesWithEveryOutput) {

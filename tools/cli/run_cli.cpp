@@ -17,12 +17,13 @@ Command add_run(CLI::App& app) {
   struct Flags {
     RunOptions run;
     std::string map, start, mode;
+    double map_resolution = 0;
     std::uint32_t groups = 0, robots = 0, max_ticks = 0, tick_ms = 0;
     std::uint64_t seed = 0;
     long timeout_s = 600;
     bool realtime = false;
     int domain = -1;
-    CLI::Option *map_opt, *start_opt, *groups_opt, *robots_opt, *mode_opt, *seed_opt, *ticks_opt, *realtime_opt,
+    CLI::Option *map_opt, *map_resolution_opt, *start_opt, *groups_opt, *robots_opt, *mode_opt, *seed_opt, *ticks_opt, *realtime_opt,
         *tick_ms_opt, *domain_opt;
   };
   auto f = std::make_shared<Flags>();
@@ -35,7 +36,11 @@ Command add_run(CLI::App& app) {
   run_cmd->add_option("scenario", run.scenario_path, "The scenario file, as --scenario")
       ->excludes(scenario_opt);
   f->map_opt = run_cmd->add_option(
-      "--map", f->map, "Built-in map (open, maze1, maze2, small, warehouse-5x8) or a map_server YAML file");
+      "--map", f->map,
+      "Built-in map (open, maze1, maze2, small, warehouse-5x8, ...), a map_server YAML file or a MovingAI .map file");
+  f->map_resolution_opt = run_cmd->add_option("--map-resolution", f->map_resolution,
+                                              "Metres per cell of a MovingAI .map (default: the scenario's "
+                                              "map_resolution_m, 0.2)");
   f->start_opt = run_cmd->add_option("--start", f->start, "Start point X,Y in metres (map frame)");
   f->groups_opt = run_cmd->add_option("--groups", f->groups, "Number of groups");
   f->robots_opt = run_cmd->add_option("--robots-per-group", f->robots, "Robots per group, leader included");
@@ -84,6 +89,7 @@ Command add_run(CLI::App& app) {
             RunOptions run = f->run;
             RunOverrides& o = run.overrides;
             if (f->map_opt->count()) o.map = f->map;
+            if (f->map_resolution_opt->count()) o.map_resolution = f->map_resolution;
             if (f->start_opt->count()) o.start = f->start;
             if (f->groups_opt->count()) o.groups = f->groups;
             if (f->robots_opt->count()) o.robots_per_group = f->robots;

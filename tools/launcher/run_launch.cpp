@@ -145,6 +145,7 @@ void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o) {
     s.mutable_start()->set_x(xy->first);
     s.mutable_start()->set_y(xy->second);
   }
+  if (o.map_resolution) s.set_map_resolution_m(*o.map_resolution);
   if (o.groups) s.set_groups(*o.groups);
   if (o.robots_per_group) s.set_robots_per_group(*o.robots_per_group);
   if (o.mode) s.mutable_explore()->set_mode(cfg::parse_mode(*o.mode));

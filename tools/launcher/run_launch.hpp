@@ -33,7 +33,8 @@ namespace swarm::tools {
 
 // Flags that override single scenario fields; unset = keep the file's value.
 struct RunOverrides {
-  std::optional<std::string> map;    // built-in name or YAML path (relative to the working dir)
+  std::optional<std::string> map;    // built-in name, YAML or MovingAI .map path (relative to the working dir)
+  std::optional<double> map_resolution;  // metres per cell of a MovingAI .map
   std::optional<std::string> start;  // "X,Y" in metres, map frame
   std::optional<std::uint32_t> groups;
   std::optional<std::uint32_t> robots_per_group;

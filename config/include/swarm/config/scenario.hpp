@@ -122,9 +122,12 @@ void set_mission(swarm::scenario::Scenario& scenario, const std::vector<std::str
 [[nodiscard]] std::vector<std::string> builtin_map_names();
 
 // A built-in name gives data_dir()/maps/NAME.yaml; anything else is a path to a map_server YAML
-// file, relative paths taken from `scenario_dir` (the scenario file's folder; "" = the working
-// directory). Throws ConfigError if neither exists.
+// file or a MovingAI `.map`, relative paths taken from `scenario_dir` (the scenario file's folder;
+// "" = the working directory). Throws ConfigError if neither exists.
 [[nodiscard]] std::string resolve_map_path(const std::string& map, const std::string& scenario_dir);
+// Is the file a MovingAI benchmark map (by its `.map` extension)? It is read with the scenario's
+// map_resolution_m; any other file as a map_server YAML.
+[[nodiscard]] bool is_movingai_map(const std::string& path);
 
 // The largest map side a run accepts: cells travel as 16-bit signed coordinates.
 inline constexpr int kMaxMapSide = 32767;
