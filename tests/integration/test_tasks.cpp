@@ -117,8 +117,10 @@ TEST(Tasks, MapfWithoutDelayKeepsThePlansTimingWithNoConflict) {
   const auto m = run_task("mapf", "mapf-small.pbtxt", "");
   const auto& p = phase_named(m, "mapf");
   EXPECT_EQ(p["task"]["robots_at_goal"], 6);
+  EXPECT_TRUE(p["task"]["ground_truth_at_goal"].is_null());  // random goals: drawn by the GCS
   EXPECT_EQ(p["task"]["conflicts"], 0);
   EXPECT_EQ(p["motion"]["blocked_moves"], 0);
+  EXPECT_EQ(p["motion"]["longest_blocked_ticks"], 0);
   EXPECT_EQ(p["task"]["driven_makespan_ticks"], p["task"]["planned_makespan"]);
 }
 
@@ -170,6 +172,10 @@ TEST(Tasks, MapfWithAnInfeasiblePlanEndsTheMissionAtOnce) {
   EXPECT_FALSE(p["complete"].get<bool>());
   EXPECT_NE(p["gave_up"].get<std::string>().find("infeasible"), std::string::npos) << p["gave_up"];
   EXPECT_NE(r.output.find("INCOMPLETE: phase mapf given up: no plan for 2 robots"), std::string::npos) << r.output;
+  // The goals were the scenario's: the simulator judges them from the robots' true cells.
+  EXPECT_EQ(p["task"]["ground_truth_at_goal"], 0);
+  EXPECT_EQ(p["task"]["ground_truth_living"], 2);
+  EXPECT_NE(r.output.find("0/2 robots at goal (ground truth)"), std::string::npos) << r.output;
 }
 
 // The robots explore, then gather around a point: every one on a cell of the tightest cluster the

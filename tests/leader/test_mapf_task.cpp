@@ -32,6 +32,20 @@ TEST(MapfTask, WithoutDelayEveryRobotArrivesWithNoConflict) {
             << "\n";
 }
 
+// Goals given in the scenario are known to the simulator: it counts, from the robots' true cells,
+// every living robot on its goal when the GCS calls the phase complete.
+TEST(MapfTask, TheSimulatorAgreesFromGroundTruthThatEveryRobotIsOnItsGoal) {
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+      "map: 'small' groups: 1 robots_per_group: 3 max_ticks: 600 mission { phase { mapf { "
+      "goals { x: 1.1 y: 1.1 } goals { x: 6.9 y: 6.9 } goals { x: 1.1 y: 6.9 } } } }"));
+  const auto m = s.run_to_end();
+  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto& p = mapf_phase(m);
+  EXPECT_EQ(p["task"]["robots_at_goal"], 3);
+  EXPECT_EQ(p["task"]["ground_truth_at_goal"], 3);
+  EXPECT_EQ(p["task"]["ground_truth_living"], 3);
+}
+
 // CBS out of time leaves nothing safe to drive: the GCS tries LaCAM (complete) within another such
 // limit, and both attempts are in the phase's numbers.
 TEST(MapfTask, ATimedOutSolverFallsBackToLacam) {

@@ -254,6 +254,20 @@ TEST(RunCommandHelpers, MetricsSummary) {
   EXPECT_TRUE(contains(n, "INCOMPLETE")) << n;
   spit(dir.file("bad.json"), "{not json");
   EXPECT_THROW((void)summarize_metrics(dir.file("bad.json")), std::runtime_error);
+  // The robot held up longest; a mapf phase the GCS called complete while the simulator saw a
+  // robot off its goal.
+  auto mapf = summary_fixture();
+  mapf.motion.per_robot["member-0-1"].longest_blocked_ticks = 4;
+  mapf.motion.per_robot["member-1-2"].longest_blocked_ticks = 31;
+  swarm::record::PhaseMetrics ph;
+  ph.name = "mapf";
+  ph.complete = true;
+  ph.task = {{"ground_truth_at_goal", 8}, {"ground_truth_living", 9}};
+  mapf.phases.push_back(ph);
+  swarm::record::write_metrics(dir.file("mapf.json"), mapf);
+  const std::string g = summarize_metrics(dir.file("mapf.json"));
+  EXPECT_TRUE(contains(g, "longest block    31 ticks in a row (member-1-2)")) << g;
+  EXPECT_TRUE(contains(g, "8/9 robots at goal (ground truth; the GCS judged it complete: they disagree)")) << g;
   EXPECT_THROW((void)summarize_metrics(dir.file("none.json")), std::runtime_error);
   // A required key missing, or another schema version, is an error naming it.
   auto j = swarm::record::to_json(summary_fixture());

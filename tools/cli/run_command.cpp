@@ -79,6 +79,14 @@ std::string summarize_metrics(const std::string& path) {
       std::snprintf(buf, sizeof buf, ", covered %.1f %% (ground truth)", 100.0 * p.task["covered_fraction"].get<double>());
       o << buf;
     }
+    if (p.task.contains("ground_truth_at_goal") && p.task["ground_truth_at_goal"].is_number() &&
+        p.task.contains("ground_truth_living") &&
+        p.task["ground_truth_living"].is_number()) {
+      const int at = p.task["ground_truth_at_goal"].get<int>(), living = p.task["ground_truth_living"].get<int>();
+      std::snprintf(buf, sizeof buf, ", %d/%d robots at goal (ground truth%s)", at, living,
+                    p.complete && at < living ? "; the GCS judged it complete: they disagree" : "");
+      o << buf;
+    }
     std::snprintf(buf, sizeof buf, ", %llu conflicts", static_cast<unsigned long long>(p.motion.vertex_conflict_events +
                                                                                        p.motion.edge_conflict_events));
     o << buf << "\n";

@@ -11,16 +11,34 @@ namespace swarm::tasks {
 namespace {
 // The simulator's judge. Executed makespan: ticks from the phase's start to the last move any
 // robot made (orders and routes take a few ticks to arrive), and from the first move to the last
-// (the plan's own measure, comparable with the planned makespan); conflicts as the world saw them.
+// (the plan's own measure, comparable with the planned makespan); conflicts as the world saw them;
+// and, from the robots' true cells, how many living robots stand on their goals (the GCS judges
+// arrival from the leaders' reports; the two must agree). Only goals fixed at load (the scenario's
+// points or scen) are known here: random goals are drawn by the GCS from its known map when the
+// phase starts, and their counts are then null.
 class MapfJudge : public sim::PhaseJudge {
  public:
-  nlohmann::json judge(const sim::World&, const sim::PhaseFacts& f) const override {
+  explicit MapfJudge(std::vector<planner::Cell> goals) : goals_(std::move(goals)) {}
+
+  nlohmann::json judge(const sim::World& world, const sim::PhaseFacts& f) const override {
     const bool moved = f.last_move_tick.has_value();
+    int living = 0, at_goal = 0;
+    for (std::size_t r = 0; r < world.robots().size() && r < goals_.size(); ++r) {
+      if (r < f.alive.size() && !f.alive[r]) continue;
+      ++living;
+      at_goal += world.robots()[r] == goals_[r] ? 1 : 0;
+    }
+    const bool known = !goals_.empty();
     return {{"makespan_ticks", moved ? *f.last_move_tick - f.start_tick : 0},
             {"driven_makespan_ticks", moved ? *f.last_move_tick - *f.first_move_tick + 1 : 0},
             {"conflicts", f.motion.vertex_conflict_events + f.motion.edge_conflict_events},
-            {"blocked_moves", f.motion.total.blocked_moves}};
+            {"blocked_moves", f.motion.total.blocked_moves},
+            {"ground_truth_at_goal", known ? nlohmann::json(at_goal) : nlohmann::json(nullptr)},
+            {"ground_truth_living", known ? nlohmann::json(living) : nlohmann::json(nullptr)}};
   }
+
+ private:
+  std::vector<planner::Cell> goals_;  // per robot id (the row's `resolve`)
 };
 }  // namespace
 
@@ -50,7 +68,9 @@ TaskRow mapf_row() {
   row.leader = [](const Phase& phase, const app::RoleSetup& setup, int group, std::uint32_t) {
     return std::make_unique<leader::MapfGroupTask>(tasks::resolved_mapf(phase.mapf(), setup.world.scenario), group);
   };
-  row.judge = [](const Phase&, const app::RoleSetup&, std::uint32_t) { return std::make_unique<MapfJudge>(); };
+  row.judge = [](const Phase&, const app::RoleSetup& setup, std::uint32_t index) {
+    return std::make_unique<MapfJudge>(std::any_cast<const std::vector<planner::Cell>&>(setup.world.phase_data.at(index)));
+  };
   row.resolve = [](const Phase& phase, const config::World& world, const std::string& field) -> std::any {
     return mapf_goals(phase.mapf(), world.truth, static_cast<int>(world.robot_cells.size()), field);
   };
