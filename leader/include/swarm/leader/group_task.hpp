@@ -7,7 +7,7 @@
 //   step(ctx)             every tick of the phase, after the due messages' handlers ran and
 //                         before the leader's own robot acts
 //   finish_step(ctx)      every tick, after the own robot acted (its waypoint report, if any,
-//                         came through on_member_status)
+//                         came through on_waypoint)
 //   on_order / on_round / on_waypoint / on_progress / on_carrying
 //                         the messages of the current phase, routed by the node
 //   member_lost / member_back
