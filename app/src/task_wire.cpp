@@ -17,7 +17,8 @@ task::Clock task_clock(const msgs::Clock& clock, const comm::Topology& topology)
   return out;
 }
 
-msgs::TaskOrder order_msg(const task::Order& o, std::uint32_t phase, planner::PatchEncoding encoding) {
+msgs::TaskOrder order_msg(const task::Order& o, std::uint32_t phase, planner::PatchEncoding encoding,
+                          EncodedMapCache* cache) {
   msgs::TaskOrder m;
   m.phase(phase);
   m.group(o.group);
@@ -27,7 +28,16 @@ msgs::TaskOrder order_msg(const task::Order& o, std::uint32_t phase, planner::Pa
     m.width(static_cast<std::uint16_t>(o.known_map->width()));
     m.height(static_cast<std::uint16_t>(o.known_map->height()));
     m.map_encoding(static_cast<std::uint8_t>(encoding));
-    m.known_map(encode_map(*o.known_map, encoding));
+    if (!cache) {
+      m.known_map(encode_map(*o.known_map, encoding));
+    } else {
+      if (!cache->map || cache->encoding != encoding || !(*cache->map == *o.known_map)) {
+        cache->map = *o.known_map;
+        cache->encoding = encoding;
+        cache->bytes = encode_map(*o.known_map, encoding);
+      }
+      m.known_map(cache->bytes);
+    }
   }
   if (!o.cells.empty()) {
     if (!o.known_map) throw std::logic_error("an order's cell set needs its known map");

@@ -30,17 +30,6 @@ planner::PatchEncoding map_encoding(const app::RoleSetup& setup) {
              : planner::PatchEncoding::RunLength;
 }
 
-MissionConfig mission_config(const app::RoleSetup& setup) {
-  const auto& s = setup.world.scenario;
-  MissionConfig c;
-  c.groups = setup.topology.groups();
-  c.start_cells = setup.world.robot_cells;
-  c.replan_threshold = s.explore().replan_threshold_steps();
-  // Ideal mode is the paper's "no delay" comparison: the map fused now is used now.
-  c.map_delay_rounds = s.explore().mode() == swarm::scenario::IDEAL ? 0 : s.explore().global_map_delay_rounds();
-  return c;
-}
-
 // How many ticks of silence make a leader unreachable. In lockstep a heartbeat sent at t is seen
 // by its last arrival tick, plus two ticks of slack. In real time a busy machine delays a process by
 // a few ticks of 40 ms now and then, which is not a cut link: half a second of slack.
@@ -57,8 +46,8 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const 
     : agent_(agent),
       setup_(setup),
       run_dir_(run_dir),
-      mission_(setup.world.frame.width, setup.world.frame.height, setup.world.frame.resolution,
-               mission_config(setup)),
+      fused_(setup.world.frame.width, setup.world.frame.height, setup.world.frame.resolution,
+             setup.topology.groups()),
       phases_(config::mission_phases(setup.world.scenario)),
       progress_(progress, setup.world.scenario.max_ticks()),
       record_(record::run_record_path(run_dir)),
@@ -75,7 +64,7 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const 
     if (h.group() < last_heard_.size() && from_leader(h.header())) last_heard_[h.group()] = agent_.tick();
   }, comm::Delivery::Reliable, writers);
   agent.subscribe<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, [this](const msgs::MapPatch& p) {
-    mission_.fuse(p.group(), app::decode_patch(p.data(), setup_.world.frame.cells()));
+    fused_.fuse(p.group(), app::decode_patch(p.data(), setup_.world.frame.cells()));
   }, comm::Delivery::Reliable, writers);
   agent.subscribe<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs, [this](const msgs::GroupStatus& s) {
     if (from_leader(s.header())) statuses_.push_back(s);
@@ -102,10 +91,12 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const 
   auto& order = agent.advertise<msgs::TaskOrder>(topic::kTaskOrder, LinkClass::LeaderGcs, leaders);
   auto& round = agent.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, leaders);
   outlets_.order = [this, &order](const task::Order& o) {
-    msgs::TaskOrder m = app::order_msg(o, phase_, map_encoding(setup_));
+    msgs::TaskOrder m = app::order_msg(o, phase_, map_encoding(setup_), &order_map_);
     order.send(m);
   };
-  outlets_.round = [this, &round](std::uint32_t index, std::uint32_t fused_tick, const planner::OccupancyGrid& map) {
+  outlets_.round = [this, &round](std::uint32_t fused_tick, const planner::OccupancyGrid& map) {
+    round_ticks_.push_back(last_tick_);
+    const auto index = static_cast<std::uint32_t>(round_ticks_.size());
     const planner::PatchEncoding encoding = map_encoding(setup_);
     msgs::RoundStart r;
     r.round(index);
@@ -115,6 +106,7 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const 
     r.encoding(static_cast<std::uint8_t>(encoding));
     r.map_rle(app::encode_map(map, encoding));
     round.send(r);
+    return index;
   };
   announce_phase_ = [&phase](std::uint32_t index, const std::string& task) {
     msgs::PhaseStart p;
@@ -222,7 +214,7 @@ bool GcsNode::step(const msgs::Clock& clock) {
   record_.append(poses);
 
   const task::Clock tick_clock = app::task_clock(clock, setup_.topology);
-  GcsContext ctx{setup_, phase_, tick_clock, mission_, record_, outlets_};
+  GcsContext ctx{setup_, phase_, tick_clock, fused_, record_, outlets_};
   if (phase_starts_.empty()) {
     phase_starts_.push_back(clock.tick());
     record_phase(clock.tick(), false, false);
@@ -336,7 +328,7 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
   m.ticks_run = last_tick_ + 1;
   m.steps = m.complete ? *complete_tick_ : m.ticks_run;
   m.steps_to_99 = sim.steps_to_99;
-  m.planning_rounds = mission_.round();
+  m.planning_rounds = static_cast<std::uint32_t>(round_ticks_.size());
   m.explored_fraction = sim.explored_fraction;
   m.wall_seconds = wall;
   m.ticks_per_second = wall > 0 ? m.ticks_run / wall : 0.0;
@@ -385,8 +377,8 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
     }
     m.agents_lost.push_back(lost);
   }
-  for (std::size_t i = 0; i < mission_.round_ticks().size(); ++i) {
-    m.rounds.emplace_back(static_cast<std::uint32_t>(i + 1), mission_.round_ticks()[i]);
+  for (std::size_t i = 0; i < round_ticks_.size(); ++i) {
+    m.rounds.emplace_back(static_cast<std::uint32_t>(i + 1), round_ticks_[i]);
   }
   // Every robot that led a group planned for it (a standby that took over, too).
   for (comm::AgentId c : t.all_candidates()) {
@@ -419,7 +411,7 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
     m.gcs_restarts.push_back(r);
   }
   m.planning_ms_per_group_round =
-      mission_.round() > 0 ? 1000.0 * m.planning_seconds_total / (mission_.round() * t.groups()) : 0.0;
+      m.planning_rounds > 0 ? 1000.0 * m.planning_seconds_total / (m.planning_rounds * t.groups()) : 0.0;
   m.explored_curve = sim.explored_curve;
   m.motion = sim.motion;
   // One entry per phase that started: the GCS's times and the task's numbers, the simulator's
@@ -442,7 +434,7 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
   }
   record::write_metrics(run_dir_ + "/metrics.json", m);
 
-  record_.append(map_frame(last_tick_, mission_.round(), phase_, mission_.fused()));
+  record_.append(map_frame(last_tick_, m.planning_rounds, phase_, fused_.grid()));
   record::Frame summary;
   auto* sm = summary.mutable_summary();
   sm->set_steps(m.steps);

@@ -53,6 +53,26 @@ TEST(TaskWire, AnOrderWithMapCellsValuesAndRoutesComesBackAsSent) {
   }
 }
 
+TEST(TaskWire, TheMapCacheEncodesAMapOnceAndAChangedMapAgain) {
+  task::Order o;
+  o.known_map = hall();
+  EncodedMapCache cache;
+  const auto zstd = planner::PatchEncoding::ZstdRunLength;
+  const msgs::TaskOrder first = order_msg(o, 0, zstd, &cache);
+  EXPECT_EQ(first.known_map(), encode_map(hall(), zstd));
+  ASSERT_TRUE(cache.map.has_value());
+  // The same map again: the cached bytes (poisoned here to see that they are the ones sent).
+  cache.bytes = {42};
+  EXPECT_EQ(order_msg(o, 0, zstd, &cache).known_map(), (std::vector<std::uint8_t>{42}));
+  // Another encoding, or another map, is encoded afresh.
+  EXPECT_EQ(order_msg(o, 0, planner::PatchEncoding::RunLength, &cache).known_map(),
+            encode_map(hall(), planner::PatchEncoding::RunLength));
+  o.known_map->set(Cell{1, 1}, planner::CellState::Occupied);
+  const msgs::TaskOrder changed = order_msg(o, 0, planner::PatchEncoding::RunLength, &cache);
+  EXPECT_EQ(changed.known_map(), encode_map(*o.known_map, planner::PatchEncoding::RunLength));
+  EXPECT_EQ(order_from(changed, frame()).known_map->at(Cell{1, 1}), planner::CellState::Occupied);
+}
+
 TEST(TaskWire, AnOrderWithoutAMapLeavesTheMapFieldsEmpty) {
   task::Order o;
   o.group = task::kAllGroups;

@@ -122,7 +122,9 @@ TEST(MemberNode, FollowsARouteWithAWaitAndARevisitAndReportsItsProgress) {
   EXPECT_EQ(counts.wall_stops, 0u);
   for (std::size_t i = 0; i < progress.size(); ++i) {
     EXPECT_EQ(progress[i].route_id(), 7u);
-    if (i > 0) EXPECT_GE(progress[i].step(), progress[i - 1].step());
+    if (i > 0) {
+      EXPECT_GE(progress[i].step(), progress[i - 1].step());
+    }
   }
   EXPECT_EQ(progress.back().step(), route.size() - 1);
 }

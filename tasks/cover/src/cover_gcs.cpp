@@ -31,7 +31,7 @@ std::vector<int> CoverGcsTask::living_groups(const GcsContext& ctx) const {
 void CoverGcsTask::start(GcsContext& ctx) {
   const comm::Topology& t = ctx.setup.topology;
   // The map to cover: the map file when the robots are given it, else what the GCS has fused.
-  known_ = map_given_ ? ctx.setup.given_map : ctx.mission.fused();
+  known_ = map_given_ ? ctx.setup.given_map : ctx.fused.grid();
   std::vector<Cell> robots;
   for (int r = 0; r < t.robots(); ++r) {
     if (ctx.alive(r)) robots.push_back(ctx.cell_of(r));

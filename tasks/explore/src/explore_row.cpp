@@ -21,8 +21,15 @@ TaskRow explore_row() {
   row.name = "explore";
   row.phase_case = Phase::kExplore;
   row.motion = planner::MotionModel::eight();  // the paper's 8-connected robots
-  row.gcs = [](const Phase&, const app::RoleSetup&, std::uint32_t index) {
-    return std::make_unique<gcs::ExploreGcsTask>(index);
+  row.gcs = [](const Phase& phase, const app::RoleSetup& setup, std::uint32_t index) {
+    const swarm::scenario::Explore& e = phase.explore();
+    PlanningRoundsConfig c;
+    c.groups = setup.topology.groups();
+    c.start_cells = setup.world.robot_cells;
+    c.replan_threshold = e.replan_threshold_steps();
+    // Ideal mode is the paper's "no delay" comparison: the map fused now is used now.
+    c.map_delay_rounds = e.mode() == swarm::scenario::IDEAL ? 0 : e.global_map_delay_rounds();
+    return std::make_unique<gcs::ExploreGcsTask>(index, std::move(c));
   };
   row.leader = [](const Phase& phase, const app::RoleSetup& setup, int, std::uint32_t) {
     return std::make_unique<leader::ExploreGroupTask>(phase.explore(), setup.world.scenario.seed(),

@@ -42,7 +42,7 @@ std::vector<Cell> MapfGcsTask::random_goals(const GcsContext& ctx) const {
 }
 
 void MapfGcsTask::start(GcsContext& ctx) {
-  known_ = map_given_ ? ctx.setup.given_map : ctx.mission.fused();
+  known_ = map_given_ ? ctx.setup.given_map : ctx.fused.grid();
   start_tick_ = ctx.tick();
   if (!pick_goals_) {
     goals_ = std::any_cast<const std::vector<Cell>&>(ctx.setup.world.phase_data.at(phase_));

@@ -25,8 +25,9 @@
 #include "swarm/comm/leadership.hpp"
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/app/role.hpp"
+#include "swarm/app/task_wire.hpp"
 #include "swarm/gcs/gcs_task.hpp"
-#include "swarm/gcs/mission.hpp"
+#include "swarm/gcs/fused_map.hpp"
 #include "swarm/gcs/outages.hpp"
 #include "swarm/gcs/progress.hpp"
 #include "swarm/planner/grid/map_patch.hpp"
@@ -56,13 +57,15 @@ class GcsNode {
   comm::LockstepAgent& agent_;
   const app::RoleSetup& setup_;
   std::string run_dir_;
-  Mission mission_;  // the fused map, and exploration's planning rounds
+  FusedMap fused_;
+  std::vector<std::uint32_t> round_ticks_;  // the tick each planning round of the run started
   std::vector<swarm::scenario::Phase> phases_;
   std::vector<std::unique_ptr<GcsTask>> tasks_;
   std::uint32_t phase_ = 0;
   std::vector<std::uint32_t> phase_starts_;
   std::vector<std::uint32_t> phase_ends_;
   GcsOutlets outlets_;
+  app::EncodedMapCache order_map_;  // the known map the last order carried, encoded
   std::function<void(std::uint32_t, const std::string&)> announce_phase_;
   std::vector<msgs::GroupStatus> statuses_;
   std::vector<msgs::TaskReport> task_reports_;

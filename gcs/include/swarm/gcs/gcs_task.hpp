@@ -29,7 +29,7 @@
 
 #include "swarm/app/role.hpp"
 #include "swarm/app/task_messages.hpp"
-#include "swarm/gcs/mission.hpp"
+#include "swarm/gcs/fused_map.hpp"
 #include "swarm/planner/grid/grid.hpp"
 #include "swarm/record/record.hpp"
 
@@ -38,15 +38,16 @@ namespace swarm::gcs {
 struct GcsOutlets {
   std::function<void(const task::Order&)> order;  // to every leader (the order names its group)
   // A planning round: to every leader, with the fused map of fused_tick (each adopts it as its
-  // global map; leader/group_map.hpp).
-  std::function<void(std::uint32_t round, std::uint32_t fused_tick, const planner::OccupancyGrid& map)> round;
+  // global map; leader/group_map.hpp). Returns the round's number, which the GCS counts across the
+  // run (metrics.json's planning_rounds and rounds); the leaders' round_done names it.
+  std::function<std::uint32_t(std::uint32_t fused_tick, const planner::OccupancyGrid& map)> round;
 };
 
 struct GcsContext {
   const app::RoleSetup& setup;
   std::uint32_t phase = 0;
   const task::Clock& clock;
-  Mission& mission;  // the fused map (and exploration's planning rounds)
+  const FusedMap& fused;  // every group's map changes so far
   record::RecordWriter& record;
   GcsOutlets& out;
 

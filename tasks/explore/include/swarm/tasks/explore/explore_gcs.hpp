@@ -1,15 +1,19 @@
 // The GCS's exploration task (docs/papers.md section 1): planning rounds on the fused map with the
-// paper's one-round delay (mission.hpp), each round's map to the leaders, completion when no
-// reachable frontier is left.
+// paper's one-round delay (planning_rounds.hpp), each round's map to the leaders, completion when
+// no reachable frontier is left.
 #pragma once
 
+#include <optional>
+
 #include "swarm/gcs/gcs_task.hpp"
+#include "swarm/tasks/explore/planning_rounds.hpp"
 
 namespace swarm::gcs {
 
 class ExploreGcsTask : public GcsTask {
  public:
-  explicit ExploreGcsTask(std::uint32_t phase) : phase_(phase) {}
+  ExploreGcsTask(std::uint32_t phase, tasks::PlanningRoundsConfig config)
+      : phase_(phase), config_(std::move(config)), rounds_(config_) {}
   void start(GcsContext& ctx) override;
   void step(GcsContext& ctx) override;
   [[nodiscard]] bool complete() const override { return complete_; }
@@ -19,9 +23,12 @@ class ExploreGcsTask : public GcsTask {
 
  private:
   std::uint32_t phase_;
+  tasks::PlanningRoundsConfig config_;
+  tasks::PlanningRounds rounds_;
+  // The run-wide number of this phase's round 1 on the wire; this phase's round r went out as
+  // first_round_ + r - 1.
+  std::optional<std::uint32_t> first_round_;
   bool complete_ = false;
-  std::uint32_t rounds_at_start_ = 0;
-  std::uint32_t rounds_ = 0;
 };
 
 }  // namespace swarm::gcs
