@@ -52,8 +52,8 @@ int render_command(const RenderOptions& o, std::ostream& out, std::ostream& err)
 int bench_command(const std::string& bin_dir, const std::vector<std::string>& args,
                   std::ostream& err) {
   // `swarm bench [SUITE] [Google Benchmark flags...]`: planner and mission by default; the others
-  // (tour, mapf, darp, scale) only on request (mapf and scale take minutes).
-  static const std::vector<std::string> kSuites = {"planner", "mission", "tour", "mapf", "darp", "scale"};
+  // (tour, mapf, darp, scale, traffic) only on request (mapf and scale take minutes).
+  static const std::vector<std::string> kSuites = {"planner", "mission", "tour", "mapf", "darp", "scale", "traffic"};
   std::vector<std::string> suites{"planner", "mission"};
   std::vector<std::string> pass = args;
   if (!pass.empty() && std::find(kSuites.begin(), kSuites.end(), pass.front()) != kSuites.end()) {

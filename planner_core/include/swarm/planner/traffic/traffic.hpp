@@ -1,0 +1,111 @@
+// The traffic layer's planner: lifelong multi-agent path finding on a grid. Robots take goals one
+// after another (a coverage route's cells, a tour's stops, a waypoint, a gathering cell); the
+// planner turns them into timed moves, `steps` at a time, that never put two robots on one cell
+// and never swap two robots. Tasks say where each robot goes next; this decides who moves when.
+//
+// Algorithm: PIBT, priority inheritance with backtracking (Okumura, Machida, Défago & Tamura,
+// "Priority inheritance with backtracking for iterative multi-agent path finding", AIJ 2022), in
+// its lifelong form: every step each robot, in order of priority, takes the neighbouring cell
+// (or its own) nearest its current goal that no robot of higher priority has taken; a robot
+// standing on that cell is asked, with the asker's priority, to move out of the way first, and if
+// it cannot, the asker tries its next cell. A robot's priority grows every step it is away from
+// its goal and falls back when it reaches one, so a robot that has been waiting eventually goes
+// first. Guarantee (the paper's Theorem 2): on a graph where every two adjacent cells lie on a
+// common cycle, the robot of highest priority reaches its goal, so every robot reaches each of
+// its goals in finite time. In a dead-end corridor (a tree) that does not hold: two robots that
+// must pass each other there need a pocket. The planner counts, per robot, the steps in a row in
+// which it had a goal and got no closer to it (`waiting`), so that its caller sees a robot stuck.
+//
+// Robots that are `fixed` (stopped, or dead) never move and are obstacles to every other robot:
+// distances are measured around them, and a goal that only their cells reach, or one on a wall,
+// is skipped and reported (`skipped`) instead of being chased for ever. A robot without goals stays
+// where it is unless a robot of higher priority needs its cell.
+//
+// Deterministic: the same map, agents, config and calls give the same windows. Not thread-safe
+// (one planner per caller); it keeps each robot's priority and a cache of distance tables from one
+// window to the next, so call it with the same robot at the same index every time.
+//
+//   traffic::Planner p(map, MotionModel::four(), {.seed = 7});
+//   std::vector<traffic::Agent> agents = {{.at = {1, 1}, .goals = {{5, 1}, {5, 3}}}, {.at = {5, 1}}};
+//   const traffic::Window w = p.plan(agents, 8);  // w.paths[a]: 9 cells from agents[a].at
+//   // w.done[a] of agents[a].goals are behind it (reached, or skipped as unreachable)
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "swarm/planner/grid/grid.hpp"
+#include "swarm/planner/grid/motion.hpp"
+
+namespace swarm::planner::traffic {
+
+struct Agent {
+  Cell at;
+  std::vector<Cell> goals;  // to reach in this order; empty: none
+  bool fixed = false;       // stopped or dead: never moves, an obstacle to the others
+};
+
+struct Config {
+  std::uint64_t seed = 0;  // tie-breaking among equally good cells, and the initial priorities
+};
+
+struct Window {
+  std::vector<std::vector<Cell>> paths;  // per agent: steps + 1 cells, paths[a][0] == agents[a].at
+  std::vector<int> done;                 // per agent: how many of its goals, in order, are behind it
+  std::vector<std::vector<int>> skipped; // per agent: indices of the goals it could not reach
+  std::vector<int> waiting;              // per agent, at the window's end: steps in a row it had a
+                                         // goal and got no closer to it
+};
+
+class Planner {
+ public:
+  Planner(OccupancyGrid map, MotionModel motion, Config config = {});
+
+  // Plans `steps` steps from where the agents stand. Throws std::invalid_argument for agents on a
+  // cell that is not free, two agents on one cell, or a changed number of agents.
+  [[nodiscard]] Window plan(const std::vector<Agent>& agents, int steps);
+
+  // Steps planned so far; the most steps in a row any robot had a goal and got no closer to it.
+  [[nodiscard]] std::uint64_t steps_planned() const { return steps_planned_; }
+  [[nodiscard]] int longest_wait() const { return longest_wait_; }
+
+  static constexpr int kUnreachable = 1 << 29;
+
+ private:
+  // Steps from `cell` to `goal` around walls and fixed robots (kUnreachable where there is no
+  // way). A breadth-first search from the goal, run only as far as the cells asked for so far
+  // and resumed when a farther one is asked for: a robot on its way asks for cells ever nearer.
+  int steps_to(int goal, int cell);
+  struct Table {
+    std::vector<int> dist;   // per cell; -1: not reached yet
+    std::vector<int> queue;  // the search's cells in order of distance
+    std::size_t head = 0;    // the next one to expand
+  };
+  // Drops the tables of goals no robot is heading for, once they hold more than a cap of cells.
+  void trim_tables(const std::vector<Agent>& agents);
+  bool push(int a, int parent);  // PIBT for agent a, asked by `parent` (-1: nobody)
+  int distance(int a, int cell);
+  bool passable(int cell) const { return free_[static_cast<std::size_t>(cell)] && !blocked_[static_cast<std::size_t>(cell)]; }
+
+  OccupancyGrid map_;
+  MotionModel motion_;
+  Config config_;
+  std::vector<bool> free_;     // per cell: the map's free cells
+  std::vector<bool> blocked_;  // per cell: a fixed robot stands there
+  std::unordered_map<int, Table> tables_;  // goal cell -> its search
+  std::size_t table_cells_ = 0;
+  std::vector<double> priority_;  // per agent, kept across windows
+  std::vector<double> base_;      // per agent: its priority when it has nothing to wait for
+  // One step's state: each agent's cell, goal cell (-1: none), next cell (-1: undecided), and who
+  // stands on / has taken each cell.
+  std::vector<int> now_, goal_, next_;
+  std::vector<int> on_now_, on_next_;
+  std::uint64_t tie_ = 0;  // the tie-breaking stream's state
+  std::vector<int> waiting_;  // per agent, kept across windows
+  std::uint64_t steps_planned_ = 0;
+  int longest_wait_ = 0;
+};
+
+}  // namespace swarm::planner::traffic

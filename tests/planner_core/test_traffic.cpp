@@ -1,0 +1,312 @@
+// The traffic planner (planner/traffic/traffic.hpp): every window it plans is checked step by step
+// against the simulator's own conflict rule (find_step_conflicts) and the motion model, and robots
+// reach their goals in the places where robots usually gridlock: a one-cell corridor, a ring, a
+// door between two rooms, a dead robot in the way.
+#include "swarm/planner/traffic/traffic.hpp"
+
+#include <gtest/gtest.h>
+
+#include <ostream>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "swarm/planner/grid/map_io.hpp"
+#include "swarm/planner/grid/rng.hpp"
+#include "swarm_test/data.hpp"
+#include "swarm_test/free_region.hpp"
+#include "swarm_test/ascii_grid.hpp"
+
+namespace swarm::planner::traffic {
+namespace {
+
+// The independent check of one window: each path starts where its robot stands and has steps + 1
+// cells; every step is a legal action of the motion model; no two robots share a cell or swap in
+// any step; a fixed robot never moves.
+void expect_valid(const OccupancyGrid& map, MotionModel motion, const std::vector<Agent>& agents, const Window& w,
+                  int steps) {
+  ASSERT_EQ(w.paths.size(), agents.size());
+  for (std::size_t a = 0; a < agents.size(); ++a) {
+    ASSERT_EQ(w.paths[a].size(), static_cast<std::size_t>(steps) + 1) << "robot " << a;
+    EXPECT_EQ(w.paths[a][0], agents[a].at) << "robot " << a;
+  }
+  for (int s = 0; s < steps; ++s) {
+    std::vector<Cell> from;
+    std::vector<Cell> to;
+    for (std::size_t a = 0; a < agents.size(); ++a) {
+      from.push_back(w.paths[a][static_cast<std::size_t>(s)]);
+      to.push_back(w.paths[a][static_cast<std::size_t>(s) + 1]);
+      EXPECT_TRUE(motion.legal(map, from.back(), to.back())) << "robot " << a << " step " << s;
+      if (agents[a].fixed) {
+        EXPECT_EQ(from.back(), to.back()) << "fixed robot " << a << " moved";
+      }
+    }
+    const StepConflicts c = find_step_conflicts(from, to);
+    EXPECT_TRUE(c.empty()) << c.vertex.size() << " vertex and " << c.edge.size() << " edge conflicts at step " << s;
+  }
+}
+
+// Plans windows of `steps` until every robot's goals are behind it (or `max_windows`), moving the
+// robots along each window and checking it. Returns the steps taken, -1 if goals remain.
+int drive(Planner& p, const OccupancyGrid& map, MotionModel motion, std::vector<Agent>& agents, int steps,
+          int max_windows, std::vector<std::vector<Cell>>* trail = nullptr) {
+  if (trail != nullptr) trail->assign(agents.size(), {});
+  for (int k = 0; k < max_windows; ++k) {
+    bool any = false;
+    for (const Agent& a : agents) any = any || !a.goals.empty();
+    if (!any) return k * steps;
+    const Window w = p.plan(agents, steps);
+    expect_valid(map, motion, agents, w, steps);
+    for (std::size_t a = 0; a < agents.size(); ++a) {
+      if (trail != nullptr) (*trail)[a].insert((*trail)[a].end(), w.paths[a].begin(), w.paths[a].end());
+      agents[a].at = w.paths[a].back();
+      agents[a].goals.erase(agents[a].goals.begin(), agents[a].goals.begin() + w.done[a]);
+    }
+  }
+  for (const Agent& a : agents) {
+    if (!a.goals.empty()) return -1;
+  }
+  return max_windows * steps;
+}
+
+// `robots` robots on distinct random cells of `cells`, each with five random goals among them.
+std::vector<Agent> random_agents(const OccupancyGrid& map, const std::vector<Cell>& cells, std::size_t robots, Rng& rng) {
+  std::vector<Agent> agents;
+  std::set<int> taken;
+  while (agents.size() < robots) {
+    const Cell c = cells[rng.below(cells.size())];
+    if (!taken.insert(map.index(c)).second) continue;
+    Agent a{c, {}};
+    for (int g = 0; g < 5; ++g) a.goals.push_back(cells[rng.below(cells.size())]);
+    agents.push_back(a);
+  }
+  return agents;
+}
+
+TEST(Traffic, TwoRobotsMeetingHeadOnInAOneCellCorridorPass) {
+  // Two rooms joined by a corridor one cell wide and six long.
+  const auto art = swarm::test::ascii_map({
+      "############",
+      "#..######..#",
+      "#A........B#",
+      "#..######..#",
+      "############",
+  });
+  std::vector<Agent> agents = {{art.at.at('A'), {art.at.at('B')}}, {art.at.at('B'), {art.at.at('A')}}};
+  Planner p(art.grid, MotionModel::four(), {.seed = 1});
+  const int took = drive(p, art.grid, MotionModel::four(), agents, 8, 10);
+  ASSERT_GT(took, 0);
+  EXPECT_LE(took, 32);
+}
+
+TEST(Traffic, EightRobotsOnARingOfEightCellsRotate) {
+  // Every cell of the ring is taken: nobody can move unless all move together.
+  const auto art = swarm::test::ascii_map({
+      "#####",
+      "#abc#",
+      "#h#d#",
+      "#gfe#",
+      "#####",
+  });
+  const std::string ring = "abcdefgh";
+  std::vector<Agent> agents;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    agents.push_back({art.at.at(ring[i]), {art.at.at(ring[(i + 2) % ring.size()])}});
+  }
+  Planner p(art.grid, MotionModel::four(), {.seed = 3});
+  EXPECT_EQ(drive(p, art.grid, MotionModel::four(), agents, 4, 10), 4);  // two steps, in one window
+}
+
+TEST(Traffic, TwoGroupsSwapRoomsThroughOneDoor) {
+  const auto art = swarm::test::ascii_map({
+      "#########",
+      "#a..#..d#",
+      "#b.....e#",
+      "#c..#..f#",
+      "#########",
+  });
+  std::vector<Agent> agents;
+  for (const char c : std::string("abc")) agents.push_back({art.at.at(c), {art.at.at(static_cast<char>(c + 3))}});
+  for (const char c : std::string("def")) agents.push_back({art.at.at(c), {art.at.at(static_cast<char>(c - 3))}});
+  Planner p(art.grid, MotionModel::four(), {.seed = 5});
+  const int took = drive(p, art.grid, MotionModel::four(), agents, 8, 20);
+  ASSERT_GT(took, 0);
+  EXPECT_LE(took, 48);
+}
+
+TEST(Traffic, ARobotGoesAroundADeadRobotAndSkipsAGoalOnlyTheDeadRobotsCellReaches) {
+  // A loop: the short way from S to G passes D, a dead robot; the long way goes round. Cell E is a
+  // dead end behind D's twin X.
+  const auto art = swarm::test::ascii_map({
+      "#########",
+      "#.......#",
+      "#.#####.#",
+      "#S..D..G#",
+      "#####X###",
+      "#####E###",
+      "#########",
+  });
+  const Cell d = art.at.at('D');
+  const Cell x = art.at.at('X');
+  std::vector<Agent> agents = {{art.at.at('S'), {art.at.at('E'), art.at.at('G')}}, {d, {}, true}, {x, {}, true}};
+  Planner p(art.grid, MotionModel::four(), {.seed = 2});
+  const Window first = p.plan(agents, 1);
+  ASSERT_EQ(first.skipped[0], std::vector<int>{0});  // E: only through X
+  EXPECT_EQ(first.done[0], 1);
+  std::vector<std::vector<Cell>> trail;
+  const int took = drive(p, art.grid, MotionModel::four(), agents, 6, 10, &trail);
+  ASSERT_GT(took, 0);
+  for (const Cell c : trail[0]) EXPECT_FALSE(c == d || c == x) << to_string(c);
+  EXPECT_EQ(agents[1].at, d);
+}
+
+TEST(Traffic, ARobotWithoutGoalsStepsAsideAndARouteIsVisitedCellByCell) {
+  // A coverage-like route along the bottom row and back along the top; an idle robot sits on it.
+  const auto art = swarm::test::ascii_map({
+      "########",
+      "#......#",
+      "#R..I..#",
+      "########",
+  });
+  std::vector<Cell> route;
+  for (int x = 1; x <= 6; ++x) route.push_back({x, 1});
+  for (int x = 6; x >= 1; --x) route.push_back({x, 2});
+  std::vector<Agent> agents = {{art.at.at('R'), route}, {art.at.at('I'), {}}};
+  Planner p(art.grid, MotionModel::four(), {.seed = 9});
+  std::vector<std::vector<Cell>> trail;
+  const int took = drive(p, art.grid, MotionModel::four(), agents, 5, 10, &trail);
+  ASSERT_GT(took, 0);
+  std::set<std::pair<int, int>> visited;
+  for (const Cell c : trail[0]) visited.insert({c.x, c.y});
+  for (const Cell c : route) EXPECT_EQ(visited.count({c.x, c.y}), 1u) << to_string(c);
+}
+
+TEST(Traffic, EightConnectedRobotsKeepTheSameRules) {
+  const auto art = swarm::test::ascii_map({
+      "#######",
+      "#a...b#",
+      "#..#..#",
+      "#c...d#",
+      "#######",
+  });
+  std::vector<Agent> agents = {{art.at.at('a'), {art.at.at('d')}},
+                               {art.at.at('d'), {art.at.at('a')}},
+                               {art.at.at('b'), {art.at.at('c')}},
+                               {art.at.at('c'), {art.at.at('b')}}};
+  Planner p(art.grid, MotionModel::eight(), {.seed = 4});
+  const int took = drive(p, art.grid, MotionModel::eight(), agents, 4, 10);
+  ASSERT_GT(took, 0);
+  EXPECT_LE(took, 16);
+}
+
+TEST(Traffic, TheSameInputsGiveTheSameWindows) {
+  const auto art = swarm::test::ascii_map({"#######", "#a...b#", "#..#..#", "#c...d#", "#######"});
+  const std::vector<Agent> agents = {{art.at.at('a'), {art.at.at('d'), art.at.at('b')}},
+                                     {art.at.at('d'), {art.at.at('a')}},
+                                     {art.at.at('b'), {}}};
+  Planner p1(art.grid, MotionModel::four(), {.seed = 11});
+  Planner p2(art.grid, MotionModel::four(), {.seed = 11});
+  const Window w1 = p1.plan(agents, 12);
+  const Window w2 = p2.plan(agents, 12);
+  EXPECT_EQ(w1.paths, w2.paths);
+  EXPECT_EQ(w1.done, w2.done);
+}
+
+TEST(Traffic, BadInputIsRefusedNamingTheRobot) {
+  const auto art = swarm::test::ascii_map({"#####", "#a.b#", "#####"});
+  Planner p(art.grid, MotionModel::four());
+  const auto message = [&](const std::vector<Agent>& agents) {
+    try {
+      (void)p.plan(agents, 1);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message({{{0, 0}, {}}}).find("robot 0 stands on (0, 0)"), std::string::npos);
+  EXPECT_NE(message({{art.at.at('a'), {}}, {art.at.at('a'), {}}}).find("robots 0 and 1 stand on one cell"),
+            std::string::npos);
+  // A refused call leaves the planner usable.
+  EXPECT_EQ(p.plan({{art.at.at('a'), {art.at.at('b')}}, {art.at.at('b'), {}}}, 2).paths.size(), 2u);
+  EXPECT_NE(message({{art.at.at('a'), {}}}).find("planned for 2 robots before, now 1"), std::string::npos);
+}
+
+// Random rooms-and-corridors maps (a grid of 5 x 5 rooms with doors), 40 robots with five random
+// goals each: every window is valid, and every goal is reached.
+TEST(Traffic, FortyRobotsWithRandomGoalsOnRoomMapsReachEveryGoal) {
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    Rng rng(seed);
+    const int rooms = 5;
+    const int side = 5;
+    const int w = rooms * (side + 1) + 1;
+    OccupancyGrid map(w, w, 0.2, 0, 0, CellState::Occupied);
+    std::vector<Cell> free;
+    for (int y = 0; y < w; ++y) {
+      for (int x = 0; x < w; ++x) {
+        const bool wall_x = x % (side + 1) == 0;
+        const bool wall_y = y % (side + 1) == 0;
+        const bool door_x = wall_x && y % (side + 1) == 1 + static_cast<int>((x / (side + 1) + y / (side + 1)) % side);
+        const bool door_y = wall_y && x % (side + 1) == 1 + static_cast<int>((x / (side + 1) * 3 + y / (side + 1)) % side);
+        const bool border = x == 0 || y == 0 || x == w - 1 || y == w - 1;
+        if (border || ((wall_x || wall_y) && !door_x && !door_y)) continue;
+        map.set(Cell{x, y}, CellState::Free);
+        free.push_back({x, y});
+      }
+    }
+    std::vector<Agent> agents = random_agents(map, free, 40, rng);
+    Planner p(map, MotionModel::four(), {.seed = seed});
+    const int took = drive(p, map, MotionModel::four(), agents, 16, 100);
+    EXPECT_GT(took, 0) << "seed " << seed;
+  }
+}
+
+
+// ---- Maps nobody tuned the planner for --------------------------------------------------------
+
+struct MapCase {
+  std::string name;
+  bool movingai = false;
+};
+
+void PrintTo(const MapCase& c, std::ostream* os) { *os << c.name; }
+
+class TrafficOnMap : public ::testing::TestWithParam<MapCase> {
+ protected:
+  OccupancyGrid load() const {
+    const MapCase& c = GetParam();
+    if (c.movingai) return load_movingai_map(swarm::test::benchmarks_dir() + "/movingai/" + c.name + ".map");
+    return load_map_yaml(swarm::test::source_dir() + "/maps/" + c.name + ".yaml");
+  }
+};
+
+// Nine robots (and thirty) with five random goals each, seeds 1-3: every goal is reached.
+TEST_P(TrafficOnMap, RobotsWithRandomGoalsReachEveryOne) {
+  const OccupancyGrid map = load();
+  const std::vector<Cell> cells = swarm::test::free_region(map);
+  for (const std::size_t robots : {std::size_t{9}, std::size_t{30}}) {
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      Rng rng(mix_seed({seed, robots}));
+      std::vector<Agent> agents = random_agents(map, cells, robots, rng);
+      Planner p(map, MotionModel::four(), {.seed = seed});
+      const int took = drive(p, map, MotionModel::four(), agents, 16, 400);
+      EXPECT_GT(took, 0) << robots << " robots, seed " << seed;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Maps, TrafficOnMap,
+                         ::testing::Values(MapCase{"small"}, MapCase{"maze1"}, MapCase{"maze2"}, MapCase{"open"},
+                                           MapCase{"warehouse-5x8"}, MapCase{"clutter"}, MapCase{"terminal"},
+                                           MapCase{"maze-32-32-2", true}, MapCase{"room-32-32-4", true},
+                                           MapCase{"warehouse-10-20-10-2-1", true}),
+                         [](const auto& info) {
+                           std::string n = info.param.name;
+                           for (char& c : n) {
+                             if (c == '-') c = '_';
+                           }
+                           return n;
+                         });
+
+}  // namespace
+}  // namespace swarm::planner::traffic
