@@ -90,6 +90,20 @@ TEST(Tasks, CoverUnderLinkDelayJitterAndLossStillCoversEverything) {
   EXPECT_GT(m["traffic"]["by_link"]["member_leader"]["lost_transmissions"].get<double>(), 0) << m["traffic"];
 }
 
+// The traffic layer (docs/traffic.md) over DDS: the windows are driven by their dependency graphs,
+// so member<->leader delay and jitter slow the robots but never make a conflict.
+TEST(Tasks, CoverThroughTheTrafficLayerUnderDelayAndJitterHasNoConflict) {
+  const auto m = run_task("cover_traffic", "small.pbtxt",
+                          "links { member_leader { delay_ticks: 3 jitter_ticks: 2 } leader_gcs { delay_ticks: 2 } } "
+                          "mission { phase { cover { traffic: true } } }",
+                          "--groups 2 --robots-per-group 3 --max-ticks 3000");
+  const auto& cover = phase_named(m, "cover");
+  EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
+  EXPECT_EQ(cover["motion"]["vertex_conflicts"], 0) << cover["motion"];
+  EXPECT_EQ(cover["motion"]["edge_conflicts"], 0) << cover["motion"];
+  EXPECT_EQ(cover["task"]["traffic"]["execution"], "MAPF_EXECUTE_ADG");
+}
+
 TEST(Tasks, CoverInGroupKOrderReachesEveryReachableCell) {
   const auto m = run_task("cover_group_k", "small.pbtxt", "mission { phase { cover { order: ORDER_GROUP_K } } }",
                           "--max-ticks 3000");

@@ -1,6 +1,7 @@
 // The coverage task end to end on the FakeBus (the real GCS, leaders, members and simulator, in
 // one thread): every reachable free cell is covered, as the simulator judges from ground truth,
-// with the map given, after exploration, in the flat variant, and when a member is lost midway.
+// with the map given, after exploration, in the flat variant, and when a member is lost midway;
+// and through the traffic layer with no conflict.
 #include <gtest/gtest.h>
 
 #include "swarm_test/fake_swarm.hpp"
@@ -75,6 +76,68 @@ TEST(CoverTask, PlowAndGroupKOrdersCoverEveryReachableCell) {
     EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0) << order;
     EXPECT_EQ(cover["task"]["order"], order);
   }
+}
+
+// ---- Through the traffic layer (cover.traffic, docs/traffic.md) ---------------------------------
+
+// The simulator's count of conflicts in the phase: the traffic layer promises none.
+void expect_no_conflict(const nlohmann::json& phase) {
+  EXPECT_EQ(phase["motion"]["vertex_conflicts"], 0) << phase["motion"].dump();
+  EXPECT_EQ(phase["motion"]["edge_conflicts"], 0) << phase["motion"].dump();
+  EXPECT_EQ(phase["motion"]["blocked_moves"], 0) << phase["motion"].dump();
+}
+
+TEST(CoverTask, ThroughTheTrafficLayerEveryCellIsCoveredWithoutAConflict) {
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+      "map: 'small' groups: 3 robots_per_group: 3 max_ticks: 3000 mission { phase { cover { traffic: true } } }"));
+  const auto m = s.run_to_end();
+  ASSERT_TRUE(m["complete"].get<bool>()) << m["phases"].dump(1);
+  const auto& cover = phase_named(m, "cover");
+  EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
+  expect_no_conflict(cover);
+  EXPECT_GT(cover["task"]["traffic"]["windows"].get<int>(), 1);
+  // As the hierarchical cover divides: among the groups, then each share among its robots.
+  EXPECT_EQ(cover["task"]["divisions"][0]["agents"], "leaders");
+}
+
+TEST(CoverTask, ThroughTheTrafficLayerTheFlatDivisionCoversToo) {
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+      "map: 'small' groups: 2 robots_per_group: 2 max_ticks: 3000 "
+      "mission { phase { cover { traffic: true hierarchical: false } } }"));
+  const auto m = s.run_to_end();
+  ASSERT_TRUE(m["complete"].get<bool>()) << m["phases"].dump(1);
+  const auto& cover = phase_named(m, "cover");
+  EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
+  expect_no_conflict(cover);
+  EXPECT_EQ(cover["task"]["divisions"][0]["agents"], "robots");
+}
+
+TEST(CoverTask, ThroughTheTrafficLayerAfterExplorationTooWithoutAConflict) {
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+      "map: 'small' groups: 3 robots_per_group: 3 max_ticks: 4000 "
+      "mission { phase { explore {} } phase { cover { traffic: true } } }"));
+  const auto m = s.run_to_end();
+  ASSERT_TRUE(m["complete"].get<bool>()) << m["phases"].dump(1);
+  const auto& cover = phase_named(m, "cover");
+  EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
+  expect_no_conflict(cover);
+}
+
+TEST(CoverTask, ThroughTheTrafficLayerALostMembersCellsGoToTheOthers) {
+  auto setup = swarm::test::setup_from_text(
+      "map: 'small' groups: 2 robots_per_group: 3 max_ticks: 4000 mission { phase { cover { traffic: true } } }");
+  swarm::test::FakeSwarm s(setup);
+  const auto m = s.run_to_end([&](std::uint32_t tick) {
+    if (tick == 60) s.disconnect(setup.topology.robot(0, 2));
+  });
+  ASSERT_TRUE(m["complete"].get<bool>()) << m["phases"].dump(1);
+  const auto& cover = phase_named(m, "cover");
+  EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
+  bool redivided = false;
+  for (const auto& d : cover["task"]["divisions"]) redivided = redivided || d["why"] == "robot lost";
+  EXPECT_TRUE(redivided) << cover["task"]["divisions"].dump();
+  EXPECT_EQ(cover["motion"]["vertex_conflicts"], 0);
+  EXPECT_EQ(cover["motion"]["edge_conflicts"], 0);
 }
 
 }  // namespace

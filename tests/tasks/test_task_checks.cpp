@@ -32,6 +32,8 @@ std::string check_error(const std::string& text) {
 TEST(TaskChecks, EachTaskChecksItsOwnSettings) {
   EXPECT_EQ(check_error("mission { phase { cover { stall_ticks: 0 } } }"),
             "t.pbtxt: field mission.phase[0].cover.stall_ticks: must be >= 1 (got 0)");
+  EXPECT_EQ(check_error("mission { phase { cover { traffic: true traffic_window_steps: 0 } } }"),
+            "t.pbtxt: field mission.phase[0].cover.traffic_window_steps: must be >= 1 (got 0)");
   EXPECT_EQ(check_error("mission { phase { explore {} } phase { mapf { w: 0.5 time_limit_s: 0 } } }"),
             "t.pbtxt: field mission.phase[1].mapf.w: must be at least 1 (got 0.5)\n"
             "t.pbtxt: field mission.phase[1].mapf.time_limit_s: must be a finite number > 0 (got 0)");

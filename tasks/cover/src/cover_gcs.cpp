@@ -16,8 +16,18 @@ namespace {
 constexpr std::uint32_t kRedivideCooldown = 10;
 }  // namespace
 
-CoverGcsTask::CoverGcsTask(const swarm::scenario::Cover& config, std::uint32_t phase, bool map_given)
-    : config_(config), phase_(phase), map_given_(map_given) {}
+CoverGcsTask::CoverGcsTask(const swarm::scenario::Cover& config, const swarm::scenario::Mapf& paths,
+                           std::uint32_t phase, bool map_given)
+    : config_(config), phase_(phase), map_given_(map_given) {
+  if (config_.traffic()) {
+    drive_ = std::make_unique<MapfGcsTask>(
+        paths, phase, map_given,
+        [this](const GcsContext& ctx, const planner::OccupancyGrid&, const std::vector<int>& robots, const char* why) {
+          return divide(ctx, tracker_.uncovered(), why, &robots);
+        },
+        static_cast<int>(config_.traffic_window_steps()));
+  }
+}
 
 std::vector<int> CoverGcsTask::living_groups(const GcsContext& ctx) const {
   std::vector<int> out;
@@ -43,10 +53,20 @@ void CoverGcsTask::start(GcsContext& ctx) {
   group_alive_.assign(static_cast<std::size_t>(t.groups()), false);
   group_done_.assign(static_cast<std::size_t>(t.groups()), false);
   started_ = true;
-  divide(ctx, tracker_.uncovered(), "start");
+  if (drive_) {
+    drive_->start(ctx);  // divides once every robot stands still
+  } else {
+    divide(ctx, tracker_.uncovered(), "start");
+  }
 }
 
-void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cells, const char* why) {
+std::string CoverGcsTask::given_up() const {
+  if (nothing_to_drive_) return "cells left uncovered that no robot's route reaches";
+  return drive_ ? drive_->given_up() : std::string();
+}
+
+std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
+                                                    const char* why, const std::vector<int>* robots) {
   const comm::Topology& t = ctx.setup.topology;
   const auto t0 = std::chrono::steady_clock::now();
   const auto deadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -63,7 +83,12 @@ void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cell
   // (hierarchical), or every living robot of a living group (flat).
   std::vector<int> robot_ids;
   std::vector<double> weights;
-  for (int g : groups) {
+  const bool flat = !config_.hierarchical();
+  if (robots != nullptr && flat) {
+    robot_ids = *robots;
+    weights.assign(robot_ids.size(), 1.0);
+  }
+  for (int g : robots != nullptr && flat ? std::vector<int>{} : groups) {
     int living = 0;
     for (int i = 0; i < t.robots_per_group(); ++i) living += ctx.alive(t.robot(g, i)) ? 1 : 0;
     if (config_.hierarchical()) {
@@ -81,7 +106,7 @@ void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cell
   std::vector<Cell> at;
   for (int r : robot_ids) at.push_back(ctx.cell_of(r));
   planner::CoverRoutesConfig cfg = tasks::cover_routes_config(config_, ctx.setup.world.scenario.seed(), seq_);
-  cfg.routes = !config_.hierarchical();
+  cfg.routes = flat;
   const planner::CoverRoutes plan = planner::divide_and_route(known_, cells, at, weights, cfg, stop);
 
   // Each group's share: the cells DARP gave its agents.
@@ -106,20 +131,53 @@ void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cell
       group_of_cell_[i] = g;
     }
   }
-  for (int g : groups) {
+  std::vector<std::vector<Cell>> routes;
+  if (robots != nullptr) {
+    // Every robot's route: from the division itself (flat), or from dividing each group's share
+    // among its robots as its leader would (hierarchical).
+    routes.resize(static_cast<std::size_t>(t.robots()));
+    std::size_t goals = 0;
+    const auto take = [&](int robot, const std::vector<Cell>& route, int region_cells) {
+      routes[static_cast<std::size_t>(robot)] = route;
+      goals += route.size();
+      ctx.record.append(route_frame(ctx.tick(), phase_, robot, route, static_cast<std::uint32_t>(region_cells)));
+    };
+    if (flat) {
+      for (std::size_t a = 0; a < robot_ids.size(); ++a) take(robot_ids[a], plan.routes[a], plan.region_cells[a]);
+    } else {
+      for (const int g : groups) {
+        std::vector<int> members;
+        std::vector<Cell> member_at;
+        for (const int r : *robots) {
+          if (t.group_of(static_cast<comm::AgentId>(r)) != g) continue;
+          members.push_back(r);
+          member_at.push_back(ctx.cell_of(r));
+        }
+        if (members.empty()) continue;
+        planner::CoverRoutesConfig group_cfg = tasks::cover_routes_config(
+            config_, ctx.setup.world.scenario.seed(), (std::uint64_t{seq_} << 8) + static_cast<std::uint64_t>(g) + 1);
+        group_cfg.routes = true;
+        const planner::CoverRoutes sub = planner::divide_and_route(
+            known_, share[static_cast<std::size_t>(g)], member_at, std::vector<double>(members.size(), 1.0), group_cfg, stop);
+        for (std::size_t k = 0; k < members.size(); ++k) take(members[k], sub.routes[k], sub.region_cells[k]);
+      }
+    }
+    nothing_to_drive_ = goals == 0 && !tracker_.complete();
+  }
+  for (int g : robots != nullptr ? std::vector<int>{} : groups) {
     task::Order o;
     o.group = static_cast<std::uint16_t>(g);
     o.seq = seq_;
     o.known_map = known_;
     o.cells = share[static_cast<std::size_t>(g)];
-    if (!config_.hierarchical()) {
+    if (flat) {
       for (std::size_t a = 0; a < robot_ids.size(); ++a) {
         if (t.group_of(static_cast<comm::AgentId>(robot_ids[a])) != g) continue;
         o.routes.push_back({robot_ids[a], plan.routes[a]});
       }
     }
     ctx.out.order(o);
-    for (std::size_t a = 0; a < robot_ids.size() && !config_.hierarchical(); ++a) {
+    for (std::size_t a = 0; a < robot_ids.size() && flat; ++a) {
       if (t.group_of(static_cast<comm::AgentId>(robot_ids[a])) != g) continue;
       ctx.record.append(route_frame(ctx.tick(), phase_, robot_ids[a], plan.routes[a],
                                     static_cast<std::uint32_t>(plan.region_cells[a])));
@@ -133,7 +191,7 @@ void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cell
   }
   divisions_.push_back({{"tick", ctx.tick()},
                         {"why", why},
-                        {"agents", config_.hierarchical() ? "leaders" : "robots"},
+                        {"agents", flat ? "robots" : "leaders"},
                         {"darp_status", planner::to_string(plan.darp.status)},
                         {"darp_iterations", plan.darp.iterations},
                         {"darp_seconds", plan.seconds_division},
@@ -142,9 +200,14 @@ void CoverGcsTask::divide(GcsContext& ctx, const std::vector<std::uint8_t>& cell
                         {"cells_per_group", cells_per_group}});
   std::fprintf(stderr, "gcs: cover division (%s) at tick %u: %s after %d iterations, %.3f s\n", why, ctx.tick(),
                planner::to_string(plan.darp.status), plan.darp.iterations, plan.seconds_division);
+  return routes;
 }
 
-void CoverGcsTask::on_report(const task::Report& r, GcsContext&) {
+void CoverGcsTask::on_report(const task::Report& r, GcsContext& ctx) {
+  if (drive_) {
+    drive_->on_report(r, ctx);
+    return;
+  }
   if (r.group < group_done_.size() && r.state == task::GroupState::Done) group_done_[r.group] = true;
   // Cells a leader knows covered (after a restart of the GCS, which missed the clocks meanwhile).
   for (const planner::Cell c : r.cells) tracker_.mark(c);
@@ -154,6 +217,14 @@ void CoverGcsTask::step(GcsContext& ctx) {
   const comm::Topology& t = ctx.setup.topology;
   for (int r = 0; r < t.robots(); ++r) {
     if (ctx.alive(r)) tracker_.visit(ctx.cell_of(r));
+  }
+  if (drive_) {
+    if (tracker_.complete()) return;
+    drive_->step(ctx);
+    // Every route driven and cells still uncovered (a footprint that missed, a goal skipped):
+    // those are divided again.
+    if (drive_->complete() && !nothing_to_drive_) drive_->restart(ctx, "every route done, cells left");
+    return;
   }
   if (tracker_.complete() || ctx.tick() < last_division_tick_ + kRedivideCooldown) return;
   // A group that held uncovered cells and lost its leader: what is left goes to the others.
@@ -184,12 +255,14 @@ ProgressLine CoverGcsTask::progress(const GcsContext&) const {
 }
 
 nlohmann::json CoverGcsTask::numbers() const {
-  return {{"hierarchical", config_.hierarchical()},
-          {"order", swarm::scenario::CoverOrder_Name(config_.order())},
-          {"map_given", map_given_},
-          {"target_cells_known", tracker_.target_cells()},
-          {"covered_cells_known", tracker_.covered_cells()},
-          {"divisions", divisions_}};
+  nlohmann::json j = {{"hierarchical", config_.hierarchical()},
+                      {"order", swarm::scenario::CoverOrder_Name(config_.order())},
+                      {"map_given", map_given_},
+                      {"target_cells_known", tracker_.target_cells()},
+                      {"covered_cells_known", tracker_.covered_cells()},
+                      {"divisions", divisions_}};
+  if (drive_) j["traffic"] = drive_->numbers();
+  return j;
 }
 
 }  // namespace swarm::gcs

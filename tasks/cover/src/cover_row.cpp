@@ -6,10 +6,16 @@
 #include "swarm/config/task_config.hpp"
 #include "swarm/tasks/cover/cover_gcs.hpp"
 #include "swarm/tasks/cover/cover_leader.hpp"
+#include "swarm/tasks/mapf/mapf_leader.hpp"
+#include "swarm/tasks/mapf/mapf_settings.hpp"
 
 namespace swarm::tasks {
 
 namespace {
+// How the leaders drive traffic windows: mapf's execution for this scenario (by timing when every
+// link is exact, else by the dependency graph; config::resolved_mapf).
+swarm::scenario::Mapf traffic_paths(const swarm::scenario::Scenario& s) { return resolved_mapf(swarm::scenario::Mapf(), s); }
+
 // The simulator's judge: the share of the coverage target the robots' footprints swept, when it
 // was all swept, and the curve of it (every 5 ticks).
 class CoverJudge : public sim::PhaseJudge {
@@ -45,9 +51,13 @@ TaskRow cover_row() {
   row.phase_case = Phase::kCover;
   row.motion = planner::MotionModel::four();  // DARP and STC plan on the 4-connected grid
   row.gcs = [](const Phase& phase, const app::RoleSetup& setup, std::uint32_t index) {
-    return std::make_unique<gcs::CoverGcsTask>(phase.cover(), index, config::map_given(setup.world.scenario, index));
+    return std::make_unique<gcs::CoverGcsTask>(phase.cover(), traffic_paths(setup.world.scenario), index,
+                                               config::map_given(setup.world.scenario, index));
   };
-  row.leader = [](const Phase& phase, const app::RoleSetup& setup, int group, std::uint32_t) {
+  row.leader = [](const Phase& phase, const app::RoleSetup& setup, int group,
+                  std::uint32_t) -> std::unique_ptr<leader::GroupTask> {
+    // Through the traffic layer the leaders drive windows as they drive mapf plans.
+    if (phase.cover().traffic()) return std::make_unique<leader::MapfGroupTask>(traffic_paths(setup.world.scenario), group);
     return std::make_unique<leader::CoverGroupTask>(phase.cover(), setup, group);
   };
   row.judge = [](const Phase&, const app::RoleSetup&, std::uint32_t) { return std::make_unique<CoverJudge>(); };
@@ -55,6 +65,7 @@ TaskRow cover_row() {
     p.at_least(field + ".darp_max_iterations", 1, phase.cover().darp_max_iterations());
     p.positive(field + ".darp_time_limit_s", phase.cover().darp_time_limit_s());
     p.at_least(field + ".stall_ticks", 1, phase.cover().stall_ticks());
+    p.at_least(field + ".traffic_window_steps", 1, phase.cover().traffic_window_steps());
   };
   return row;
 }

@@ -16,8 +16,18 @@ namespace swarm::gcs {
 
 using planner::Cell;
 
+namespace {
+// Windows in a row in which no robot reached a goal or moved before a lifelong phase is given up.
+constexpr int kIdleWindowsLimit = 8;
+constexpr const char* kNextWindow = "window";
+}  // namespace
+
 MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, GoalPicker goals)
     : config_(config), phase_(phase), map_given_(map_given), pick_goals_(std::move(goals)) {}
+
+MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, RoutePicker routes,
+                         int window)
+    : config_(config), phase_(phase), map_given_(map_given), pick_routes_(std::move(routes)), window_(window) {}
 
 std::vector<Cell> MapfGcsTask::random_goals(const GcsContext& ctx) const {
   // A distinct free cell per robot, reachable from where it stands, drawn from the run's seed.
@@ -44,7 +54,9 @@ std::vector<Cell> MapfGcsTask::random_goals(const GcsContext& ctx) const {
 void MapfGcsTask::start(GcsContext& ctx) {
   known_ = map_given_ ? ctx.setup.given_map : ctx.fused.grid();
   start_tick_ = ctx.tick();
-  if (!pick_goals_) {
+  if (window_ > 0) {
+    goals_.assign(static_cast<std::size_t>(ctx.setup.topology.robots()), Cell{-1, -1});
+  } else if (!pick_goals_) {
     goals_ = std::any_cast<const std::vector<Cell>&>(ctx.setup.world.phase_data.at(phase_));
     if (goals_.empty()) goals_ = random_goals(ctx);
   }
@@ -58,7 +70,23 @@ void MapfGcsTask::start(GcsContext& ctx) {
   if (!settling_) plan(ctx, "start");
 }
 
+void MapfGcsTask::begin_plan(const GcsContext& ctx) {
+  const comm::Topology& t = ctx.setup.topology;
+  ++seq_;
+  holding_ = false;
+  std::fill(group_in_plan_.begin(), group_in_plan_.end(), false);
+  std::fill(group_done_.begin(), group_done_.end(), false);
+  std::fill(group_held_.begin(), group_held_.end(), false);
+  for (int r : planned_) group_in_plan_[static_cast<std::size_t>(t.group_of(static_cast<comm::AgentId>(r)))] = true;
+  plan_leaders_.clear();
+  for (int g = 0; g < t.groups(); ++g) plan_leaders_.push_back(ctx.leader_of(g));
+}
+
 void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
+  if (window_ > 0) {
+    plan_window(ctx, why);
+    return;
+  }
   const comm::Topology& t = ctx.setup.topology;
   // Who is planned for: the living robots of groups whose leader lives, with a goal. Everyone else
   // stands where it is: an obstacle.
@@ -84,14 +112,7 @@ void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
       in.map.set(ctx.cell_of(r), planner::CellState::Occupied);
     }
   }
-  ++seq_;
-  holding_ = false;
-  std::fill(group_in_plan_.begin(), group_in_plan_.end(), false);
-  std::fill(group_done_.begin(), group_done_.end(), false);
-  std::fill(group_held_.begin(), group_held_.end(), false);
-  for (int r : planned_) group_in_plan_[static_cast<std::size_t>(t.group_of(static_cast<comm::AgentId>(r)))] = true;
-  plan_leaders_.clear();
-  for (int g = 0; g < t.groups(); ++g) plan_leaders_.push_back(ctx.leader_of(g));
+  begin_plan(ctx);
 
   planner::mapf::SolverConfig solver = tasks::mapf_solver_config(config_, ctx.setup.world.scenario.seed());
   planner::mapf::Result res = planner::mapf::solve(in, solver, planner::mapf::StopCondition::after(config_.time_limit_s()));
@@ -116,6 +137,106 @@ void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
     return;
   }
   send_plan(ctx, res);
+}
+
+void MapfGcsTask::plan_window(GcsContext& ctx, const char* why) {
+  const comm::Topology& t = ctx.setup.topology;
+  const bool next = std::string(why) == kNextWindow;
+  // Everyone but the living robots of led groups stands where it is: an obstacle to plan round.
+  std::vector<int> may_move;
+  for (int r = 0; r < t.robots(); ++r) {
+    if (ctx.alive(r) && ctx.alive(ctx.leader_of(t.group_of(static_cast<comm::AgentId>(r))))) may_move.push_back(r);
+  }
+  if (!next) {
+    sequences_ = pick_routes_(ctx, known_, may_move, why);
+    sequences_.resize(static_cast<std::size_t>(t.robots()));
+  }
+  if (!traffic_) {
+    // The robots stand on free cells whatever the known map says of them (a fused map may not
+    // have seen a cell under a robot).
+    planner::OccupancyGrid map = known_;
+    for (int r = 0; r < t.robots(); ++r) map.set(ctx.cell_of(r), planner::CellState::Free);
+    traffic_ = std::make_unique<planner::traffic::Planner>(
+        std::move(map), planner::MotionModel::four(),
+        planner::traffic::Config{planner::mix_seed({ctx.setup.world.scenario.seed(), 9100 + phase_})});
+  }
+  std::vector<planner::traffic::Agent> agents(static_cast<std::size_t>(t.robots()));
+  for (int r = 0; r < t.robots(); ++r) {
+    agents[static_cast<std::size_t>(r)].at = ctx.cell_of(r);
+    agents[static_cast<std::size_t>(r)].fixed = true;
+  }
+  for (const int r : may_move) {
+    agents[static_cast<std::size_t>(r)].fixed = false;
+    agents[static_cast<std::size_t>(r)].goals = sequences_[static_cast<std::size_t>(r)];
+  }
+  planner::traffic::Window w;
+  try {
+    w = traffic_->plan(agents, window_);
+  } catch (const std::invalid_argument& e) {
+    failed_ = true;
+    failure_ = std::string("no traffic window (") + why + "): " + e.what();
+    return;
+  }
+  planned_ = may_move;
+  begin_plan(ctx);
+  planner::mapf::Result res;
+  res.status = planner::mapf::Status::Solved;
+  window_goals_.assign(static_cast<std::size_t>(t.robots()), 0);
+  bool moved = false;
+  for (const int r : planned_) {
+    const auto ur = static_cast<std::size_t>(r);
+    res.paths.push_back(w.paths[ur]);
+    goals_[ur] = w.paths[ur].back();
+    window_goals_[ur] = w.done[ur];
+    goals_skipped_ += w.skipped[ur].size();
+    moved = moved || w.paths[ur].back() != w.paths[ur].front();
+  }
+  int reached = 0;
+  for (const int d : window_goals_) reached += d;
+  idle_windows_ = moved || reached > 0 ? 0 : idle_windows_ + 1;
+  if (idle_windows_ >= kIdleWindowsLimit) {
+    failed_ = true;
+    failure_ = "traffic: no robot moved or reached a goal in " + std::to_string(kIdleWindowsLimit) + " windows";
+    return;
+  }
+  ++windows_;
+  if (!next) {
+    std::size_t goals = 0;
+    for (const int r : planned_) goals += sequences_[static_cast<std::size_t>(r)].size();
+    plans_.push_back({{"tick", ctx.tick()}, {"why", why}, {"robots", planned_.size()}, {"goals", goals}});
+    std::fprintf(stderr, "gcs: traffic (%s) at tick %u: %zu robots, %zu goals, windows of %d steps\n", why,
+                 ctx.tick(), planned_.size(), goals, window_);
+  }
+  send_plan(ctx, res);
+}
+
+void MapfGcsTask::window_done(GcsContext& ctx) {
+  for (std::size_t r = 0; r < sequences_.size() && r < window_goals_.size(); ++r) {
+    auto& seq = sequences_[r];
+    const auto n = std::min(seq.size(), static_cast<std::size_t>(window_goals_[r]));
+    seq.erase(seq.begin(), seq.begin() + static_cast<std::ptrdiff_t>(n));
+    goals_done_ += n;
+  }
+  window_goals_.clear();
+  // A robot lost with goals ahead of it: the task gives its goals to the others.
+  for (int r = 0; r < ctx.setup.topology.robots(); ++r) {
+    if (!ctx.alive(r) && !sequences_[static_cast<std::size_t>(r)].empty()) {
+      plan_window(ctx, "robot lost");
+      return;
+    }
+  }
+  for (int r = 0; r < ctx.setup.topology.robots(); ++r) {
+    if (ctx.alive(r) && !sequences_[static_cast<std::size_t>(r)].empty()) {
+      plan_window(ctx, kNextWindow);
+      return;
+    }
+  }
+  complete_ = true;
+}
+
+void MapfGcsTask::restart(GcsContext& ctx, const char* why) {
+  complete_ = false;
+  plan(ctx, why);
 }
 
 void MapfGcsTask::note_plan(GcsContext& ctx, const char* why, const planner::mapf::Result& res) {
@@ -246,11 +367,24 @@ void MapfGcsTask::step(GcsContext& ctx) {
     plan(ctx, "robot lost");
     return;
   }
+  if (window_ > 0) {
+    if (!holding_ && all_done && !complete_) window_done(ctx);
+    return;
+  }
   complete_ = !holding_ && all_done;
 }
 
 ProgressLine MapfGcsTask::progress(const GcsContext&) const {
   char detail[96];
+  if (window_ > 0) {
+    std::size_t left = 0;
+    for (const auto& seq : sequences_) left += seq.size();
+    std::snprintf(detail, sizeof detail, "goals left %zu  window %llu%s", left,
+                  static_cast<unsigned long long>(windows_),
+                  failed_ ? " (failed)" : holding_ ? " (holding)" : settling_ ? " (stopping the robots)" : "");
+    const double total = static_cast<double>(left + goals_done_);
+    return {"goals", total > 0 ? static_cast<double>(goals_done_) / total : 0.0, detail};
+  }
   std::snprintf(detail, sizeof detail, "at goal %d/%zu  plan %u%s", arrived_, planned_.size(), seq_,
                 failed_ ? " (failed)" : holding_ ? " (holding)" : settling_ ? " (stopping the robots)" : "");
   return {"arrived", planned_.empty() ? 0.0 : static_cast<double>(arrived_) / static_cast<double>(planned_.size()),
@@ -258,6 +392,16 @@ ProgressLine MapfGcsTask::progress(const GcsContext&) const {
 }
 
 nlohmann::json MapfGcsTask::numbers() const {
+  if (window_ > 0) {
+    return {{"execution", swarm::scenario::MapfExecution_Name(config_.execution())},
+            {"window_steps", window_},
+            {"windows", windows_},
+            {"goals_done", goals_done_},
+            {"goals_skipped", goals_skipped_},
+            {"longest_wait_steps", traffic_ ? traffic_->longest_wait() : 0},
+            {"rotations_ordered", rotations_ordered_},
+            {"plans", plans_}};
+  }
   return {{"solver", swarm::scenario::MapfSolver_Name(config_.solver())},
           {"execution", swarm::scenario::MapfExecution_Name(config_.execution())},
           {"map_given", map_given_},

@@ -10,28 +10,42 @@
 // judges the phase complete when every target cell is covered. It divides what is left again
 // among the living groups when a group with uncovered cells loses its leader, or when every group
 // has reported its share done while cells are still uncovered.
+// Through the traffic layer (cover.traffic, docs/traffic.md): the division is flat, made once
+// every robot stands still, and the routes are goal sequences that the mapf task's lifelong
+// engine drives in conflict-free windows (tasks/mapf/mapf_gcs.hpp; the leaders run mapf's part).
+// A lost robot's cells are divided again among the living; when every route is done with cells
+// still uncovered, those are divided again.
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "swarm/gcs/gcs_task.hpp"
 #include "swarm/planner/coverage/coverage_tracker.hpp"
+#include "swarm/tasks/mapf/mapf_gcs.hpp"
 
 namespace swarm::gcs {
 
 class CoverGcsTask : public GcsTask {
  public:
-  CoverGcsTask(const swarm::scenario::Cover& config, std::uint32_t phase, bool map_given);
+  // `paths`: how the traffic layer's windows are driven (with cover.traffic).
+  CoverGcsTask(const swarm::scenario::Cover& config, const swarm::scenario::Mapf& paths, std::uint32_t phase,
+               bool map_given);
   void start(GcsContext& ctx) override;
   void step(GcsContext& ctx) override;
   [[nodiscard]] bool complete() const override { return started_ && tracker_.complete(); }
+  [[nodiscard]] std::string given_up() const override;
   [[nodiscard]] ProgressLine progress(const GcsContext& ctx) const override;
   void on_report(const task::Report& r, GcsContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:
-  void divide(GcsContext& ctx, const std::vector<std::uint8_t>& cells, const char* why);
+  // Divides `cells`; sends each living group its share (and, flat, its robots' routes), or with
+  // the traffic layer returns every robot id's route (agents: `robots`).
+  std::vector<std::vector<planner::Cell>> divide(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
+                                                 const char* why, const std::vector<int>* robots = nullptr);
   std::vector<int> living_groups(const GcsContext& ctx) const;
 
   swarm::scenario::Cover config_;
@@ -46,6 +60,8 @@ class CoverGcsTask : public GcsTask {
   std::uint32_t seq_ = 0;
   std::uint32_t last_division_tick_ = 0;
   nlohmann::json divisions_ = nlohmann::json::array();
+  std::unique_ptr<MapfGcsTask> drive_;  // cover.traffic: the traffic layer
+  bool nothing_to_drive_ = false;       // a division left cells uncovered that no route reaches
 };
 
 }  // namespace swarm::gcs

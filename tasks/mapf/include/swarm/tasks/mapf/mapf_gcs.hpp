@@ -39,12 +39,14 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "swarm/gcs/gcs_task.hpp"
 #include "swarm/planner/mapf/adg.hpp"
 #include "swarm/planner/mapf/result.hpp"
+#include "swarm/planner/traffic/traffic.hpp"
 
 namespace swarm::gcs {
 
@@ -58,6 +60,21 @@ class MapfGcsTask : public GcsTask {
                                                               const std::vector<int>& robots)>;
 
   MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, GoalPicker goals = {});
+
+  // Lifelong, the traffic layer (docs/traffic.md): each robot takes a sequence of goals (a coverage
+  // route, a tour's stops) and the robots are driven in windows of `window` steps that the traffic
+  // planner makes (planner/traffic/traffic.hpp: no conflict, dead robots planned around), each sent
+  // as a plan and driven as one once every group has finished the last. The picker gives every
+  // robot id its sequence (empty: none; such a robot may still be pushed aside) at the phase's
+  // start, after a loss (the living robots it is given), and at restart(); `why` says which.
+  // Complete when every sequence is done; given up when no robot got closer to a goal for a run
+  // of windows.
+  using RoutePicker = std::function<std::vector<std::vector<planner::Cell>>(
+      const GcsContext& ctx, const planner::OccupancyGrid& map, const std::vector<int>& robots, const char* why)>;
+  MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, RoutePicker routes,
+              int window);
+  // Lifelong, once complete: asks the picker for new sequences and drives them.
+  void restart(GcsContext& ctx, const char* why);
   void start(GcsContext& ctx) override;
   void step(GcsContext& ctx) override;
   [[nodiscard]] bool complete() const override { return complete_; }
@@ -75,6 +92,14 @@ class MapfGcsTask : public GcsTask {
   // Plans for the living robots (falling back to LaCAM when the configured solver times out) and
   // sends the plan; a plan that is not solved is recorded and nothing is driven.
   void plan(GcsContext& ctx, const char* why);
+  // Lifelong: the next window from where the robots stand (picking sequences anew unless `why` is
+  // kNextWindow).
+  void plan_window(GcsContext& ctx, const char* why);
+  // Lifelong, when every group has finished a window: the goals it reached are done; plans the
+  // next one, or completes.
+  void window_done(GcsContext& ctx);
+  // A new plan's bookkeeping: its number, and which groups are in it under which leaders.
+  void begin_plan(const GcsContext& ctx);
   void note_plan(GcsContext& ctx, const char* why, const planner::mapf::Result& res);  // metrics + log
   void send_plan(GcsContext& ctx, const planner::mapf::Result& res);
   void send_order(GcsContext& ctx, task::OrderKind kind, std::vector<std::int32_t> values = {});
@@ -113,6 +138,17 @@ class MapfGcsTask : public GcsTask {
   planner::mapf::Result first_;      // the first plan's numbers (after any fallback)
   bool have_first_ = false;
   nlohmann::json plans_ = nlohmann::json::array();
+
+  // Lifelong (window_ > 0).
+  RoutePicker pick_routes_;
+  int window_ = 0;
+  std::vector<std::vector<planner::Cell>> sequences_;  // per robot id: the goals still ahead
+  std::vector<int> window_goals_;                      // per robot id: goals the current window reaches
+  std::unique_ptr<planner::traffic::Planner> traffic_;
+  std::uint64_t windows_ = 0;
+  std::uint64_t goals_done_ = 0;
+  std::uint64_t goals_skipped_ = 0;
+  int idle_windows_ = 0;  // windows in a row in which no robot reached a goal or moved
 };
 
 }  // namespace swarm::gcs
