@@ -182,13 +182,14 @@ void MapfGcsTask::plan_window(GcsContext& ctx, const char* why) {
   planner::mapf::Result res;
   res.status = planner::mapf::Status::Solved;
   window_goals_.assign(static_cast<std::size_t>(t.robots()), 0);
+  window_skipped_.assign(static_cast<std::size_t>(t.robots()), 0);
   bool moved = false;
   for (const int r : planned_) {
     const auto ur = static_cast<std::size_t>(r);
     res.paths.push_back(w.paths[ur]);
     goals_[ur] = w.paths[ur].back();
     window_goals_[ur] = w.done[ur];
-    goals_skipped_ += w.skipped[ur].size();
+    window_skipped_[ur] = static_cast<int>(w.skipped[ur].size());
     moved = moved || w.paths[ur].back() != w.paths[ur].front();
   }
   int reached = 0;
@@ -216,8 +217,10 @@ void MapfGcsTask::window_done(GcsContext& ctx) {
     const auto n = std::min(seq.size(), static_cast<std::size_t>(window_goals_[r]));
     seq.erase(seq.begin(), seq.begin() + static_cast<std::ptrdiff_t>(n));
     goals_done_ += n;
+    goals_skipped_ += static_cast<std::uint64_t>(window_skipped_[r]);
   }
   window_goals_.clear();
+  window_skipped_.clear();
   // A robot lost with goals ahead of it: the task gives its goals to the others.
   for (int r = 0; r < ctx.setup.topology.robots(); ++r) {
     if (!ctx.alive(r) && !sequences_[static_cast<std::size_t>(r)].empty()) {

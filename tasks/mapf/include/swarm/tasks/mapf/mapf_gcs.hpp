@@ -67,8 +67,8 @@ class MapfGcsTask : public GcsTask {
   // as a plan and driven as one once every group has finished the last. The picker gives every
   // robot id its sequence (empty: none; such a robot may still be pushed aside) at the phase's
   // start, after a loss (the living robots it is given), and at restart(); `why` says which.
-  // Complete when every sequence is done; given up when no robot got closer to a goal for a run
-  // of windows.
+  // Complete when every sequence is done; given up after a run of windows in which no robot moved
+  // or reached a goal.
   using RoutePicker = std::function<std::vector<std::vector<planner::Cell>>(
       const GcsContext& ctx, const planner::OccupancyGrid& map, const std::vector<int>& robots, const char* why)>;
   MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, RoutePicker routes,
@@ -144,6 +144,7 @@ class MapfGcsTask : public GcsTask {
   int window_ = 0;
   std::vector<std::vector<planner::Cell>> sequences_;  // per robot id: the goals still ahead
   std::vector<int> window_goals_;                      // per robot id: goals the current window reaches
+  std::vector<int> window_skipped_;                    // per robot id: of those, skipped as unreachable
   std::unique_ptr<planner::traffic::Planner> traffic_;
   std::uint64_t windows_ = 0;
   std::uint64_t goals_done_ = 0;
