@@ -44,9 +44,15 @@ msgs::TaskOrder order_msg(const task::Order& o, std::uint32_t phase, planner::Pa
     m.cells(encode_mask(o.cells, o.known_map->width(), o.known_map->height()));
   }
   m.values(o.values);
+  bool acts = false;
   for (const auto& r : o.routes) {
     m.route_robots().push_back(static_cast<std::uint16_t>(r.robot));
     m.routes_xy().push_back(to_xy(r.path));
+    acts = acts || !r.pick_steps.empty() || !r.drop_steps.empty();
+  }
+  for (const auto& r : acts ? o.routes : std::vector<task::PlannedRoute>{}) {
+    m.routes_picks().push_back(r.pick_steps);
+    m.routes_drops().push_back(r.drop_steps);
   }
   return m;
 }
@@ -80,7 +86,28 @@ task::Order order_from(const msgs::TaskOrder& m, const config::MapFrame& frame) 
     throw std::runtime_error("an order names " + std::to_string(m.route_robots().size()) + " robots for " +
                              std::to_string(m.routes_xy().size()) + " routes");
   }
-  for (std::size_t k = 0; k < m.routes_xy().size(); ++k) o.routes.push_back({m.route_robots()[k], from_xy(m.routes_xy()[k])});
+  const bool acts = !m.routes_picks().empty() || !m.routes_drops().empty();
+  if (acts && (m.routes_picks().size() != m.routes_xy().size() || m.routes_drops().size() != m.routes_xy().size())) {
+    throw std::runtime_error("an order gives pick-up and drop steps for " + std::to_string(m.routes_picks().size()) +
+                             " and " + std::to_string(m.routes_drops().size()) + " of its " +
+                             std::to_string(m.routes_xy().size()) + " routes");
+  }
+  for (std::size_t k = 0; k < m.routes_xy().size(); ++k) {
+    task::PlannedRoute r{m.route_robots()[k], from_xy(m.routes_xy()[k]), {}, {}};
+    if (acts) {
+      r.pick_steps = m.routes_picks()[k];
+      r.drop_steps = m.routes_drops()[k];
+      for (const auto& steps : {r.pick_steps, r.drop_steps}) {
+        for (const std::uint32_t s : steps) {
+          if (s >= r.path.size()) {
+            throw std::runtime_error("an order's route " + std::to_string(k) + " acts at step " + std::to_string(s) +
+                                     " of " + std::to_string(r.path.size()));
+          }
+        }
+      }
+    }
+    o.routes.push_back(std::move(r));
+  }
   return o;
 }
 

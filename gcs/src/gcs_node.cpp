@@ -1,5 +1,7 @@
 #include "swarm/gcs/gcs_node.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -108,10 +110,11 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const 
     round.send(r);
     return index;
   };
-  announce_phase_ = [&phase](std::uint32_t index, const std::string& task) {
+  announce_phase_ = [&phase](std::uint32_t index, const std::string& task, bool settle) {
     msgs::PhaseStart p;
     p.phase(index);
     p.task(task);
+    p.settle(settle);
     phase.send(p);
   };
   for (std::uint32_t i = 0; i < phases_.size(); ++i) tasks_.push_back(make_task(phases_[i], setup, i));
@@ -205,7 +208,8 @@ bool GcsNode::step(const msgs::Clock& clock) {
   std::vector<planner::Cell> robots;
   record::Frame poses;
   poses.mutable_poses()->set_tick(clock.tick());
-  poses.mutable_poses()->set_phase(phase_);
+  // While the robots stop, their moves are still the last phase's (the simulator judges them so).
+  poses.mutable_poses()->set_phase(settling_ ? phase_ - 1 : phase_);
   for (const auto& r : clock.robots()) {
     robots.push_back({r.x(), r.y()});
     poses.mutable_poses()->add_xy(r.x());
@@ -224,6 +228,12 @@ bool GcsNode::step(const msgs::Clock& clock) {
   statuses_.clear();
   for (const auto& r : task_reports_) {
     if (r.phase() != phase_) continue;
+    if (settling_) {
+      const bool stands = r.state() == static_cast<std::uint8_t>(task::GroupState::Held) && r.values().size() == 1 &&
+                          r.values()[0] == 0;
+      if (stands && r.group() < settled_.size()) settled_[r.group()] = true;
+      continue;
+    }
     try {
       tasks_[phase_]->on_report(app::report_from(r), ctx);
     } catch (const std::exception& e) {
@@ -231,18 +241,18 @@ bool GcsNode::step(const msgs::Clock& clock) {
     }
   }
   task_reports_.clear();
-  if (!complete_tick_ && !gave_up_) {
+  if (settling_) {
+    settle(ctx);
+  } else if (!complete_tick_ && !gave_up_) {
     tasks_[phase_]->step(ctx);
     if (tasks_[phase_]->complete()) {
       phase_ends_.push_back(clock.tick());
       record_phase(clock.tick(), true, true);
       if (phase_ + 1 < tasks_.size()) {
         ++phase_;
-        ctx.phase = phase_;
-        phase_starts_.push_back(clock.tick());
-        announce_phase_(phase_, config::task_name(phases_[phase_]));
-        record_phase(clock.tick(), false, false);
-        tasks_[phase_]->start(ctx);
+        settling_ = true;
+        settled_.assign(static_cast<std::size_t>(setup_.topology.groups()), false);
+        announce_phase_(phase_, config::task_name(phases_[phase_]), true);
       } else {
         complete_tick_ = clock.tick();
       }
@@ -266,13 +276,31 @@ bool GcsNode::step(const msgs::Clock& clock) {
     unreachable_.observe(g, silent, last_heard_[g] + 1, clock.tick());
     if (unreachable_.down(g)) note += "leader-" + std::to_string(g) + " unreachable ";
   }
-  const ProgressLine line = tasks_[phase_]->progress(ctx);
+  ProgressLine line;
+  if (settling_) {
+    const auto stand = static_cast<double>(std::count(settled_.begin(), settled_.end(), true));
+    line = {"groups standing", stand / static_cast<double>(settled_.size()), "stopping the robots"};
+  } else {
+    line = tasks_[phase_]->progress(ctx);
+  }
   const std::string task = config::task_name(phases_[phase_]);
   if (live) {
     progress_.update(clock.tick(), phases_.size() > 1 ? task + " " + line.label : line.label, line.fraction,
                      line.detail, note);
   }
   return complete_tick_.has_value() || gave_up_.has_value();
+}
+
+void GcsNode::settle(GcsContext& ctx) {
+  for (int g = 0; g < setup_.topology.groups(); ++g) {
+    if (ctx.alive(ctx.leader_of(g)) && !settled_[static_cast<std::size_t>(g)]) return;
+  }
+  settling_ = false;
+  ctx.phase = phase_;
+  phase_starts_.push_back(ctx.tick());
+  announce_phase_(phase_, config::task_name(phases_[phase_]), false);
+  record_phase(ctx.tick(), false, false);
+  tasks_[phase_]->start(ctx);
 }
 
 void GcsNode::finish(std::chrono::milliseconds wait) {

@@ -140,7 +140,7 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, 
     round_ = r.round();
   }, comm::Delivery::Reliable, 1);
   agent.subscribe<msgs::PhaseStart>(topic::kPhase, LinkClass::LeaderGcs,
-                                    [this](const msgs::PhaseStart& p) { next_phase_ = p.phase(); },
+                                    [this](const msgs::PhaseStart& p) { next_phase_ = PhaseCall{p.phase(), p.settle()}; },
                                     comm::Delivery::Reliable, 1);
   agent.subscribe<msgs::TaskOrder>(topic::kTaskOrder, LinkClass::LeaderGcs, [this](const msgs::TaskOrder& o) {
     if (o.group() == group_ || o.group() == task::kAllGroups) orders_.push_back(o);
@@ -150,11 +150,35 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, 
 void LeaderNode::learn_own(const std::vector<planner::CellChange>& changes) { learn(map_.observe(changes), true); }
 
 void LeaderNode::enter_phase() {
-  if (next_phase_ && *next_phase_ < tasks_.size()) {
-    phase_ = *next_phase_;
+  if (next_phase_ && next_phase_->phase < tasks_.size()) {
+    phase_ = next_phase_->phase;
     started_ = false;
+    settling_ = next_phase_->settle;
+    stops_sent_ = settle_reported_ = false;
+    stopping_.clear();
   }
   next_phase_.reset();
+}
+
+void LeaderNode::settle(GroupContext& ctx) {
+  if (!stops_sent_) {
+    stops_sent_ = true;
+    for (const int i : ctx.living()) stopping_.emplace_back(i, outlets_.route(i, task::Route{}));
+  }
+  // A robot lost before its stop was confirmed stands still anyway.
+  std::erase_if(stopping_, [&](const std::pair<int, std::uint32_t>& s) { return !alive_[static_cast<std::size_t>(s.first)]; });
+  if (!stopping_.empty() || settle_reported_) return;
+  task::Report r;
+  r.state = task::GroupState::Held;
+  r.values = {0};
+  outlets_.report(r);
+  settle_reported_ = true;
+}
+
+void LeaderNode::stopped(int index, const planner::RouteProgress& p) {
+  std::erase_if(stopping_, [&](const std::pair<int, std::uint32_t>& s) {
+    return s.first == index && s.second == p.id && p.state == planner::RouteState::Stopped;
+  });
 }
 
 void LeaderNode::shadow(const msgs::Clock& clock) {
@@ -194,6 +218,8 @@ void LeaderNode::take_over(const msgs::Clock& clock) {
   // latest round: a new round's plan at once.
   started_ = false;
   taking_over_ = true;
+  stops_sent_ = settle_reported_ = false;  // settling: this leader stops the robots itself
+  stopping_.clear();
   own_carrying_.reset();
   if (last_round_ > 0 && !round_) round_ = last_round_;
   std::fprintf(stderr, "%s: leads group %d from tick %u\n", topology_.name_of(agent_.self()).c_str(), group_,
@@ -228,14 +254,14 @@ void LeaderNode::track_members(const msgs::Clock& clock, GroupContext& ctx) {
     const std::string name = topology_.name_of(topology_.robot(group_, i));
     if (!alive) {
       members_lost_.push_back({name, clock.tick(), std::nullopt});
-      tasks_[phase_]->member_lost(i, ctx);
+      if (!settling_) tasks_[phase_]->member_lost(i, ctx);
     } else {
       if (auto it = std::find_if(members_lost_.rbegin(), members_lost_.rend(),
                                  [&](const MemberLoss& l) { return l.name == name; });
           it != members_lost_.rend()) {
         it->rejoined_tick = clock.tick();
       }
-      tasks_[phase_]->member_back(i, ctx);
+      if (!settling_) tasks_[phase_]->member_back(i, ctx);
     }
     std::fprintf(stderr, "%s: %s %s at tick %u\n", topology_.name_of(agent_.self()).c_str(), name.c_str(),
                  alive ? "is back; planning for it again" : "lost; planning without it", clock.tick());
@@ -243,6 +269,17 @@ void LeaderNode::track_members(const msgs::Clock& clock, GroupContext& ctx) {
 }
 
 void LeaderNode::dispatch(GroupContext& ctx) {
+  if (settling_) {
+    // Nothing is the next task's business yet but the robots' stops.
+    for (const auto& p : progress_) {
+      stopped(topology_.index_of(p.robot()), {p.route_id(), p.step(), static_cast<planner::RouteState>(p.state())});
+    }
+    orders_.clear();
+    statuses_.clear();
+    progress_.clear();
+    round_.reset();
+    return;
+  }
   GroupTask& task = *tasks_[phase_];
   for (const auto& o : orders_) {
     if (o.phase() != phase_) continue;
@@ -272,7 +309,7 @@ void LeaderNode::step(const msgs::Clock& clock) {
   enter_phase();
   const task::Clock now = app::task_clock(clock, topology_);
   GroupContext ctx{setup_, group_, self_index_, phase_, now, alive_, map_, robot_, outlets_};
-  if (!started_) {
+  if (!started_ && !settling_) {
     tasks_[phase_]->start(ctx);
     if (taking_over_) tasks_[phase_]->took_over(ctx);
     started_ = true;
@@ -284,7 +321,11 @@ void LeaderNode::step(const msgs::Clock& clock) {
     gcs_back_at_ = from[topology_.gcs()];
     const auto all = known_cells(map_.group());
     to_gcs_.insert(to_gcs_.end(), all.begin(), all.end());
-    tasks_[phase_]->gcs_back(ctx);
+    if (settling_) {
+      settle_reported_ = false;  // that the group stands, again
+    } else {
+      tasks_[phase_]->gcs_back(ctx);
+    }
     std::fprintf(stderr, "%s: the GCS is back at tick %u; sent it the group map again\n",
                  topology_.name_of(agent_.self()).c_str(), clock.tick());
   }
@@ -292,22 +333,32 @@ void LeaderNode::step(const msgs::Clock& clock) {
   beat.group(static_cast<std::uint16_t>(group_));
   heartbeat_.send(beat);
   dispatch(ctx);
-  tasks_[phase_]->step(ctx);
+  if (settling_) settle(ctx);
+  else tasks_[phase_]->step(ctx);
 
   const member::RobotAgent::Step s = robot_.step(clock.tick());
   member::publish_motion(motion_, agent_.self(), s);
-  if (s.report) {
-    tasks_[phase_]->on_waypoint({static_cast<int>(agent_.self()), s.round, static_cast<std::uint8_t>(*s.report)}, ctx);
+  if (settling_) {
+    // The own robot's stop; the next task hears of its gripper and progress once it starts.
+    if (const planner::RouteProgress p = robot_.following(); p.id != 0 && !(p == own_progress_)) {
+      own_progress_ = p;
+      stopped(self_index_, p);
+      settle(ctx);
+    }
+  } else {
+    if (s.report) {
+      tasks_[phase_]->on_waypoint({static_cast<int>(agent_.self()), s.round, static_cast<std::uint8_t>(*s.report)}, ctx);
+    }
+    if (!own_carrying_ || *own_carrying_ != robot_.carrying()) {
+      own_carrying_ = robot_.carrying();
+      tasks_[phase_]->on_carrying(self_index_, *own_carrying_, ctx);
+    }
+    if (const planner::RouteProgress p = robot_.following(); p.id != 0 && !(p == own_progress_)) {
+      own_progress_ = p;
+      tasks_[phase_]->on_progress(self_index_, p, ctx);
+    }
+    tasks_[phase_]->finish_step(ctx);
   }
-  if (!own_carrying_ || *own_carrying_ != robot_.carrying()) {
-    own_carrying_ = robot_.carrying();
-    tasks_[phase_]->on_carrying(self_index_, *own_carrying_, ctx);
-  }
-  if (const planner::RouteProgress p = robot_.following(); p.id != 0 && !(p == own_progress_)) {
-    own_progress_ = p;
-    tasks_[phase_]->on_progress(self_index_, p, ctx);
-  }
-  tasks_[phase_]->finish_step(ctx);
 
   if (!to_gcs_.empty()) {
     msgs::MapPatch patch;

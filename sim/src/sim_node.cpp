@@ -47,7 +47,10 @@ SimNode::SimNode(comm::LockstepClock& clock, const app::RoleSetup& setup, PhaseS
     if (t.is_robot(m.robot()) && alive_[m.robot()]) world_.command(m.robot(), m.route_id(), app::from_xy(m.path_xy()), m.pick_steps(), m.drop_steps());
   }, comm::Delivery::Reliable, t.robots());
   clock.subscribe<msgs::PhaseStart>(topic::kPhase, LinkClass::LeaderGcs,
-                                    [this](const msgs::PhaseStart& p) { next_phase_ = p.phase(); },
+                                    [this](const msgs::PhaseStart& p) {
+                                      // Judged from when the robots stand still (PhaseStart.settle).
+                                      if (!p.settle()) next_phase_ = p.phase();
+                                    },
                                     comm::Delivery::Reliable, 1);
   mission_ = config::mission_phases(setup.world.scenario);
   start_phase(0, 0);

@@ -30,7 +30,7 @@ TEST(TaskWire, AnOrderWithMapCellsValuesAndRoutesComesBackAsSent) {
   o.cells.assign(hall().size(), 0);
   o.cells[8] = o.cells[9] = 1;
   o.values = {3, -1, 40};
-  o.routes = {{4, {{1, 1}, {2, 1}}}, {5, {}}};
+  o.routes = {{4, {{1, 1}, {2, 1}}, {0}, {1}}, {5, {}}};
   for (const auto encoding : {planner::PatchEncoding::RunLength, planner::PatchEncoding::ZstdRunLength}) {
     const msgs::TaskOrder m = order_msg(o, 3, encoding);
     EXPECT_EQ(m.phase(), 3u);
@@ -48,9 +48,15 @@ TEST(TaskWire, AnOrderWithMapCellsValuesAndRoutesComesBackAsSent) {
     ASSERT_EQ(back.routes.size(), 2u);
     EXPECT_EQ(back.routes[0].robot, 4);
     EXPECT_EQ(back.routes[0].path, (std::vector<Cell>{{1, 1}, {2, 1}}));
+    EXPECT_EQ(back.routes[0].pick_steps, (std::vector<std::uint32_t>{0}));
+    EXPECT_EQ(back.routes[0].drop_steps, (std::vector<std::uint32_t>{1}));
     EXPECT_EQ(back.routes[1].robot, 5);
     EXPECT_TRUE(back.routes[1].path.empty());
+    EXPECT_TRUE(back.routes[1].pick_steps.empty());
   }
+  // Routes that act nowhere send no steps at all.
+  o.routes = {{4, {{1, 1}, {2, 1}}}};
+  EXPECT_TRUE(order_msg(o, 3, planner::PatchEncoding::RunLength).routes_picks().empty());
 }
 
 TEST(TaskWire, TheMapCacheEncodesAMapOnceAndAChangedMapAgain) {
@@ -126,6 +132,13 @@ TEST(TaskWire, OrdersThatDoNotDecodeAreRefusedWithTheReason) {
   m.route_robots({1});
   m.routes_xy({{1, 1, 2}});
   refused(m, "odd number of coordinates");
+  m = good;
+  m.route_robots({1});
+  m.routes_xy({{1, 1, 2, 1}});
+  m.routes_picks({{0}});
+  refused(m, "gives pick-up and drop steps for 1 and 0 of its 1 routes");
+  m.routes_drops({{2}});
+  refused(m, "acts at step 2 of 2");
 }
 
 TEST(TaskWire, AReportComesBackAsSentAndAnUnknownStateIsRefused) {

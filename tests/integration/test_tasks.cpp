@@ -8,6 +8,7 @@
 #include "run_swarm.hpp"
 #include "swarm/record/record.hpp"
 #include "swarm_test/metrics_fixture.hpp"
+#include "swarm_test/phase_checks.hpp"
 
 namespace swarm::test {
 namespace {
@@ -59,6 +60,17 @@ TEST(Tasks, ExploreThenCoverReachesEveryReachableCell) {
   }
   EXPECT_GT(poses[0], 0u);
   EXPECT_GT(poses[1], 0u);
+
+  // Cover starts once every robot stands still: no robot moved in the tick before its start, and
+  // exploration ended before (the ticks between are the robots' stops).
+  std::map<std::uint32_t, std::vector<std::int32_t>> cells;  // tick -> every robot's x, y
+  for (const auto& f : frames) {
+    if (f.has_poses()) cells[f.poses().tick()].assign(f.poses().xy().begin(), f.poses().xy().end());
+  }
+  const std::uint32_t start = starts[1].first;
+  ASSERT_TRUE(cells.count(start) && cells.count(start - 1));
+  EXPECT_EQ(cells[start], cells[start - 1]);
+  EXPECT_GT(start, phase_named(m, "explore")["end_tick"].get<std::uint32_t>());
 }
 
 // A member and, in the other group, the leader are killed mid-coverage: group 0's leader divides
@@ -99,9 +111,24 @@ TEST(Tasks, CoverThroughTheTrafficLayerUnderDelayAndJitterHasNoConflict) {
                           "--groups 2 --robots-per-group 3 --max-ticks 3000");
   const auto& cover = phase_named(m, "cover");
   EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
-  EXPECT_EQ(cover["motion"]["vertex_conflicts"], 0) << cover["motion"];
-  EXPECT_EQ(cover["motion"]["edge_conflicts"], 0) << cover["motion"];
+  swarm::test::expect_no_conflict(cover);
   EXPECT_EQ(cover["task"]["traffic"]["execution"], "MAPF_EXECUTE_ADG");
+}
+
+// Collect through the traffic layer over DDS, with link delay and jitter and a member killed
+// while it carries objects: what it held is put down beside it and delivered by the others, and
+// no robot ever meets another.
+TEST(Tasks, CollectThroughTheTrafficLayerWithAMemberKilledDeliversEverythingWithoutAConflict) {
+  const auto m = run_task("collect_traffic", "small.pbtxt",
+                          "links { member_leader { delay_ticks: 3 jitter_ticks: 2 } leader_gcs { delay_ticks: 2 } } "
+                          "mission { phase { collect { traffic: true } } }",
+                          "--groups 2 --robots-per-group 3 --max-ticks 3000 --kill member-0-2@40");
+  const auto& p = phase_named(m, "collect");
+  EXPECT_EQ(p["task"]["delivered"], p["task"]["objects"]);
+  EXPECT_EQ(p["task"]["reported_delivered"], p["task"]["objects"]);
+  EXPECT_EQ(p["task"]["wrong_drops"], 0);
+  swarm::test::expect_no_conflict(p);
+  EXPECT_GE(p["task"]["tour_plans"].get<int>(), 2);  // again after the loss
 }
 
 TEST(Tasks, CoverInGroupKOrderReachesEveryReachableCell) {

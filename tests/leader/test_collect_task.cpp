@@ -6,7 +6,10 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "swarm_test/fake_swarm.hpp"
+#include "swarm_test/phase_checks.hpp"
 
 namespace swarm::leader {
 namespace {
@@ -96,6 +99,58 @@ TEST(CollectTask, AMemberLostAsItPicksUpStillHasItsLoadCollected) {
   EXPECT_EQ(p["task"]["reported_delivered"], p["task"]["objects"]);
   EXPECT_EQ(p["task"]["wrong_drops"], 0);
   EXPECT_EQ(m["agents"]["leader-0"]["phases"][1]["numbers"]["delivered_known"], 5);
+}
+
+// ---- Through the traffic layer (collect.traffic, docs/traffic.md) -------------------------------
+
+// The phase as the simulator judged it: every object delivered, none dropped elsewhere, no
+// conflict, and the GCS knows each delivered (its belief and the ground truth agree).
+void expect_all_delivered_without_a_conflict(const nlohmann::json& m) {
+  const auto& p = phase_named(m, "collect");
+  ASSERT_TRUE(m["complete"].get<bool>()) << p.dump(1);
+  EXPECT_EQ(p["task"]["delivered"], p["task"]["objects"]);
+  EXPECT_EQ(p["task"]["reported_delivered"], p["task"]["objects"]);
+  EXPECT_EQ(p["task"]["wrong_drops"], 0);
+  swarm::test::expect_no_conflict(p);
+}
+
+TEST(CollectTask, ThroughTheTrafficLayerEveryObjectIsDeliveredWithoutAConflict) {
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+      "map: 'small' groups: 3 robots_per_group: 3 max_ticks: 3000 mission { phase { collect { traffic: true } } }"));
+  const auto m = s.run_to_end();
+  expect_all_delivered_without_a_conflict(m);
+  const auto& p = phase_named(m, "collect");
+  EXPECT_EQ(p["task"]["objects"], 15);
+  EXPECT_EQ(p["task"]["tour_plans"], 1);
+  EXPECT_GT(p["task"]["traffic"]["windows"].get<int>(), 1);
+}
+
+TEST(CollectTask, ThroughTheTrafficLayerAfterExplorationWithLinkDelayToo) {
+  for (const std::string links : {"", "links { member_leader { delay_ticks: 3 jitter_ticks: 2 } } "}) {
+    SCOPED_TRACE(links);
+    swarm::test::FakeSwarm s(swarm::test::setup_from_text("map: 'small' groups: 3 robots_per_group: 3 max_ticks: 4000 " +
+                                                          links +
+                                                          "mission { phase { explore {} } phase { collect { traffic: true } } }"));
+    expect_all_delivered_without_a_conflict(s.run_to_end());
+  }
+}
+
+// A member lost while it carries objects, and (second run) a leader: what the lost robot held lies
+// beside it, as the simulator put it down, and the others deliver it.
+TEST(CollectTask, ThroughTheTrafficLayerALostRobotsLoadIsDeliveredByTheOthers) {
+  for (const bool leader : {false, true}) {
+    for (const std::uint32_t at : {25u, 40u}) {
+      SCOPED_TRACE(std::string(leader ? "leader" : "member") + " lost at " + std::to_string(at));
+      auto setup = swarm::test::setup_from_text(
+          "map: 'small' groups: 2 robots_per_group: 3 max_ticks: 4000 mission { phase { collect { traffic: true } } }");
+      swarm::test::FakeSwarm s(setup);
+      const auto m = s.run_to_end([&](std::uint32_t tick) {
+        if (tick == at) s.disconnect(leader ? setup.topology.leader(1) : setup.topology.robot(0, 2));
+      });
+      expect_all_delivered_without_a_conflict(m);
+      EXPECT_GE(phase_named(m, "collect")["task"]["tour_plans"].get<int>(), 2);
+    }
+  }
 }
 
 }  // namespace

@@ -94,10 +94,11 @@ TEST(MapfTask, TimedExecutionKeepsThePlansMakespanExactly) {
   EXPECT_EQ(by_graph["task"]["conflicts"], 0);
 }
 
-// A mapf phase after exploration: the robots are still driving exploration routes when it starts,
-// so the leaders first stop them all and the GCS plans from where they stand (a plan made at once
-// from the cells of its first tick would send routes that no longer start where the robots are:
-// measured before, 2 of 4 robots never arrived and the run stopped at max_ticks).
+// A mapf phase after exploration: the robots are still driving exploration routes when
+// exploration ends, so the phase starts once the leaders have stopped them all, and the GCS plans
+// at its start from where they stand (a plan made from the cells of a tick when robots still
+// moved would send routes that no longer start where the robots are: measured before, 2 of 4
+// robots never arrived and the run stopped at max_ticks).
 TEST(MapfTask, APhaseAfterExplorationPlansOnceEveryRobotStands) {
   swarm::test::FakeSwarm s(swarm::test::setup_from_text(
       "map: 'small' groups: 2 robots_per_group: 2 max_ticks: 600 mission { phase { explore {} } phase { mapf {} } }"));
@@ -106,7 +107,8 @@ TEST(MapfTask, APhaseAfterExplorationPlansOnceEveryRobotStands) {
   const auto& p = mapf_phase(m);
   EXPECT_EQ(p["task"]["robots_at_goal"], 4);
   ASSERT_EQ(p["task"]["plans"].size(), 1u);
-  EXPECT_GT(p["task"]["plans"][0]["tick"].get<int>(), p["start_tick"].get<int>());
+  EXPECT_EQ(p["task"]["plans"][0]["tick"].get<int>(), p["start_tick"].get<int>());
+  EXPECT_GT(p["start_tick"].get<int>(), m["phases"][0]["end_tick"].get<int>());
   EXPECT_EQ(p["motion"]["routes_rejected"], 0);
 }
 

@@ -25,6 +25,18 @@ TEST(Adg, ACrossingWaitsForTheRobotPlannedFirst) {
   EXPECT_EQ(releasable(d, 0, {0, 0}), 2u);
 }
 
+TEST(Adg, ATimeOfThePlanIsTheRouteStepEnteredByThen) {
+  // Robot 1 waits at (1, 0) through times 0 and 1, enters (1, 1) at 2 and (1, 2) at 3, then stays.
+  const std::vector<Path> plan{{{0, 1}, {1, 1}, {2, 1}}, {{1, 0}, {1, 0}, {1, 1}, {1, 2}}};
+  const Dependencies d = dependencies(plan);
+  EXPECT_EQ(step_at(d, 1, 0), 0u);
+  EXPECT_EQ(step_at(d, 1, 1), 0u);
+  EXPECT_EQ(step_at(d, 1, 2), 1u);
+  EXPECT_EQ(step_at(d, 1, 3), 2u);
+  EXPECT_EQ(step_at(d, 1, 9), 2u);
+  EXPECT_EQ(step_at(d, 0, 1), 1u);
+}
+
 TEST(Adg, AFollowerWaitsUntilTheCellAheadIsLeft) {
   // Robot 1 follows robot 0 along a corridor one step behind: each of its steps needs robot 0's next.
   const std::vector<Path> plan{{{1, 0}, {2, 0}, {3, 0}}, {{0, 0}, {1, 0}, {2, 0}}};

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <ostream>
 #include <set>
 #include <stdexcept>
@@ -23,13 +24,33 @@ namespace {
 
 // The independent check of one window: each path starts where its robot stands and has steps + 1
 // cells; every step is a legal action of the motion model; no two robots share a cell or swap in
-// any step; a fixed robot never moves.
+// any step; a fixed robot never moves; each goal behind a robot was stood on at the path index
+// reached_at gives, in order, or is one of its skipped goals.
 void expect_valid(const OccupancyGrid& map, MotionModel motion, const std::vector<Agent>& agents, const Window& w,
                   int steps) {
   ASSERT_EQ(w.paths.size(), agents.size());
+  ASSERT_EQ(w.reached_at.size(), agents.size());
   for (std::size_t a = 0; a < agents.size(); ++a) {
     ASSERT_EQ(w.paths[a].size(), static_cast<std::size_t>(steps) + 1) << "robot " << a;
     EXPECT_EQ(w.paths[a][0], agents[a].at) << "robot " << a;
+    ASSERT_EQ(w.reached_at[a].size(), static_cast<std::size_t>(w.done[a])) << "robot " << a;
+    int last = 0;
+    std::size_t skipped = 0;
+    for (std::size_t g = 0; g < w.reached_at[a].size(); ++g) {
+      const int i = w.reached_at[a][g];
+      if (i < 0) {
+        ++skipped;
+        EXPECT_TRUE(agents[a].fixed || std::find(w.skipped[a].begin(), w.skipped[a].end(), static_cast<int>(g)) !=
+                                           w.skipped[a].end())
+            << "robot " << a << " goal " << g;
+        continue;
+      }
+      EXPECT_GE(i, last) << "robot " << a << " goal " << g;
+      ASSERT_LE(i, steps);
+      EXPECT_EQ(w.paths[a][static_cast<std::size_t>(i)], agents[a].goals[g]) << "robot " << a << " goal " << g;
+      last = i;
+    }
+    if (!agents[a].fixed) EXPECT_EQ(skipped, w.skipped[a].size()) << "robot " << a;
   }
   for (int s = 0; s < steps; ++s) {
     std::vector<Cell> from;

@@ -160,4 +160,10 @@ std::vector<int> ready_rotations(const Dependencies& adg, const std::vector<std:
   return out;
 }
 
+std::uint32_t step_at(const Dependencies& adg, int robot, int time) {
+  const std::vector<int>& t = adg.planned_time.at(static_cast<std::size_t>(robot));
+  const auto after = std::upper_bound(t.begin(), t.end(), time);
+  return after == t.begin() ? 0 : static_cast<std::uint32_t>(after - t.begin() - 1);
+}
+
 }  // namespace swarm::planner::mapf

@@ -172,6 +172,7 @@ Window Planner::plan(const std::vector<Agent>& agents, int steps) {
   w.paths.resize(n);
   w.done.assign(n, 0);
   w.skipped.resize(n);
+  w.reached_at.resize(n);
   // Moves past the goals a robot stands on and those it cannot reach; sets its current goal.
   const auto advance = [&](std::size_t a) {
     const Agent& ag = agents[a];
@@ -179,6 +180,7 @@ Window Planner::plan(const std::vector<Agent>& agents, int steps) {
     goal_[a] = -1;
     if (ag.fixed) {
       i = static_cast<int>(ag.goals.size());
+      w.reached_at[a].assign(ag.goals.size(), -1);
       return false;
     }
     bool reached = false;
@@ -187,8 +189,10 @@ Window Planner::plan(const std::vector<Agent>& agents, int steps) {
       const int gi = map_.in_bounds(g) ? map_.index(g) : -1;
       if (gi == now_[a]) {
         reached = true;
+        w.reached_at[a].push_back(static_cast<int>(w.paths[a].size()) - 1);
       } else if (gi < 0 || steps_to(gi, now_[a]) >= kUnreachable) {
         w.skipped[a].push_back(i);
+        w.reached_at[a].push_back(-1);
       } else {
         goal_[a] = gi;
         break;

@@ -1,18 +1,32 @@
 #include "swarm/tasks/collect/collect_gcs.hpp"
 
+#include <algorithm>
 #include <any>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
 #include "swarm/comm/link.hpp"
+#include "swarm/planner/grid/rng.hpp"
+#include "swarm/planner/tours/tour.hpp"
 #include "swarm/tasks/collect/object_facts.hpp"
 
 namespace swarm::gcs {
 
 
-CollectGcsTask::CollectGcsTask(const swarm::scenario::Collect& config, std::uint32_t phase)
-    : config_(config), phase_(phase) {}
+CollectGcsTask::CollectGcsTask(const swarm::scenario::Collect& config, const swarm::scenario::Mapf& paths,
+                               std::uint32_t phase, bool map_given)
+    : config_(config), phase_(phase) {
+  if (config_.traffic()) {
+    drive_ = std::make_unique<MapfGcsTask>(
+        paths, phase, map_given,
+        [this](const GcsContext& ctx, const planner::OccupancyGrid& map, const std::vector<int>& robots, const char*) {
+          return tours(ctx, map, robots);
+        },
+        static_cast<int>(config_.traffic_window_steps()),
+        [this](int robot, const MapfGcsTask::Stop& stop, bool reached) { stop_done(robot, stop, reached); });
+  }
+}
 
 void CollectGcsTask::start(GcsContext& ctx) {
   const comm::Topology& t = ctx.setup.topology;
@@ -30,6 +44,10 @@ void CollectGcsTask::start(GcsContext& ctx) {
   leader_.clear();
   for (int g = 0; g < t.groups(); ++g) leader_.push_back(ctx.leader_of(g));
   resume_at_.assign(static_cast<std::size_t>(t.groups()), std::nullopt);
+  if (drive_) {
+    drive_->start(ctx);  // plans the tours once every robot stands still
+    return;
+  }
   if (groups.empty()) return;
   const std::size_t room = (world_.objects.size() + groups.size() - 1) / groups.size();
   std::vector<std::vector<std::int32_t>> ids(static_cast<std::size_t>(t.groups()));
@@ -59,7 +77,11 @@ void CollectGcsTask::start(GcsContext& ctx) {
   }
 }
 
-void CollectGcsTask::on_report(const task::Report& r, GcsContext&) {
+void CollectGcsTask::on_report(const task::Report& r, GcsContext& ctx) {
+  if (drive_) {
+    drive_->on_report(r, ctx);
+    return;
+  }
   if (r.group >= done_.size() || r.values.empty()) return;
   if (static_cast<std::uint32_t>(r.values[0]) != seq_[r.group]) return;  // for an order since replaced
   if (r.state == task::GroupState::Done) done_[r.group] = true;
@@ -91,6 +113,10 @@ void CollectGcsTask::send_resume(int g, GcsContext& ctx) {
 }
 
 void CollectGcsTask::step(GcsContext& ctx) {
+  if (drive_) {
+    drive(ctx);
+    return;
+  }
   const comm::LinkParams& lg = ctx.setup.links[comm::LinkClass::LeaderGcs];
   for (int g = 0; g < static_cast<int>(done_.size()); ++g) {
     const auto gu = static_cast<std::size_t>(g);
@@ -127,11 +153,126 @@ ProgressLine CollectGcsTask::progress(const GcsContext&) const {
 }
 
 nlohmann::json CollectGcsTask::numbers() const {
-  return {{"objects", world_.objects.size()},
-          {"types", world_.destinations.size()},
-          {"objects_per_group", objects_of_group_},
-          {"reported_delivered", delivered_known()},
-          {"resumes", resumes_}};
+  nlohmann::json j = {{"objects", world_.objects.size()},
+                      {"types", world_.destinations.size()},
+                      {"objects_per_group", objects_of_group_},
+                      {"reported_delivered", delivered_known()},
+                      {"resumes", resumes_}};
+  if (drive_) {
+    j["tour_plans"] = tour_plans_;
+    j["traffic"] = drive_->numbers();
+  }
+  return j;
+}
+
+std::string CollectGcsTask::given_up() const {
+  if (!gave_up_.empty()) return gave_up_;
+  return drive_ ? drive_->given_up() : std::string();
+}
+
+void CollectGcsTask::drive(GcsContext& ctx) {
+  if (complete_ || !gave_up_.empty()) return;
+  drive_->step(ctx);
+  if (!drive_->complete()) return;
+  const int delivered = delivered_known();
+  if (delivered == static_cast<int>(world_.objects.size())) {
+    complete_ = true;
+  } else if (delivered > delivered_at_tours_) {
+    // A stop was skipped (an object or destination no robot could reach then): new tours for
+    // what is left, from where the robots stand now.
+    drive_->restart(ctx, "every tour done, objects left");
+  } else {
+    gave_up_ = std::to_string(world_.objects.size() - static_cast<std::size_t>(delivered)) +
+               " objects that no robot's tour reaches";
+  }
+}
+
+std::vector<std::vector<MapfGcsTask::Stop>> CollectGcsTask::tours(const GcsContext& ctx,
+                                                                  const planner::OccupancyGrid& map,
+                                                                  const std::vector<int>& robots) {
+  using Stop = MapfGcsTask::Stop;
+  const comm::Topology& t = ctx.setup.topology;
+  ++tour_plans_;
+  delivered_at_tours_ = delivered_known();
+  // What a lost robot carried lies where the simulator put it down.
+  std::vector<planner::Cell> at;
+  for (int r = 0; r < t.robots(); ++r) at.push_back(ctx.cell_of(r));
+  for (auto& k : known_) {
+    if (k[0] != collect::kObjectCarried || ctx.alive(k[1])) continue;
+    const planner::Cell c = planner::put_down_cell(map, ctx.cell_of(k[1]), at);
+    k = {collect::kObjectLying, c.x, c.y};
+  }
+  // Tours are planned round the robots that will not move.
+  planner::OccupancyGrid around = map;
+  for (int r = 0; r < t.robots(); ++r) {
+    if (std::find(robots.begin(), robots.end(), r) == robots.end()) around.set(ctx.cell_of(r), planner::CellState::Occupied);
+  }
+  // Each robot keeps what it carries; each lying object goes to the nearest robot with room left.
+  std::vector<std::vector<int>> mine(static_cast<std::size_t>(t.robots()));
+  std::vector<int> lying;
+  for (std::size_t id = 0; id < known_.size(); ++id) {
+    if (known_[id][0] == collect::kObjectCarried) mine[static_cast<std::size_t>(known_[id][1])].push_back(static_cast<int>(id));
+    if (known_[id][0] == collect::kObjectLying) lying.push_back(static_cast<int>(id));
+  }
+  std::size_t total = lying.size();
+  for (const int r : robots) total += mine[static_cast<std::size_t>(r)].size();
+  const std::size_t room = robots.empty() ? 0 : (total + robots.size() - 1) / robots.size();
+  for (const int id : lying) {
+    const planner::Cell c{known_[static_cast<std::size_t>(id)][1], known_[static_cast<std::size_t>(id)][2]};
+    int best = -1;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (const int r : robots) {
+      if (mine[static_cast<std::size_t>(r)].size() >= room) continue;
+      const planner::Cell p = ctx.cell_of(r);
+      const double d = std::hypot(p.x - c.x, p.y - c.y);
+      if (d < best_d) best_d = d, best = r;
+    }
+    if (best >= 0) mine[static_cast<std::size_t>(best)].push_back(id);
+  }
+  std::vector<std::vector<Stop>> stops(static_cast<std::size_t>(t.robots()));
+  for (const int r : robots) {
+    const auto& ids = mine[static_cast<std::size_t>(r)];
+    if (ids.empty()) continue;
+    planner::TourProblem problem;
+    problem.start = ctx.cell_of(r);
+    problem.destinations = world_.destinations;
+    for (const int id : ids) {
+      const auto& k = known_[static_cast<std::size_t>(id)];
+      // What it carries is "picked up" where it starts.
+      const planner::Cell c = k[0] == collect::kObjectCarried ? problem.start : planner::Cell{k[1], k[2]};
+      problem.objects.push_back({c, world_.objects[static_cast<std::size_t>(id)].type});
+    }
+    planner::TourOptions options;
+    options.variant = planner::TourVariant::kDistanceAngle;
+    options.search = planner::TourOptions::Search::kExact;
+    options.seed = planner::mix_seed({ctx.setup.world.scenario.seed(), tour_plans_, static_cast<std::uint64_t>(r)});
+    const planner::TourPlan plan = planner::plan_tour(around, problem, options);
+    for (const planner::TourLeg& leg : plan.legs) {
+      if (leg.stop.kind == planner::TourStop::kDrop) {
+        stops[static_cast<std::size_t>(r)].push_back({leg.stop.cell, Stop::Act::kDrop});
+      } else if (known_[static_cast<std::size_t>(ids[static_cast<std::size_t>(leg.stop.object)])][0] != collect::kObjectCarried) {
+        stops[static_cast<std::size_t>(r)].push_back({leg.stop.cell, Stop::Act::kPick});
+      }
+    }
+  }
+  return stops;
+}
+
+void CollectGcsTask::stop_done(int robot, const MapfGcsTask::Stop& stop, bool reached) {
+  if (!reached || stop.act == MapfGcsTask::Stop::Act::kNone) return;
+  // The simulator's rule: a pick-up takes every object lying on the cell; a drop leaves all the
+  // robot carries, delivered where it is its type's destination.
+  for (std::size_t id = 0; id < known_.size(); ++id) {
+    auto& k = known_[id];
+    if (stop.act == MapfGcsTask::Stop::Act::kPick && k[0] == collect::kObjectLying && k[1] == stop.cell.x &&
+        k[2] == stop.cell.y) {
+      k = {collect::kObjectCarried, robot, 0};
+    } else if (stop.act == MapfGcsTask::Stop::Act::kDrop && k[0] == collect::kObjectCarried && k[1] == robot) {
+      const bool right = world_.destinations[static_cast<std::size_t>(world_.objects[id].type)] == stop.cell;
+      k = right ? std::array<std::int32_t, 3>{collect::kObjectDelivered, stop.cell.x, stop.cell.y}
+                : std::array<std::int32_t, 3>{collect::kObjectLying, stop.cell.x, stop.cell.y};
+    }
+  }
 }
 
 }  // namespace swarm::gcs

@@ -9,6 +9,8 @@
 #include "swarm/tasks/collect/collect_gcs.hpp"
 #include "swarm/tasks/collect/collect_leader.hpp"
 #include "swarm/tasks/collect/collect_world.hpp"
+#include "swarm/tasks/mapf/mapf_leader.hpp"
+#include "swarm/tasks/mapf/mapf_settings.hpp"
 
 namespace swarm::tasks {
 
@@ -57,10 +59,14 @@ TaskRow collect_row() {
   row.name = "collect";
   row.phase_case = Phase::kCollect;
   row.motion = planner::MotionModel::eight();  // the tour paper's robots turn in eighths
-  row.gcs = [](const Phase& phase, const app::RoleSetup&, std::uint32_t index) {
-    return std::make_unique<gcs::CollectGcsTask>(phase.collect(), index);
+  row.gcs = [](const Phase& phase, const app::RoleSetup& setup, std::uint32_t index) {
+    return std::make_unique<gcs::CollectGcsTask>(phase.collect(), traffic_driving(setup.world.scenario), index,
+                                                 config::map_given(setup.world.scenario, index));
   };
-  row.leader = [](const Phase& phase, const app::RoleSetup& setup, int group, std::uint32_t index) {
+  row.leader = [](const Phase& phase, const app::RoleSetup& setup, int group,
+                  std::uint32_t index) -> std::unique_ptr<leader::GroupTask> {
+    // Through the traffic layer the leaders drive windows as they drive mapf plans.
+    if (phase.collect().traffic()) return std::make_unique<leader::MapfGroupTask>(traffic_driving(setup.world.scenario), group);
     return std::make_unique<leader::CollectGroupTask>(phase.collect(), setup, group, index);
   };
   row.judge = [](const Phase&, const app::RoleSetup& setup, std::uint32_t index) {
@@ -72,6 +78,7 @@ TaskRow collect_row() {
   row.check = [](const Phase& phase, const config::World&, const std::string& field, config::Problems& p) {
     const auto& c = phase.collect();
     p.at_least(field + ".types", 1, c.types());
+    p.at_least(field + ".traffic_window_steps", 1, c.traffic_window_steps());
     for (int o = 0; o < c.objects_size(); ++o) {
       if (c.objects(o).type() >= c.types()) {
         p.add(field + ".objects[" + std::to_string(o) + "].type", "be below collect.types (" + std::to_string(c.types()) + ")",

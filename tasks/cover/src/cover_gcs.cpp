@@ -23,7 +23,7 @@ CoverGcsTask::CoverGcsTask(const swarm::scenario::Cover& config, const swarm::sc
     drive_ = std::make_unique<MapfGcsTask>(
         paths, phase, map_given,
         [this](const GcsContext& ctx, const planner::OccupancyGrid&, const std::vector<int>& robots, const char* why) {
-          return divide(ctx, tracker_.uncovered(), why, &robots);
+          return MapfGcsTask::passing(divide(ctx, tracker_.uncovered(), why, &robots));
         },
         static_cast<int>(config_.traffic_window_steps()));
   }
@@ -54,7 +54,7 @@ void CoverGcsTask::start(GcsContext& ctx) {
   group_done_.assign(static_cast<std::size_t>(t.groups()), false);
   started_ = true;
   if (drive_) {
-    drive_->start(ctx);  // divides once every robot stands still
+    drive_->start(ctx);
   } else {
     divide(ctx, tracker_.uncovered(), "start");
   }

@@ -12,10 +12,6 @@
 namespace swarm::tasks {
 
 namespace {
-// How the leaders drive traffic windows: mapf's execution for this scenario (by timing when every
-// link is exact, else by the dependency graph; config::resolved_mapf).
-swarm::scenario::Mapf traffic_paths(const swarm::scenario::Scenario& s) { return resolved_mapf(swarm::scenario::Mapf(), s); }
-
 // The simulator's judge: the share of the coverage target the robots' footprints swept, when it
 // was all swept, and the curve of it (every 5 ticks).
 class CoverJudge : public sim::PhaseJudge {
@@ -51,13 +47,13 @@ TaskRow cover_row() {
   row.phase_case = Phase::kCover;
   row.motion = planner::MotionModel::four();  // DARP and STC plan on the 4-connected grid
   row.gcs = [](const Phase& phase, const app::RoleSetup& setup, std::uint32_t index) {
-    return std::make_unique<gcs::CoverGcsTask>(phase.cover(), traffic_paths(setup.world.scenario), index,
+    return std::make_unique<gcs::CoverGcsTask>(phase.cover(), traffic_driving(setup.world.scenario), index,
                                                config::map_given(setup.world.scenario, index));
   };
   row.leader = [](const Phase& phase, const app::RoleSetup& setup, int group,
                   std::uint32_t) -> std::unique_ptr<leader::GroupTask> {
     // Through the traffic layer the leaders drive windows as they drive mapf plans.
-    if (phase.cover().traffic()) return std::make_unique<leader::MapfGroupTask>(traffic_paths(setup.world.scenario), group);
+    if (phase.cover().traffic()) return std::make_unique<leader::MapfGroupTask>(traffic_driving(setup.world.scenario), group);
     return std::make_unique<leader::CoverGroupTask>(phase.cover(), setup, group);
   };
   row.judge = [](const Phase&, const app::RoleSetup&, std::uint32_t) { return std::make_unique<CoverJudge>(); };

@@ -17,17 +17,10 @@ namespace swarm::gcs {
 using planner::Cell;
 
 namespace {
-// Windows in a row in which no robot reached a goal or moved before a lifelong phase is given up.
-constexpr int kIdleWindowsLimit = 8;
-constexpr const char* kNextWindow = "window";
 }  // namespace
 
 MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, GoalPicker goals)
     : config_(config), phase_(phase), map_given_(map_given), pick_goals_(std::move(goals)) {}
-
-MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, RoutePicker routes,
-                         int window)
-    : config_(config), phase_(phase), map_given_(map_given), pick_routes_(std::move(routes)), window_(window) {}
 
 std::vector<Cell> MapfGcsTask::random_goals(const GcsContext& ctx) const {
   // A distinct free cell per robot, reachable from where it stands, drawn from the run's seed.
@@ -64,10 +57,8 @@ void MapfGcsTask::start(GcsContext& ctx) {
   group_in_plan_.assign(groups, false);
   group_done_.assign(groups, false);
   group_held_.assign(groups, false);
-  // A phase after another: its routes may still be driving, so the leaders first stop every robot
-  // (tasks/mapf/mapf_leader.hpp) and the plan is made once every group reports its robots standing.
-  settling_ = phase_ > 0;
-  if (!settling_) plan(ctx, "start");
+  // Every robot stands still (a phase after another starts so: gcs/gcs_node.hpp).
+  plan(ctx, "start");
 }
 
 void MapfGcsTask::begin_plan(const GcsContext& ctx) {
@@ -139,109 +130,6 @@ void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
   send_plan(ctx, res);
 }
 
-void MapfGcsTask::plan_window(GcsContext& ctx, const char* why) {
-  const comm::Topology& t = ctx.setup.topology;
-  const bool next = std::string(why) == kNextWindow;
-  // Everyone but the living robots of led groups stands where it is: an obstacle to plan round.
-  std::vector<int> may_move;
-  for (int r = 0; r < t.robots(); ++r) {
-    if (ctx.alive(r) && ctx.alive(ctx.leader_of(t.group_of(static_cast<comm::AgentId>(r))))) may_move.push_back(r);
-  }
-  if (!next) {
-    sequences_ = pick_routes_(ctx, known_, may_move, why);
-    sequences_.resize(static_cast<std::size_t>(t.robots()));
-  }
-  if (!traffic_) {
-    // The robots stand on free cells whatever the known map says of them (a fused map may not
-    // have seen a cell under a robot).
-    planner::OccupancyGrid map = known_;
-    for (int r = 0; r < t.robots(); ++r) map.set(ctx.cell_of(r), planner::CellState::Free);
-    traffic_ = std::make_unique<planner::traffic::Planner>(
-        std::move(map), planner::MotionModel::four(),
-        planner::traffic::Config{planner::mix_seed({ctx.setup.world.scenario.seed(), 9100 + phase_})});
-  }
-  std::vector<planner::traffic::Agent> agents(static_cast<std::size_t>(t.robots()));
-  for (int r = 0; r < t.robots(); ++r) {
-    agents[static_cast<std::size_t>(r)].at = ctx.cell_of(r);
-    agents[static_cast<std::size_t>(r)].fixed = true;
-  }
-  for (const int r : may_move) {
-    agents[static_cast<std::size_t>(r)].fixed = false;
-    agents[static_cast<std::size_t>(r)].goals = sequences_[static_cast<std::size_t>(r)];
-  }
-  planner::traffic::Window w;
-  try {
-    w = traffic_->plan(agents, window_);
-  } catch (const std::invalid_argument& e) {
-    failed_ = true;
-    failure_ = std::string("no traffic window (") + why + "): " + e.what();
-    return;
-  }
-  planned_ = may_move;
-  begin_plan(ctx);
-  planner::mapf::Result res;
-  res.status = planner::mapf::Status::Solved;
-  window_goals_.assign(static_cast<std::size_t>(t.robots()), 0);
-  window_skipped_.assign(static_cast<std::size_t>(t.robots()), 0);
-  bool moved = false;
-  for (const int r : planned_) {
-    const auto ur = static_cast<std::size_t>(r);
-    res.paths.push_back(w.paths[ur]);
-    goals_[ur] = w.paths[ur].back();
-    window_goals_[ur] = w.done[ur];
-    window_skipped_[ur] = static_cast<int>(w.skipped[ur].size());
-    moved = moved || w.paths[ur].back() != w.paths[ur].front();
-  }
-  int reached = 0;
-  for (const int d : window_goals_) reached += d;
-  idle_windows_ = moved || reached > 0 ? 0 : idle_windows_ + 1;
-  if (idle_windows_ >= kIdleWindowsLimit) {
-    failed_ = true;
-    failure_ = "traffic: no robot moved or reached a goal in " + std::to_string(kIdleWindowsLimit) + " windows";
-    return;
-  }
-  ++windows_;
-  if (!next) {
-    std::size_t goals = 0;
-    for (const int r : planned_) goals += sequences_[static_cast<std::size_t>(r)].size();
-    plans_.push_back({{"tick", ctx.tick()}, {"why", why}, {"robots", planned_.size()}, {"goals", goals}});
-    std::fprintf(stderr, "gcs: traffic (%s) at tick %u: %zu robots, %zu goals, windows of %d steps\n", why,
-                 ctx.tick(), planned_.size(), goals, window_);
-  }
-  send_plan(ctx, res);
-}
-
-void MapfGcsTask::window_done(GcsContext& ctx) {
-  for (std::size_t r = 0; r < sequences_.size() && r < window_goals_.size(); ++r) {
-    auto& seq = sequences_[r];
-    const auto n = std::min(seq.size(), static_cast<std::size_t>(window_goals_[r]));
-    seq.erase(seq.begin(), seq.begin() + static_cast<std::ptrdiff_t>(n));
-    goals_done_ += n;
-    goals_skipped_ += static_cast<std::uint64_t>(window_skipped_[r]);
-  }
-  window_goals_.clear();
-  window_skipped_.clear();
-  // A robot lost with goals ahead of it: the task gives its goals to the others.
-  for (int r = 0; r < ctx.setup.topology.robots(); ++r) {
-    if (!ctx.alive(r) && !sequences_[static_cast<std::size_t>(r)].empty()) {
-      plan_window(ctx, "robot lost");
-      return;
-    }
-  }
-  for (int r = 0; r < ctx.setup.topology.robots(); ++r) {
-    if (ctx.alive(r) && !sequences_[static_cast<std::size_t>(r)].empty()) {
-      plan_window(ctx, kNextWindow);
-      return;
-    }
-  }
-  complete_ = true;
-}
-
-void MapfGcsTask::restart(GcsContext& ctx, const char* why) {
-  complete_ = false;
-  plan(ctx, why);
-}
-
 void MapfGcsTask::note_plan(GcsContext& ctx, const char* why, const planner::mapf::Result& res) {
   plans_.push_back({{"tick", ctx.tick()},
                     {"why", why},
@@ -260,9 +148,9 @@ void MapfGcsTask::note_plan(GcsContext& ctx, const char* why, const planner::map
 
 void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res) {
   by_graph_ = config_.execution() != swarm::scenario::MAPF_EXECUTE_TIMED;
+  progress_.assign(res.paths.size(), 0);
   if (by_graph_) {
     adg_ = planner::mapf::dependencies(res.paths);
-    progress_.assign(res.paths.size(), 0);
     rotation_ordered_.assign(adg_.rotations.size(), false);
   }
   task::Order o;
@@ -275,7 +163,8 @@ void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res) {
     o.values.push_back(static_cast<std::int32_t>(start_tick(ctx)));
   }
   for (std::size_t k = 0; k < planned_.size(); ++k) {
-    o.routes.push_back({planned_[k], res.paths[k]});
+    o.routes.push_back({planned_[k], res.paths[k], {}, {}});
+    if (window_ > 0) add_acts(planned_[k], o.routes.back());
     ctx.record.append(route_frame(ctx.tick(), phase_, planned_[k], res.paths[k]));
   }
   ctx.out.order(o);
@@ -312,7 +201,7 @@ void MapfGcsTask::on_report(const task::Report& r, GcsContext&) {
   const auto& v = r.values;
   if (!v.empty() && static_cast<std::uint32_t>(v[0]) == seq_ && v.size() % 3 == 1) {
     relay_.insert(relay_.end(), v.begin() + 1, v.end());
-    for (std::size_t i = 1; by_graph_ && i + 2 < v.size(); i += 3) {
+    for (std::size_t i = 1; i + 2 < v.size(); i += 3) {
       const auto it = std::find(planned_.begin(), planned_.end(), v[i]);
       if (it == planned_.end()) continue;
       auto& p = progress_[static_cast<std::size_t>(it - planned_.begin())];
@@ -326,14 +215,6 @@ void MapfGcsTask::on_report(const task::Report& r, GcsContext&) {
 
 void MapfGcsTask::step(GcsContext& ctx) {
   const comm::Topology& t = ctx.setup.topology;
-  if (settling_) {
-    for (int g = 0; g < t.groups(); ++g) {
-      if (ctx.alive(ctx.leader_of(g)) && !group_held_[static_cast<std::size_t>(g)]) return;
-    }
-    settling_ = false;
-    plan(ctx, "start");
-    return;
-  }
   if (!relay_.empty()) {
     std::vector<std::int32_t> values{static_cast<std::int32_t>(seq_)};
     values.insert(values.end(), relay_.begin(), relay_.end());
@@ -367,6 +248,7 @@ void MapfGcsTask::step(GcsContext& ctx) {
     return;
   }
   if (holding_ && all_held) {
+    if (window_ > 0) credit_window(ctx);
     plan(ctx, "robot lost");
     return;
   }
@@ -384,12 +266,12 @@ ProgressLine MapfGcsTask::progress(const GcsContext&) const {
     for (const auto& seq : sequences_) left += seq.size();
     std::snprintf(detail, sizeof detail, "goals left %zu  window %llu%s", left,
                   static_cast<unsigned long long>(windows_),
-                  failed_ ? " (failed)" : holding_ ? " (holding)" : settling_ ? " (stopping the robots)" : "");
+                  failed_ ? " (failed)" : holding_ ? " (holding)" : "");
     const double total = static_cast<double>(left + goals_done_);
     return {"goals", total > 0 ? static_cast<double>(goals_done_) / total : 0.0, detail};
   }
   std::snprintf(detail, sizeof detail, "at goal %d/%zu  plan %u%s", arrived_, planned_.size(), seq_,
-                failed_ ? " (failed)" : holding_ ? " (holding)" : settling_ ? " (stopping the robots)" : "");
+                failed_ ? " (failed)" : holding_ ? " (holding)" : "");
   return {"arrived", planned_.empty() ? 0.0 : static_cast<double>(arrived_) / static_cast<double>(planned_.size()),
           detail};
 }

@@ -9,16 +9,9 @@ namespace swarm::leader {
 MapfGroupTask::MapfGroupTask(const swarm::scenario::Mapf& config, int group)
     : timed_(config.execution() == swarm::scenario::MAPF_EXECUTE_TIMED), group_(group) {}
 
-void MapfGroupTask::start(GroupContext& ctx) {
+void MapfGroupTask::start(GroupContext&) {
   have_plan_ = false;
   holding_ = false;
-  settling_.clear();
-  settled_reported_ = ctx.phase == 0;  // the first phase starts with every robot standing
-  if (settled_reported_) return;
-  for (const int i : ctx.living()) {
-    const task::Route stop;  // empty: stop where it stands
-    settling_.emplace_back(i, ctx.out.route(i, stop));
-  }
 }
 
 void MapfGroupTask::note(int k) {
@@ -46,7 +39,17 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
   const std::size_t n = paths.size();
   routes_ = timed_ ? paths : adg_.routes;
   robot_of_.clear();
-  for (const task::PlannedRoute& r : o.routes) robot_of_.push_back(r.robot);
+  picks_.assign(n, {});
+  drops_.assign(n, {});
+  for (std::size_t k = 0; k < n; ++k) {
+    const task::PlannedRoute& r = o.routes[k];
+    robot_of_.push_back(r.robot);
+    const auto to_route = [&](std::uint32_t time) {
+      return timed_ ? time : planner::mapf::step_at(adg_, static_cast<int>(k), static_cast<int>(time));
+    };
+    for (const std::uint32_t s : r.pick_steps) picks_[k].push_back(to_route(s));
+    for (const std::uint32_t s : r.drop_steps) drops_[k].push_back(to_route(s));
+  }
   index_of_.assign(n, -1);
   progress_.assign(n, 0);
   released_.assign(n, 0);
@@ -71,6 +74,8 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
     task::Route m;
     m.path = routes_[ku];
     m.release = released_[ku];
+    m.pick_steps = picks_[ku];
+    m.drop_steps = drops_[ku];
     if (timed_ && !o.values.empty()) m.start_tick = static_cast<std::uint32_t>(o.values[0]);
     route_id_[ku] = ctx.out.route(index_of_[ku], m);
     note(k);
@@ -123,11 +128,6 @@ void MapfGroupTask::stop_own_robots(GroupContext& ctx) {
 }
 
 void MapfGroupTask::on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) {
-  if (!settling_.empty()) {
-    std::erase_if(settling_, [&](const std::pair<int, std::uint32_t>& s) {
-      return s.first == index && s.second == p.id && p.state == planner::RouteState::Stopped;
-    });
-  }
   if (!have_plan_) return;
   if (!stopping_.empty() || stopped_all_) {
     std::erase_if(stopping_, [&](int k) {
@@ -172,6 +172,13 @@ void MapfGroupTask::rotate(int q, std::uint32_t tick, GroupContext& ctx) {
     r.path.assign(routes_[ku].begin() + from, routes_[ku].end());
     r.release = 1;
     r.start_tick = tick;
+    // Its acts still ahead, in steps of the new route (those at `from` are made: it stands there).
+    for (const std::uint32_t s : picks_[ku]) {
+      if (s > from) r.pick_steps.push_back(s - from);
+    }
+    for (const std::uint32_t s : drops_[ku]) {
+      if (s > from) r.drop_steps.push_back(s - from);
+    }
     base_[ku] = from;
     released_[ku] = m.step;
     route_id_[ku] = ctx.out.route(index_of_[ku], r);
@@ -185,17 +192,6 @@ void MapfGroupTask::step(GroupContext& ctx) {
     // Timed, the robots keep to the plan's timing until the GCS's hold, which reaches every leader
     // at one tick, stops them all together; by the graph they may stop at once (the others wait).
     if (have_plan_ && (!timed_ || holding_)) stop_own_robots(ctx);
-  }
-  if (!settled_reported_) {
-    // A robot lost before its stop was confirmed stands still anyway.
-    std::erase_if(settling_, [&](const std::pair<int, std::uint32_t>& s) { return !ctx.alive[static_cast<std::size_t>(s.first)]; });
-    if (settling_.empty()) {
-      task::Report r;
-      r.state = task::GroupState::Held;
-      r.values = {0};
-      ctx.out.report(r);
-      settled_reported_ = true;
-    }
   }
   if (!have_plan_) return;
   if (!stopping_.empty()) {  // a robot lost before its stop was confirmed stands still anyway
@@ -231,10 +227,7 @@ void MapfGroupTask::step(GroupContext& ctx) {
 
 void MapfGroupTask::gcs_back(GroupContext&) {
   // Every robot's progress and release, and the group's done or held, again.
-  if (!have_plan_) {
-    if (settling_.empty()) settled_reported_ = false;  // that the group stands, again
-    return;
-  }
+  if (!have_plan_) return;
   for (int k : own_) note(k);
   reported_done_ = reported_held_ = false;
 }

@@ -28,4 +28,8 @@ planner::mapf::SolverConfig mapf_solver_config(const swarm::scenario::Mapf& m, s
   return c;
 }
 
+swarm::scenario::Mapf traffic_driving(const swarm::scenario::Scenario& scenario) {
+  return resolved_mapf(swarm::scenario::Mapf(), scenario);
+}
+
 }  // namespace swarm::tasks

@@ -40,6 +40,10 @@ enum class OrderKind : std::uint8_t {
 struct PlannedRoute {
   int robot = 0;  // agent id
   std::vector<Cell> path;
+  // Indices into path at which the robot picks up the object under it / drops what it carries
+  // (as Route's).
+  std::vector<std::uint32_t> pick_steps;
+  std::vector<std::uint32_t> drop_steps;
 };
 
 // GCS -> one group's leader (or every group's): what the group is to do in a phase. A later order

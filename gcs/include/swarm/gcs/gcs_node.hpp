@@ -4,6 +4,13 @@
 // mission complete after the last, shows progress, records the run (run.pb) and, once the
 // simulator stops the run, gathers every agent's report into metrics.json.
 //
+// Phase boundaries: the next phase plans from where the robots stand, so it starts only once they
+// stand still. When a phase is done the node announces the next with `settle` (PhaseStart): each
+// leader stops its living robots and, once the simulator has confirmed every stop, reports so
+// (TaskReport Held, values [0]; leader/leader_node.hpp). When every group with a living leader
+// has, the node announces the phase again without `settle` and starts its task; the simulator
+// judges the new phase from then on, so the robots' last moves count in the phase that made them.
+//
 // Restart (issue 11): the GCS keeps what it needs to resume as the run goes: its input journal
 // (journal_path(): every clock and every message its handlers got, comm/journal.hpp) and the wall
 // time of tick 0. A process started with --resume (swarm run --kill gcs@T+S starts one S seconds
@@ -53,6 +60,9 @@ class GcsNode {
  private:
   void on_plan(const msgs::PlanReport& p);
   void record_phase(std::uint32_t tick, bool ended, bool complete);
+  // Between phases: starts phase_ once every group with a living leader has reported its robots
+  // standing (see the header).
+  void settle(GcsContext& ctx);
 
   comm::LockstepAgent& agent_;
   const app::RoleSetup& setup_;
@@ -66,7 +76,9 @@ class GcsNode {
   std::vector<std::uint32_t> phase_ends_;
   GcsOutlets outlets_;
   app::EncodedMapCache order_map_;  // the known map the last order carried, encoded
-  std::function<void(std::uint32_t, const std::string&)> announce_phase_;
+  std::function<void(std::uint32_t, const std::string&, bool settle)> announce_phase_;
+  bool settling_ = false;       // phase_ waits for its robots to stand still
+  std::vector<bool> settled_;   // per group, while settling: its robots stand
   std::vector<msgs::GroupStatus> statuses_;
   std::vector<msgs::TaskReport> task_reports_;
   Progress progress_;

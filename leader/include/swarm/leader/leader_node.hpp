@@ -8,11 +8,17 @@
 // a standby shadows (keeps the group map from what it hears, and the GCS's latest phase, round and
 // orders) until the clock names it leader, then takes over: its own map joins the group map, and
 // the current phase's task starts afresh from the GCS's order (candidate_node.hpp drives this).
+//
+// Between phases (PhaseStart.settle, gcs/gcs_node.hpp) the node, not a task, stops each living
+// robot of the group where it stands (an empty route), and once the simulator has confirmed
+// every stop, reports the group standing to the GCS (TaskReport Held, values [0]); the next
+// phase's task starts when the GCS announces the phase without `settle`.
 #pragma once
 
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "swarm/comm/lockstep.hpp"
@@ -45,6 +51,9 @@ class LeaderNode {
   void track_members(const msgs::Clock& clock, GroupContext& ctx);
   void dispatch(GroupContext& ctx);
   void enter_phase();  // a PhaseStart that came makes its phase current
+  // Between phases: stops the group's robots and reports them standing (see the header).
+  void settle(GroupContext& ctx);
+  void stopped(int index, const planner::RouteProgress& p);  // a robot's progress while settling
 
   comm::LockstepAgent& agent_;
   const app::RoleSetup& setup_;
@@ -66,7 +75,17 @@ class LeaderNode {
   bool taking_over_ = false;      // the next start() is a take-over's (GroupTask::took_over)
   std::uint32_t gcs_back_at_ = 0;  // the GCS's latest restart seen (Clock.counted_from)
   std::optional<std::vector<std::uint32_t>> own_carrying_;  // what the own robot held, as last told the task
-  std::optional<std::uint32_t> next_phase_;
+  struct PhaseCall {
+    std::uint32_t phase = 0;
+    bool settle = false;
+  };
+  std::optional<PhaseCall> next_phase_;
+  // Settling: whether the stops were sent, (group index, stop's route id) of the robots whose stop
+  // is not yet confirmed, and whether the GCS has been told the group stands.
+  bool settling_ = false;
+  bool stops_sent_ = false;
+  std::vector<std::pair<int, std::uint32_t>> stopping_;
+  bool settle_reported_ = false;
   std::optional<std::uint32_t> round_;
   std::uint32_t last_round_ = 0;
   std::vector<msgs::TaskOrder> orders_;

@@ -78,4 +78,8 @@ enum class Rotations { Together, Held };
 // with every need of every step met: the ones that may go now, in index order.
 [[nodiscard]] std::vector<int> ready_rotations(const Dependencies& adg, const std::vector<std::uint32_t>& progress);
 
+// The route step robot `robot` stands on at the plan's time step `time` (the last step entered by
+// then): what happens at a time of the timed plan happens at this step of the route.
+[[nodiscard]] std::uint32_t step_at(const Dependencies& adg, int robot, int time);
+
 }  // namespace swarm::planner::mapf

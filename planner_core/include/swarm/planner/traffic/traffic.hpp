@@ -55,6 +55,9 @@ struct Window {
   std::vector<std::vector<Cell>> paths;  // per agent: steps + 1 cells, paths[a][0] == agents[a].at
   std::vector<int> done;                 // per agent: how many of its goals, in order, are behind it
   std::vector<std::vector<int>> skipped; // per agent: indices of the goals it could not reach
+  // per agent, per goal behind it (done of them, in order): the index into its path at which it
+  // stood on that goal, -1 for one skipped (a fixed agent's goals are all skipped)
+  std::vector<std::vector<int>> reached_at;
   std::vector<int> waiting;              // per agent, at the window's end: steps in a row it had a
                                          // goal and got no closer to it
 };

@@ -14,25 +14,42 @@
 // group is not done, the GCS waits until every report the old leader sent has arrived (the
 // leader<->GCS delay and jitter) and sends the group Resume order with a new seq: its objects not
 // reported delivered, each with what was last reported (values = [object, what, a, b, ...]).
+//
+// Through the traffic layer (Collect.traffic, docs/traffic.md) the GCS plans every robot's tour
+// itself and drives them as cover does: each robot's tour stops (pick-ups and drops) go to a
+// lifelong MapfGcsTask, whose conflict-free windows the leaders drive as mapf plans
+// (tasks/mapf/mapf_leader.hpp), each pick-up and drop at the step the robot stands on its cell.
+// The objects go to the living robots of led groups (each to the nearest with room left); what a
+// robot carries stays with it. The GCS follows each object from the stops behind the robots
+// (a pick-up takes every object lying on the cell, a drop leaves all the robot carries there:
+// the simulator's rule), and when a robot is lost, what it carried lies beside it
+// (planner::put_down_cell, as the simulator puts it) and goes to the others with a new tour each.
+// Tours done and objects left (a stop skipped): new tours, as long as the last ones delivered.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "swarm/config/task_config.hpp"
 #include "swarm/tasks/collect/collect_world.hpp"
 #include "swarm/gcs/gcs_task.hpp"
+#include "swarm/tasks/mapf/mapf_gcs.hpp"
 
 namespace swarm::gcs {
 
 class CollectGcsTask : public GcsTask {
  public:
-  CollectGcsTask(const swarm::scenario::Collect& config, std::uint32_t phase);
+  // `paths`: how the leaders drive the traffic layer's windows (with Collect.traffic).
+  CollectGcsTask(const swarm::scenario::Collect& config, const swarm::scenario::Mapf& paths, std::uint32_t phase,
+                 bool map_given);
   void start(GcsContext& ctx) override;
   void step(GcsContext& ctx) override;
   [[nodiscard]] bool complete() const override { return complete_; }
+  [[nodiscard]] std::string given_up() const override;
   [[nodiscard]] ProgressLine progress(const GcsContext& ctx) const override;
   void on_report(const task::Report& r, GcsContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
@@ -52,6 +69,17 @@ class CollectGcsTask : public GcsTask {
   bool complete_ = false;
   void send_resume(int group, GcsContext& ctx);
   [[nodiscard]] int delivered_known() const;
+
+  // Through the traffic layer: the robots' tours as stops, from where they stand (MapfGcsTask's
+  // RoutePicker); and what a stop behind a robot did to the objects (its StopDone).
+  std::vector<std::vector<MapfGcsTask::Stop>> tours(const GcsContext& ctx, const planner::OccupancyGrid& map,
+                                                    const std::vector<int>& robots);
+  void stop_done(int robot, const MapfGcsTask::Stop& stop, bool reached);
+  void drive(GcsContext& ctx);
+  std::unique_ptr<MapfGcsTask> drive_;
+  int delivered_at_tours_ = 0;  // delivered when the current tours were planned
+  std::uint64_t tour_plans_ = 0;
+  std::string gave_up_;
 };
 
 }  // namespace swarm::gcs

@@ -27,9 +27,8 @@
 //     early would run into one that has not left. The GCS knows every robot's progress (the
 //     leaders' reports), so it names the rotations that may go, with a start tick late enough for
 //     the order to reach every leader and its route every member (configured delays and jitter).
-// A phase after another starts with the leaders stopping every robot (the last phase's routes may
-// still be driving): a Report Held with values = [0] says a group's robots all stand, and the
-// first plan is made from where they stand once every group with a living leader has said so.
+// The first plan is made at the phase's start, from where the robots stand (a phase after another
+// starts once they all stand still: gcs/gcs_node.hpp).
 // A planned robot lost midway, or a group's leader replaced by its standby: the GCS holds the
 // plan, waits until every group reports its robots still, and plans again from where the living
 // robots stand (seq s + 1).
@@ -61,18 +60,30 @@ class MapfGcsTask : public GcsTask {
 
   MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, GoalPicker goals = {});
 
-  // Lifelong, the traffic layer (docs/traffic.md): each robot takes a sequence of goals (a coverage
-  // route, a tour's stops) and the robots are driven in windows of `window` steps that the traffic
-  // planner makes (planner/traffic/traffic.hpp: no conflict, dead robots planned around), each sent
-  // as a plan and driven as one once every group has finished the last. The picker gives every
-  // robot id its sequence (empty: none; such a robot may still be pushed aside) at the phase's
-  // start, after a loss (the living robots it is given), and at restart(); `why` says which.
-  // Complete when every sequence is done; given up after a run of windows in which no robot moved
-  // or reached a goal.
-  using RoutePicker = std::function<std::vector<std::vector<planner::Cell>>(
+  // Lifelong, the traffic layer (docs/traffic.md): each robot takes a sequence of stops (a coverage
+  // route's cells, a tour's pick-ups and drops) and the robots are driven in windows of `window`
+  // steps that the traffic planner makes (planner/traffic/traffic.hpp: no conflict, dead robots
+  // planned around), each sent as a plan and driven as one once every group has finished the
+  // last. A stop's act goes with the window's route as a pick-up or drop step at the time the
+  // robot stands on it. The picker gives every robot id its sequence (empty: none; such a robot
+  // may still be pushed aside) at the phase's start, after a loss (the living robots it is
+  // given), and at restart(); `why` says which. Every stop behind a robot is handed to `done`
+  // once known: at the end of its window, or, for a window cut short by a loss, as far as each
+  // robot's reported progress goes. Complete when every sequence is done; given up after a run of
+  // windows in which no robot moved or reached a goal.
+  struct Stop {
+    enum class Act : std::uint8_t { kNone, kPick, kDrop };
+    planner::Cell cell;
+    Act act = Act::kNone;
+  };
+  using RoutePicker = std::function<std::vector<std::vector<Stop>>(
       const GcsContext& ctx, const planner::OccupancyGrid& map, const std::vector<int>& robots, const char* why)>;
+  // Every route's cells as stops without an act.
+  [[nodiscard]] static std::vector<std::vector<Stop>> passing(const std::vector<std::vector<planner::Cell>>& routes);
+  // Robot `robot` is past `stop`: it stood on it (`reached`), or the stop was skipped as unreachable.
+  using StopDone = std::function<void(int robot, const Stop& stop, bool reached)>;
   MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, RoutePicker routes,
-              int window);
+              int window, StopDone done = {});
   // Lifelong, once complete: asks the picker for new sequences and drives them.
   void restart(GcsContext& ctx, const char* why);
   void start(GcsContext& ctx) override;
@@ -98,6 +109,11 @@ class MapfGcsTask : public GcsTask {
   // Lifelong, when every group has finished a window: the goals it reached are done; plans the
   // next one, or completes.
   void window_done(GcsContext& ctx);
+  // Lifelong: the stops behind each planned robot leave its sequence (and go to stop_done_), as
+  // far as its reported progress goes, or for a lost robot, as far as the cell it stopped on.
+  void credit_window(const GcsContext& ctx);
+  // Lifelong: robot `robot`'s pick-ups and drops in the current window, on its planned route.
+  void add_acts(int robot, task::PlannedRoute& route) const;
   // A new plan's bookkeeping: its number, and which groups are in it under which leaders.
   void begin_plan(const GcsContext& ctx);
   void note_plan(GcsContext& ctx, const char* why, const planner::mapf::Result& res);  // metrics + log
@@ -120,7 +136,6 @@ class MapfGcsTask : public GcsTask {
   std::vector<bool> group_in_plan_, group_done_, group_held_;
   std::uint32_t seq_ = 0;
   bool holding_ = false;
-  bool settling_ = false;  // waiting for every group's robots to stand before the first plan
   bool failed_ = false;  // the last plan could not be made: nothing to drive
   std::string failure_;  // why
   std::vector<int> plan_leaders_;  // per group: its leader when the current plan was made
@@ -132,7 +147,7 @@ class MapfGcsTask : public GcsTask {
   // rotations were ordered.
   bool by_graph_ = false;
   planner::mapf::Dependencies adg_;
-  std::vector<std::uint32_t> progress_;  // per plan index
+  std::vector<std::uint32_t> progress_;  // per plan index: the route step it was last reported at
   std::vector<bool> rotation_ordered_;
   std::uint32_t rotations_ordered_ = 0;
   planner::mapf::Result first_;      // the first plan's numbers (after any fallback)
@@ -141,10 +156,13 @@ class MapfGcsTask : public GcsTask {
 
   // Lifelong (window_ > 0).
   RoutePicker pick_routes_;
+  StopDone stop_done_;
   int window_ = 0;
-  std::vector<std::vector<planner::Cell>> sequences_;  // per robot id: the goals still ahead
-  std::vector<int> window_goals_;                      // per robot id: goals the current window reaches
-  std::vector<int> window_skipped_;                    // per robot id: of those, skipped as unreachable
+  std::vector<std::vector<Stop>> sequences_;    // per robot id: the stops still ahead
+  // per robot id: for each stop the current window gets it past, the window's time step at which
+  // it stands on it (-1: skipped as unreachable)
+  std::vector<std::vector<int>> window_reached_;
+  std::vector<planner::mapf::Path> window_paths_;  // per plan index: the current window's
   std::unique_ptr<planner::traffic::Planner> traffic_;
   std::uint64_t windows_ = 0;
   std::uint64_t goals_done_ = 0;

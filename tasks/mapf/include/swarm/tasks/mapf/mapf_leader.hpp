@@ -20,6 +20,8 @@
 // simulator confirms as Stopped; timed, at the GCS's hold, with every other group) and reports
 // Held once all have stopped; the GCS, which holds a plan whose group changed leader, then plans
 // again from where every robot stands.
+// A planned route's pick-up and drop steps (the traffic layer's collect stops) go with the route
+// its robot drives, moved to the step the robot stands on at that time of the plan.
 #pragma once
 
 #include <cstdint>
@@ -57,6 +59,9 @@ class MapfGroupTask : public GroupTask {
   bool holding_ = false;
   planner::mapf::Dependencies adg_;
   std::vector<std::vector<planner::Cell>> routes_;  // per plan index: what the robot drives
+  // per plan index: the steps of its route at which the robot picks up / drops (the planned
+  // route's, in steps of what it drives)
+  std::vector<std::vector<std::uint32_t>> picks_, drops_;
   std::vector<int> robot_of_;                 // plan index -> robot id
   std::vector<int> index_of_;                 // plan index -> group index (-1: another group's)
   std::vector<std::uint32_t> progress_;       // per plan index: the route step it is known at
@@ -76,11 +81,6 @@ class MapfGroupTask : public GroupTask {
   void stop_own_robots(GroupContext& ctx);
   bool reported_done_ = false;
   bool reported_held_ = false;
-  // Settling (a phase after another, whose routes may still be driving): every living robot of the
-  // group is stopped where it stands before the GCS plans; (group index, stop's route id) of those
-  // not yet confirmed, and whether the GCS has been told they all stand (Held, of plan 0).
-  std::vector<std::pair<int, std::uint32_t>> settling_;
-  bool settled_reported_ = true;
   std::uint64_t releases_sent_ = 0;
   std::uint64_t plans_taken_ = 0;
 };

@@ -17,6 +17,10 @@ namespace swarm::tasks {
 [[nodiscard]] swarm::scenario::Mapf resolved_mapf(const swarm::scenario::Mapf& mapf,
                                                   const swarm::scenario::Scenario& scenario);
 
+// How the leaders drive the traffic layer's windows (cover and collect with `traffic`): as a mapf
+// phase's plans with the default settings, resolved for this scenario.
+[[nodiscard]] swarm::scenario::Mapf traffic_driving(const swarm::scenario::Scenario& scenario);
+
 // The MAPF solver of a mapf phase (ECBS with its w by default).
 [[nodiscard]] planner::mapf::SolverConfig mapf_solver_config(const swarm::scenario::Mapf& mapf, std::uint64_t seed);
 

@@ -1,0 +1,178 @@
+// MapfGcsTask's lifelong mode, the traffic layer (tasks/mapf/mapf_gcs.hpp, docs/traffic.md):
+// windows of the traffic planner, driven as plans, and the stops they get each robot past.
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <utility>
+
+#include "swarm/config/task_config.hpp"
+#include "swarm/planner/grid/rng.hpp"
+#include "swarm/tasks/mapf/mapf_gcs.hpp"
+
+namespace swarm::gcs {
+
+namespace {
+// Windows in a row in which no robot reached a goal or moved before a lifelong phase is given up.
+constexpr int kIdleWindowsLimit = 8;
+constexpr const char* kNextWindow = "window";
+}  // namespace
+
+MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, RoutePicker routes,
+                         int window, StopDone done)
+    : config_(config),
+      phase_(phase),
+      map_given_(map_given),
+      pick_routes_(std::move(routes)),
+      stop_done_(std::move(done)),
+      window_(window) {}
+
+std::vector<std::vector<MapfGcsTask::Stop>> MapfGcsTask::passing(const std::vector<std::vector<planner::Cell>>& routes) {
+  std::vector<std::vector<Stop>> out(routes.size());
+  for (std::size_t r = 0; r < routes.size(); ++r) {
+    for (const planner::Cell c : routes[r]) out[r].push_back({c, Stop::Act::kNone});
+  }
+  return out;
+}
+
+void MapfGcsTask::plan_window(GcsContext& ctx, const char* why) {
+  const comm::Topology& t = ctx.setup.topology;
+  const bool next = std::string(why) == kNextWindow;
+  // Everyone but the living robots of led groups stands where it is: an obstacle to plan round.
+  std::vector<int> may_move;
+  for (int r = 0; r < t.robots(); ++r) {
+    if (ctx.alive(r) && ctx.alive(ctx.leader_of(t.group_of(static_cast<comm::AgentId>(r))))) may_move.push_back(r);
+  }
+  if (!next) {
+    sequences_ = pick_routes_(ctx, known_, may_move, why);
+    sequences_.resize(static_cast<std::size_t>(t.robots()));
+  }
+  if (!traffic_) {
+    // The robots stand on free cells whatever the known map says of them (a fused map may not
+    // have seen a cell under a robot).
+    planner::OccupancyGrid map = known_;
+    for (int r = 0; r < t.robots(); ++r) map.set(ctx.cell_of(r), planner::CellState::Free);
+    traffic_ = std::make_unique<planner::traffic::Planner>(
+        std::move(map), planner::MotionModel::four(),
+        planner::traffic::Config{planner::mix_seed({ctx.setup.world.scenario.seed(), 9100 + phase_})});
+  }
+  std::vector<planner::traffic::Agent> agents(static_cast<std::size_t>(t.robots()));
+  for (int r = 0; r < t.robots(); ++r) {
+    agents[static_cast<std::size_t>(r)].at = ctx.cell_of(r);
+    agents[static_cast<std::size_t>(r)].fixed = true;
+  }
+  for (const int r : may_move) {
+    auto& agent = agents[static_cast<std::size_t>(r)];
+    agent.fixed = false;
+    for (const Stop& s : sequences_[static_cast<std::size_t>(r)]) agent.goals.push_back(s.cell);
+  }
+  planner::traffic::Window w;
+  try {
+    w = traffic_->plan(agents, window_);
+  } catch (const std::invalid_argument& e) {
+    failed_ = true;
+    failure_ = std::string("no traffic window (") + why + "): " + e.what();
+    return;
+  }
+  planned_ = may_move;
+  begin_plan(ctx);
+  planner::mapf::Result res;
+  res.status = planner::mapf::Status::Solved;
+  window_reached_.assign(static_cast<std::size_t>(t.robots()), {});
+  bool moved = false;
+  int reached = 0;
+  for (const int r : planned_) {
+    const auto ur = static_cast<std::size_t>(r);
+    res.paths.push_back(w.paths[ur]);
+    goals_[ur] = w.paths[ur].back();
+    window_reached_[ur] = w.reached_at[ur];
+    reached += w.done[ur];
+    moved = moved || w.paths[ur].back() != w.paths[ur].front();
+  }
+  window_paths_ = res.paths;
+  idle_windows_ = moved || reached > 0 ? 0 : idle_windows_ + 1;
+  if (idle_windows_ >= kIdleWindowsLimit) {
+    failed_ = true;
+    failure_ = "traffic: no robot moved or reached a goal in " + std::to_string(kIdleWindowsLimit) + " windows";
+    return;
+  }
+  ++windows_;
+  if (!next) {
+    std::size_t goals = 0;
+    for (const int r : planned_) goals += sequences_[static_cast<std::size_t>(r)].size();
+    plans_.push_back({{"tick", ctx.tick()}, {"why", why}, {"robots", planned_.size()}, {"goals", goals}});
+    std::fprintf(stderr, "gcs: traffic (%s) at tick %u: %zu robots, %zu goals, windows of %d steps\n", why,
+                 ctx.tick(), planned_.size(), goals, window_);
+  }
+  send_plan(ctx, res);
+}
+
+void MapfGcsTask::add_acts(int robot, task::PlannedRoute& route) const {
+  const auto ur = static_cast<std::size_t>(robot);
+  const auto& seq = sequences_[ur];
+  const auto& at = window_reached_[ur];
+  for (std::size_t g = 0; g < at.size() && g < seq.size(); ++g) {
+    if (at[g] < 0) continue;
+    if (seq[g].act == Stop::Act::kPick) route.pick_steps.push_back(static_cast<std::uint32_t>(at[g]));
+    if (seq[g].act == Stop::Act::kDrop) route.drop_steps.push_back(static_cast<std::uint32_t>(at[g]));
+  }
+}
+
+void MapfGcsTask::credit_window(const GcsContext& ctx) {
+  for (std::size_t k = 0; k < planned_.size() && k < progress_.size(); ++k) {
+    const auto ur = static_cast<std::size_t>(planned_[k]);
+    if (ur >= window_reached_.size()) continue;
+    auto& seq = sequences_[ur];
+    const auto& at = window_reached_[ur];
+    std::uint32_t progress = progress_[k];
+    if (!ctx.alive(planned_[k])) {
+      // Lost: its last report may be behind; where it stopped says how far it got.
+      const auto& route = by_graph_ ? adg_.routes[k] : window_paths_[k];
+      for (std::size_t s = progress; s < route.size(); ++s) {
+        if (route[s] == ctx.cell_of(planned_[k])) {
+          progress = static_cast<std::uint32_t>(s);
+          break;
+        }
+      }
+    }
+    // A stop is behind the robot once it has driven to the window's time of standing on it; a
+    // skipped stop, once the stops before it are.
+    std::size_t n = 0;
+    for (; n < at.size() && n < seq.size(); ++n) {
+      if (at[n] < 0) continue;
+      const std::uint32_t step = by_graph_ ? planner::mapf::step_at(adg_, static_cast<int>(k), at[n])
+                                           : static_cast<std::uint32_t>(at[n]);
+      if (step > progress) break;
+    }
+    for (std::size_t g = 0; g < n; ++g) {
+      ++(at[g] < 0 ? goals_skipped_ : goals_done_);
+      if (stop_done_) stop_done_(planned_[k], seq[g], at[g] >= 0);
+    }
+    seq.erase(seq.begin(), seq.begin() + static_cast<std::ptrdiff_t>(n));
+  }
+  window_reached_.clear();
+}
+
+void MapfGcsTask::window_done(GcsContext& ctx) {
+  credit_window(ctx);
+  // A robot lost with stops ahead of it: the task gives them to the others.
+  for (int r = 0; r < ctx.setup.topology.robots(); ++r) {
+    if (!ctx.alive(r) && !sequences_[static_cast<std::size_t>(r)].empty()) {
+      plan_window(ctx, "robot lost");
+      return;
+    }
+  }
+  for (int r = 0; r < ctx.setup.topology.robots(); ++r) {
+    if (ctx.alive(r) && !sequences_[static_cast<std::size_t>(r)].empty()) {
+      plan_window(ctx, kNextWindow);
+      return;
+    }
+  }
+  complete_ = true;
+}
+
+void MapfGcsTask::restart(GcsContext& ctx, const char* why) {
+  complete_ = false;
+  plan(ctx, why);
+}
+
+}  // namespace swarm::gcs
