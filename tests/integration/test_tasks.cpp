@@ -73,13 +73,13 @@ TEST(Tasks, ExploreThenCoverReachesEveryReachableCell) {
   EXPECT_GT(start, phase_named(m, "explore")["end_tick"].get<std::uint32_t>());
 }
 
-// A member and, in the other group, the leader are killed mid-coverage: group 0's leader divides
+// The classic drive (traffic: false). A member and, in the other group, the leader are killed
+// mid-coverage: group 0's leader divides
 // its share again among the living; group 1's standby takes the group over and starts its share
 // afresh from the GCS's order. Every cell is still covered.
 TEST(Tasks, CoverWithAMemberAndALeaderKilledMidwayStillCoversEverything) {
-  const auto m = run_task("cover_kill", "small.pbtxt", "",
-                          "--mission cover --groups 2 --robots-per-group 3 --max-ticks 3000 --kill member-0-2@40 "
-                          "--kill leader-1@60");
+  const auto m = run_task("cover_kill", "small.pbtxt", "mission { phase { cover { traffic: false } } }",
+                          "--groups 2 --robots-per-group 3 --max-ticks 3000 --kill member-0-2@40 --kill leader-1@60");
   EXPECT_DOUBLE_EQ(phase_named(m, "cover")["task"]["covered_fraction"].get<double>(), 1.0);
   const auto& divisions = m["agents"]["leader-0"]["phases"][0]["numbers"]["divisions"];
   ASSERT_EQ(divisions.size(), 2u) << divisions;
@@ -115,20 +115,21 @@ TEST(Tasks, CoverThroughTheTrafficLayerUnderDelayAndJitterHasNoConflict) {
   EXPECT_EQ(cover["task"]["traffic"]["execution"], "MAPF_EXECUTE_ADG");
 }
 
-// Collect through the traffic layer over DDS, with link delay and jitter and a member killed
-// while it carries objects: what it held is put down beside it and delivered by the others, and
-// no robot ever meets another.
-TEST(Tasks, CollectThroughTheTrafficLayerWithAMemberKilledDeliversEverythingWithoutAConflict) {
+// Collect through the traffic layer over DDS, with link delay and jitter, a member killed while it
+// carries objects and then the other group's leader: what the member held is put down beside it
+// and delivered by the others, the standby takes its group over, and no robot ever meets another.
+TEST(Tasks, CollectThroughTheTrafficLayerWithAMemberAndALeaderKilledDeliversEverythingWithoutAConflict) {
   const auto m = run_task("collect_traffic", "small.pbtxt",
                           "links { member_leader { delay_ticks: 3 jitter_ticks: 2 } leader_gcs { delay_ticks: 2 } } "
                           "mission { phase { collect { traffic: true } } }",
-                          "--groups 2 --robots-per-group 3 --max-ticks 3000 --kill member-0-2@40");
+                          "--groups 2 --robots-per-group 3 --max-ticks 3000 --kill member-0-2@40 --kill leader-1@90");
   const auto& p = phase_named(m, "collect");
   EXPECT_EQ(p["task"]["delivered"], p["task"]["objects"]);
   EXPECT_EQ(p["task"]["reported_delivered"], p["task"]["objects"]);
   EXPECT_EQ(p["task"]["wrong_drops"], 0);
   swarm::test::expect_no_conflict(p);
-  EXPECT_GE(p["task"]["tour_plans"].get<int>(), 2);  // again after the loss
+  EXPECT_GE(p["task"]["tour_plans"].get<int>(), 3);  // again after each loss
+  ASSERT_EQ(m["faults"]["leader_handovers"].size(), 1u) << m["faults"];
 }
 
 TEST(Tasks, CoverInGroupKOrderReachesEveryReachableCell) {
@@ -245,10 +246,11 @@ TEST(Tasks, RendezvousWithARobotLostOnTheWayGathersTheOthers) {
   EXPECT_EQ(p["task"]["conflicts"], 0);
 }
 
-// A leader killed mid-collection: its standby resumes the group from the GCS's record of what the
+// The classic drive (traffic: false). A leader killed mid-collection: its standby resumes the group from the GCS's record of what the
 // old leader reported and from what the members hold; the simulator counts every object delivered.
 TEST(Tasks, CollectWithALeaderKilledMidwayStillDeliversEveryObject) {
-  const auto m = run_task("collect_kill_leader", "small.pbtxt", "", "--mission collect --kill leader-1@30 --max-ticks 3000");
+  const auto m = run_task("collect_kill_leader", "small.pbtxt", "mission { phase { collect { traffic: false } } }",
+                          "--kill leader-1@30 --max-ticks 3000");
   const auto& h = m["faults"]["leader_handovers"];
   ASSERT_EQ(h.size(), 1u) << h;
   EXPECT_EQ(h[0]["to"], "member-1-1");

@@ -33,7 +33,7 @@ TEST(CollectTask, EveryObjectReachesItsDestination) {
 
 TEST(CollectTask, ALostMembersObjectsAreTakenOnByTheOthers) {
   auto setup = swarm::test::setup_from_text(
-      "map: 'small' groups: 1 robots_per_group: 3 max_ticks: 4000 mission { phase { collect { scatter: 4 } } }");
+      "map: 'small' groups: 1 robots_per_group: 3 max_ticks: 4000 mission { phase { collect { scatter: 4 traffic: false } } }");
   swarm::test::FakeSwarm s(setup);
   // Lost at tick 25, carrying objects. (Lost at tick 40 it stops on the drop point of type 1, and
   // no robot can deliver there any more: the phase does not end. A known limit, see README.)
@@ -60,7 +60,7 @@ TEST(CollectTask, ALostLeadersGroupIsResumedByItsStandbyAndEveryObjectIsDelivere
     for (const std::uint32_t at : {20u, 30u}) {
       SCOPED_TRACE(links + "lost at " + std::to_string(at));
       auto setup = swarm::test::setup_from_text("map: 'small' groups: 2 robots_per_group: 3 max_ticks: 4000 " + links +
-                                                "mission { phase { collect {} } }");
+                                                "mission { phase { collect { traffic: false } } }");
       swarm::test::FakeSwarm s(setup);
       const auto m = s.run_to_end([&](std::uint32_t tick) {
         if (tick == at) s.disconnect(setup.topology.leader(1));
@@ -88,7 +88,7 @@ TEST(CollectTask, ALostLeadersGroupIsResumedByItsStandbyAndEveryObjectIsDelivere
 // simulator judged, 14 as the GCS knew, run to max_ticks).
 TEST(CollectTask, AMemberLostAsItPicksUpStillHasItsLoadCollected) {
   auto setup = swarm::test::setup_from_text(
-      "map: 'small' max_ticks: 1500 mission { phase { explore {} } phase { collect {} } }");
+      "map: 'small' max_ticks: 1500 mission { phase { explore {} } phase { collect { traffic: false } } }");
   swarm::test::FakeSwarm s(setup);
   const auto m = s.run_to_end([&](std::uint32_t tick) {
     if (tick == 130) s.disconnect(setup.topology.robot(0, 2));

@@ -15,7 +15,7 @@ using swarm::test::phase_named;
 
 TEST(CoverTask, GivenTheMapTwoGroupsCoverEveryReachableCell) {
   swarm::test::FakeSwarm s(swarm::test::setup_from_text(
-      "map: 'small' groups: 2 robots_per_group: 2 max_ticks: 2000 mission { phase { cover {} } }"));
+      "map: 'small' groups: 2 robots_per_group: 2 max_ticks: 2000 mission { phase { cover { traffic: false } } }"));
   const auto m = s.run_to_end();
   ASSERT_TRUE(m["complete"].get<bool>());
   const auto& cover = phase_named(m, "cover");
@@ -54,7 +54,7 @@ TEST(CoverTask, TheFlatVariantCoversToo) {
 
 TEST(CoverTask, AMemberLostMidwayIsCoveredForByTheOthers) {
   auto setup = swarm::test::setup_from_text(
-      "map: 'small' groups: 1 robots_per_group: 3 max_ticks: 3000 mission { phase { cover {} } }");
+      "map: 'small' groups: 1 robots_per_group: 3 max_ticks: 3000 mission { phase { cover { traffic: false } } }");
   swarm::test::FakeSwarm s(setup);
   const auto m = s.run_to_end([&](std::uint32_t tick) {
     if (tick == 60) s.disconnect(setup.topology.robot(0, 2));

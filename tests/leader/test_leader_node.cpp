@@ -210,7 +210,7 @@ TEST(LeaderNode, DropsMalformedMessagesAndGoesOn) {
   sc.set_groups(1);
   sc.set_robots_per_group(2);
   sc.set_max_ticks(40);
-  sc.mutable_mission()->add_phase()->mutable_cover();
+  sc.mutable_mission()->add_phase()->mutable_cover()->set_traffic(false);  // a leader that divides
   auto setup = swarm::test::setup_for(truth, {3, 3}, sc);
   const comm::Topology& t = setup.topology;
   swarm::test::FakeSwarm s(setup, {t.gcs()});

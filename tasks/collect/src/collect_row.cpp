@@ -60,13 +60,13 @@ TaskRow collect_row() {
   row.phase_case = Phase::kCollect;
   row.motion = planner::MotionModel::eight();  // the tour paper's robots turn in eighths
   row.gcs = [](const Phase& phase, const app::RoleSetup& setup, std::uint32_t index) {
-    return std::make_unique<gcs::CollectGcsTask>(phase.collect(), traffic_driving(setup.world.scenario), index,
+    return std::make_unique<gcs::CollectGcsTask>(phase.collect(), traffic_driving(), index,
                                                  config::map_given(setup.world.scenario, index));
   };
   row.leader = [](const Phase& phase, const app::RoleSetup& setup, int group,
                   std::uint32_t index) -> std::unique_ptr<leader::GroupTask> {
     // Through the traffic layer the leaders drive windows as they drive mapf plans.
-    if (phase.collect().traffic()) return std::make_unique<leader::MapfGroupTask>(traffic_driving(setup.world.scenario), group);
+    if (phase.collect().traffic()) return std::make_unique<leader::MapfGroupTask>(traffic_driving(), group);
     return std::make_unique<leader::CollectGroupTask>(phase.collect(), setup, group, index);
   };
   row.judge = [](const Phase&, const app::RoleSetup& setup, std::uint32_t index) {

@@ -20,12 +20,11 @@ CoverGcsTask::CoverGcsTask(const swarm::scenario::Cover& config, const swarm::sc
                            std::uint32_t phase, bool map_given)
     : config_(config), phase_(phase), map_given_(map_given) {
   if (config_.traffic()) {
-    drive_ = std::make_unique<MapfGcsTask>(
-        paths, phase, map_given,
-        [this](const GcsContext& ctx, const planner::OccupancyGrid&, const std::vector<int>& robots, const char* why) {
-          return MapfGcsTask::passing(divide(ctx, tracker_.uncovered(), why, &robots));
-        },
-        static_cast<int>(config_.traffic_window_steps()));
+    MapfGcsTask::Lifelong drive;
+    drive.routes = [this](const GcsContext& ctx, const planner::OccupancyGrid&, const std::vector<int>& robots,
+                          const char* why) { return MapfGcsTask::passing(divide(ctx, tracker_.uncovered(), why, &robots)); };
+    drive.window = static_cast<int>(config_.traffic_window_steps());
+    drive_ = std::make_unique<MapfGcsTask>(paths, phase, map_given, std::move(drive));
   }
 }
 

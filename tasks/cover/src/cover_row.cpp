@@ -47,13 +47,13 @@ TaskRow cover_row() {
   row.phase_case = Phase::kCover;
   row.motion = planner::MotionModel::four();  // DARP and STC plan on the 4-connected grid
   row.gcs = [](const Phase& phase, const app::RoleSetup& setup, std::uint32_t index) {
-    return std::make_unique<gcs::CoverGcsTask>(phase.cover(), traffic_driving(setup.world.scenario), index,
+    return std::make_unique<gcs::CoverGcsTask>(phase.cover(), traffic_driving(), index,
                                                config::map_given(setup.world.scenario, index));
   };
   row.leader = [](const Phase& phase, const app::RoleSetup& setup, int group,
                   std::uint32_t) -> std::unique_ptr<leader::GroupTask> {
     // Through the traffic layer the leaders drive windows as they drive mapf plans.
-    if (phase.cover().traffic()) return std::make_unique<leader::MapfGroupTask>(traffic_driving(setup.world.scenario), group);
+    if (phase.cover().traffic()) return std::make_unique<leader::MapfGroupTask>(traffic_driving(), group);
     return std::make_unique<leader::CoverGroupTask>(phase.cover(), setup, group);
   };
   row.judge = [](const Phase&, const app::RoleSetup&, std::uint32_t) { return std::make_unique<CoverJudge>(); };

@@ -28,8 +28,10 @@ planner::mapf::SolverConfig mapf_solver_config(const swarm::scenario::Mapf& m, s
   return c;
 }
 
-swarm::scenario::Mapf traffic_driving(const swarm::scenario::Scenario& scenario) {
-  return resolved_mapf(swarm::scenario::Mapf(), scenario);
+swarm::scenario::Mapf traffic_driving() {
+  swarm::scenario::Mapf m;
+  m.set_execution(swarm::scenario::MAPF_EXECUTE_ADG);
+  return m;
 }
 
 }  // namespace swarm::tasks

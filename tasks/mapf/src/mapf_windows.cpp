@@ -17,14 +17,14 @@ constexpr int kIdleWindowsLimit = 8;
 constexpr const char* kNextWindow = "window";
 }  // namespace
 
-MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, RoutePicker routes,
-                         int window, StopDone done)
+MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, Lifelong lifelong)
     : config_(config),
       phase_(phase),
       map_given_(map_given),
-      pick_routes_(std::move(routes)),
-      stop_done_(std::move(done)),
-      window_(window) {}
+      pick_routes_(std::move(lifelong.routes)),
+      stop_done_(std::move(lifelong.done)),
+      window_(lifelong.window),
+      motion_(lifelong.motion) {}
 
 std::vector<std::vector<MapfGcsTask::Stop>> MapfGcsTask::passing(const std::vector<std::vector<planner::Cell>>& routes) {
   std::vector<std::vector<Stop>> out(routes.size());
@@ -52,7 +52,7 @@ void MapfGcsTask::plan_window(GcsContext& ctx, const char* why) {
     planner::OccupancyGrid map = known_;
     for (int r = 0; r < t.robots(); ++r) map.set(ctx.cell_of(r), planner::CellState::Free);
     traffic_ = std::make_unique<planner::traffic::Planner>(
-        std::move(map), planner::MotionModel::four(),
+        std::move(map), motion_,
         planner::traffic::Config{planner::mix_seed({ctx.setup.world.scenario.seed(), 9100 + phase_})});
   }
   std::vector<planner::traffic::Agent> agents(static_cast<std::size_t>(t.robots()));

@@ -82,8 +82,13 @@ class MapfGcsTask : public GcsTask {
   [[nodiscard]] static std::vector<std::vector<Stop>> passing(const std::vector<std::vector<planner::Cell>>& routes);
   // Robot `robot` is past `stop`: it stood on it (`reached`), or the stop was skipped as unreachable.
   using StopDone = std::function<void(int robot, const Stop& stop, bool reached)>;
-  MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, RoutePicker routes,
-              int window, StopDone done = {});
+  struct Lifelong {
+    RoutePicker routes;
+    int window = 16;                                      // steps per window
+    planner::MotionModel motion = planner::MotionModel::four();  // the phase's robots'
+    StopDone done;                                        // may be empty
+  };
+  MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, Lifelong lifelong);
   // Lifelong, once complete: asks the picker for new sequences and drives them.
   void restart(GcsContext& ctx, const char* why);
   void start(GcsContext& ctx) override;
@@ -158,6 +163,7 @@ class MapfGcsTask : public GcsTask {
   RoutePicker pick_routes_;
   StopDone stop_done_;
   int window_ = 0;
+  planner::MotionModel motion_ = planner::MotionModel::four();
   std::vector<std::vector<Stop>> sequences_;    // per robot id: the stops still ahead
   // per robot id: for each stop the current window gets it past, the window's time step at which
   // it stands on it (-1: skipped as unreachable)

@@ -17,9 +17,13 @@ namespace swarm::tasks {
 [[nodiscard]] swarm::scenario::Mapf resolved_mapf(const swarm::scenario::Mapf& mapf,
                                                   const swarm::scenario::Scenario& scenario);
 
-// How the leaders drive the traffic layer's windows (cover and collect with `traffic`): as a mapf
-// phase's plans with the default settings, resolved for this scenario.
-[[nodiscard]] swarm::scenario::Mapf traffic_driving(const swarm::scenario::Scenario& scenario);
+// How the leaders drive the traffic layer's windows (cover and collect with `traffic`): always by
+// each window's action-dependency graph. A robot lost without warning then only makes the others
+// wait (timed driving would send them into its cell), and in lockstep without delay it costs
+// next to nothing: explore,cover,mapf,collect on small, maze1 and open, 3 x 3 robots, took
+// 252 / 1,258 / 1,292 cover ticks by the graph against 233 / 1,252 / 1,286 timed, and collect
+// 100 / 284 / 278 against 108 / 288 / 288.
+[[nodiscard]] swarm::scenario::Mapf traffic_driving();
 
 // The MAPF solver of a mapf phase (ECBS with its w by default).
 [[nodiscard]] planner::mapf::SolverConfig mapf_solver_config(const swarm::scenario::Mapf& mapf, std::uint64_t seed);
