@@ -283,12 +283,32 @@ bool GcsNode::step(const msgs::Clock& clock) {
   } else {
     line = tasks_[phase_]->progress(ctx);
   }
+  if (!settling_ && !complete_tick_ && !gave_up_) watch_stall(line, clock.tick());
   const std::string task = config::task_name(phases_[phase_]);
   if (live) {
     progress_.update(clock.tick(), phases_.size() > 1 ? task + " " + line.label : line.label, line.fraction,
                      line.detail, note);
   }
   return complete_tick_.has_value() || gave_up_.has_value();
+}
+
+void GcsNode::watch_stall(const ProgressLine& line, std::uint32_t tick) {
+  const std::uint32_t limit = setup_.world.scenario.stall_ticks();
+  if (stall_phase_ != phase_starts_.size() || line.fraction > stall_best_) {
+    stall_phase_ = phase_starts_.size();
+    stall_best_ = line.fraction;
+    stall_since_ = tick;
+    return;
+  }
+  if (limit == 0 || tick - stall_since_ < limit) return;
+  char why[160];
+  std::snprintf(why, sizeof why, "stalled: %s at %.1f %% since tick %u, no progress in %u ticks (stall_ticks)",
+                line.label.c_str(), 100.0 * stall_best_, stall_since_, limit);
+  phase_ends_.push_back(tick);
+  record_phase(tick, true, false);
+  std::fprintf(stderr, "gcs: phase %u (%s) given up at tick %u: %s\n", phase_, config::task_name(phases_[phase_]).c_str(),
+               tick, why);
+  gave_up_ = why;
 }
 
 void GcsNode::settle(GcsContext& ctx) {

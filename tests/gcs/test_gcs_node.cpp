@@ -137,5 +137,21 @@ TEST(GcsNode, AnUnreadableSimulatorReportIsAnErrorNamingIt) {
   }
 }
 
+// A phase whose progress stops is given up, named stalled, long before max_ticks: the classic
+// collect drive on warehouse-5x8 after the other tasks gets two robots stuck head-on in an aisle
+// with 14 of 15 objects delivered (docs/traffic.md).
+TEST(GcsNode, APhaseWhoseProgressStopsIsGivenUpAsStalled) {
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+      "map: 'warehouse-5x8' max_ticks: 3000 stall_ticks: 300 mission { phase { explore {} } phase { cover { traffic: "
+      "false } } phase { mapf {} } phase { collect { traffic: false } } }"));
+  const auto m = s.run_to_end();
+  EXPECT_FALSE(m["complete"].get<bool>());
+  const auto& collect = swarm::test::phase_named(m, "collect");
+  ASSERT_TRUE(collect.contains("gave_up")) << collect.dump(1);
+  EXPECT_EQ(collect["gave_up"].get<std::string>().rfind("stalled: delivered at 93.3 %", 0), 0u) << collect["gave_up"];
+  // Ended 300 ticks after the last delivery, not at max_ticks.
+  EXPECT_LT(m["ticks_run"].get<int>(), 1000);
+}
+
 }  // namespace
 }  // namespace swarm::gcs

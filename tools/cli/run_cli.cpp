@@ -46,7 +46,8 @@ Command add_run(CLI::App& app) {
   f->robots_opt = run_cmd->add_option("--robots-per-group", f->robots, "Robots per group, leader included");
   f->mode_opt = run_cmd->add_option("--mode", f->mode, "group-frontier | baseline | ideal");
   run_cmd->add_option("--mission", o.mission,
-                      "The mission's phases in order, e.g. explore,cover (default: the scenario's; explore alone)")
+                      "The mission's phases in order, e.g. explore,cover (default: the scenario's; explore alone); "
+                      "without --max-ticks, the scenario's max_ticks applies per phase")
       ->delimiter(',');
   f->seed_opt = run_cmd->add_option("--seed", f->seed, "Random seed");
   f->ticks_opt = run_cmd->add_option("--max-ticks", f->max_ticks, "Stop, incomplete, at this tick");

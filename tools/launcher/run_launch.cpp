@@ -157,7 +157,14 @@ void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o) {
     }
   }
   if (o.seed) s.set_seed(*o.seed);
-  if (o.max_ticks) s.set_max_ticks(*o.max_ticks);
+  if (o.max_ticks) {
+    s.set_max_ticks(*o.max_ticks);
+  } else if (o.mission.size() > 1) {
+    // A chained mission from the command line gets the scenario's limit per phase: a chain that is
+    // still making progress is not cut off at one phase's limit (one that is not is ended as
+    // stalled, Scenario.stall_ticks).
+    s.set_max_ticks(s.max_ticks() * static_cast<std::uint32_t>(o.mission.size()));
+  }
   if (o.realtime) s.set_realtime(*o.realtime);
   if (o.tick_ms) s.set_tick_ms(*o.tick_ms);
   // Names are checked against the run's groups by validate(); here only the shape.

@@ -153,6 +153,11 @@ void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res) {
     adg_ = planner::mapf::dependencies(res.paths);
     rotation_ordered_.assign(adg_.rotations.size(), false);
   }
+  route_steps_ = 0;
+  for (std::size_t k = 0; k < res.paths.size(); ++k) {
+    const std::size_t cells = by_graph_ ? adg_.routes[k].size() : res.paths[k].size();
+    route_steps_ += cells > 0 ? cells - 1 : 0;
+  }
   task::Order o;
   o.group = task::kAllGroups;
   o.kind = task::OrderKind::Work;
@@ -272,7 +277,11 @@ ProgressLine MapfGcsTask::progress(const GcsContext&) const {
   }
   std::snprintf(detail, sizeof detail, "at goal %d/%zu  plan %u%s", arrived_, planned_.size(), seq_,
                 failed_ ? " (failed)" : holding_ ? " (holding)" : "");
-  return {"arrived", planned_.empty() ? 0.0 : static_cast<double>(arrived_) / static_cast<double>(planned_.size()),
+  // How much of the plan's routes the robots have driven (as reported): it grows on every move, where
+  // the robots at their goals grow only at the end of a long plan (a stall is judged from it).
+  std::uint64_t driven = 0;
+  for (const std::uint32_t p : progress_) driven += p;
+  return {"driven", route_steps_ == 0 ? 1.0 : std::min(1.0, static_cast<double>(driven) / static_cast<double>(route_steps_)),
           detail};
 }
 

@@ -101,6 +101,12 @@ class GcsNode {
   std::uint32_t last_tick_ = 0;
   std::optional<std::uint32_t> complete_tick_;
   std::optional<std::string> gave_up_;  // why the current phase was given up (the mission is over)
+  // Stall (Scenario.stall_ticks): the current phase's best progress fraction and when it last grew.
+  double stall_best_ = -1.0;
+  std::uint32_t stall_since_ = 0;
+  std::size_t stall_phase_ = 0;  // phase_starts_.size() when they were set
+  // Gives the current phase up as stalled when its progress has not grown for stall_ticks.
+  void watch_stall(const ProgressLine& line, std::uint32_t tick);
   // Wall time (system clock: a restarted process reads tick 0's from the run directory).
   std::chrono::system_clock::time_point first_tick_time_{};
   std::chrono::system_clock::time_point last_tick_time_{};

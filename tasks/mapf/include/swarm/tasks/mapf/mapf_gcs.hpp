@@ -153,6 +153,7 @@ class MapfGcsTask : public GcsTask {
   bool by_graph_ = false;
   planner::mapf::Dependencies adg_;
   std::vector<std::uint32_t> progress_;  // per plan index: the route step it was last reported at
+  std::uint64_t route_steps_ = 0;        // the current plan's route steps, all robots
   std::vector<bool> rotation_ordered_;
   std::uint32_t rotations_ordered_ = 0;
   planner::mapf::Result first_;      // the first plan's numbers (after any fallback)
