@@ -131,6 +131,27 @@ TEST(RunOverrides, FieldsAndModes) {
   EXPECT_EQ(s.explore().mode(), swarm::scenario::IDEAL);
 }
 
+// A chained --mission without --max-ticks gets the scenario's limit once per phase; --max-ticks wins.
+TEST(RunOverrides, AChainedMissionGetsMaxTicksPerPhase) {
+  swarm::scenario::Scenario s;
+  s.set_max_ticks(3000);
+  RunOverrides o;
+  o.mission = {"explore", "cover", "mapf", "collect"};
+  apply_overrides(s, o);
+  EXPECT_EQ(s.max_ticks(), 12000u);
+  EXPECT_EQ(s.mission().phase_size(), 4);
+  swarm::scenario::Scenario one;
+  one.set_max_ticks(3000);
+  o.mission = {"cover"};
+  apply_overrides(one, o);
+  EXPECT_EQ(one.max_ticks(), 3000u);
+  swarm::scenario::Scenario given;
+  o.mission = {"explore", "cover"};
+  o.max_ticks = 500;
+  apply_overrides(given, o);
+  EXPECT_EQ(given.max_ticks(), 500u);
+}
+
 TEST(RunOverrides, MalformedValuesAreConfigErrorsNamingTheFlag) {
   swarm::scenario::Scenario s;
   RunOverrides o;
