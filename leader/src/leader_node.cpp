@@ -270,11 +270,12 @@ void LeaderNode::track_members(const msgs::Clock& clock, GroupContext& ctx) {
 
 void LeaderNode::dispatch(GroupContext& ctx) {
   if (settling_) {
-    // Nothing is the next task's business yet but the robots' stops.
+    // Nothing is the next task's business yet but the robots' stops; an order of this phase that
+    // overtook its PhaseStart waits for the task.
     for (const auto& p : progress_) {
       stopped(topology_.index_of(p.robot()), {p.route_id(), p.step(), static_cast<planner::RouteState>(p.state())});
     }
-    orders_.clear();
+    std::erase_if(orders_, [this](const msgs::TaskOrder& o) { return o.phase() != phase_; });
     statuses_.clear();
     progress_.clear();
     round_.reset();

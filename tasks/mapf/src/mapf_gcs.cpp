@@ -16,9 +16,6 @@ namespace swarm::gcs {
 
 using planner::Cell;
 
-namespace {
-}  // namespace
-
 MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, GoalPicker goals)
     : config_(config), phase_(phase), map_given_(map_given), pick_goals_(std::move(goals)) {}
 
