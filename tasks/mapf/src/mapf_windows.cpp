@@ -123,15 +123,14 @@ void MapfGcsTask::credit_window(const GcsContext& ctx) {
     if (ur >= window_reached_.size()) continue;
     auto& seq = sequences_[ur];
     const auto& at = window_reached_[ur];
+    // Its last report may be behind (a lost robot, or one a new leader stopped before reporting):
+    // where it stands says how far it got.
     std::uint32_t progress = progress_[k];
-    if (!ctx.alive(planned_[k])) {
-      // Lost: its last report may be behind; where it stopped says how far it got.
-      const auto& route = by_graph_ ? adg_.routes[k] : window_paths_[k];
-      for (std::size_t s = progress; s < route.size(); ++s) {
-        if (route[s] == ctx.cell_of(planned_[k])) {
-          progress = static_cast<std::uint32_t>(s);
-          break;
-        }
+    const auto& route = by_graph_ ? adg_.routes[k] : window_paths_[k];
+    for (std::size_t s = progress; s < route.size(); ++s) {
+      if (route[s] == ctx.cell_of(planned_[k])) {
+        progress = static_cast<std::uint32_t>(s);
+        break;
       }
     }
     // A stop is behind the robot once it has driven to the window's time of standing on it; a

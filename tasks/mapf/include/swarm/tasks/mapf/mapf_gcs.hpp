@@ -115,7 +115,7 @@ class MapfGcsTask : public GcsTask {
   // next one, or completes.
   void window_done(GcsContext& ctx);
   // Lifelong: the stops behind each planned robot leave its sequence (and go to stop_done_), as
-  // far as its reported progress goes, or for a lost robot, as far as the cell it stopped on.
+  // far as its reported progress goes, or further along its route to the cell it stands on.
   void credit_window(const GcsContext& ctx);
   // Lifelong: robot `robot`'s pick-ups and drops in the current window, on its planned route.
   void add_acts(int robot, task::PlannedRoute& route) const;
