@@ -45,7 +45,7 @@ void CollectGcsTask::start(GcsContext& ctx) {
   for (int g = 0; g < t.groups(); ++g) leader_.push_back(ctx.leader_of(g));
   resume_at_.assign(static_cast<std::size_t>(t.groups()), std::nullopt);
   if (drive_) {
-    drive_->start(ctx);  // plans the tours once every robot stands still
+    drive_->start(ctx);  // plans the tours from where the robots stand (still: gcs/gcs_node.hpp)
     return;
   }
   if (groups.empty()) return;
