@@ -470,7 +470,7 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
     ph.start_tick = phase_starts_[i];
     if (i < phase_ends_.size()) ph.end_tick = phase_ends_[i];
     const bool given_up = gave_up_ && i + 1 == phase_ends_.size();
-    ph.complete = i < phase_ends_.size() && !given_up;
+    const bool judged_complete = i < phase_ends_.size() && !given_up;
     if (given_up) ph.gave_up = *gave_up_;
     ph.task = tasks_[i]->numbers();
     for (const auto& p : sim.phases) {
@@ -478,6 +478,17 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
       ph.motion = p.motion;
       for (auto it = p.judge.begin(); it != p.judge.end(); ++it) ph.task[it.key()] = it.value();
     }
+    // A phase is complete only when the ground truth agrees with the GCS's judgement.
+    const auto truth = ph.task.find(record::kGroundTruthDone);
+    if (truth != ph.task.end()) {
+      if (truth->is_boolean()) ph.ground_truth_done = truth->get<bool>();
+      ph.task.erase(truth);
+    }
+    if (judged_complete && ph.ground_truth_done == false) {
+      ph.disagreement = "the GCS judged the phase complete; by the simulator's ground truth its work is not done";
+      m.complete = false;
+    }
+    ph.complete = judged_complete && ph.ground_truth_done != false;
     m.phases.push_back(std::move(ph));
   }
   record::write_metrics(run_dir_ + "/metrics.json", m);

@@ -206,6 +206,8 @@ json to_json(const RunMetrics& m) {
                       {"end_tick", opt(p.end_tick)},
                       {"complete", p.complete},
                       {"gave_up", opt(p.gave_up)},
+                      {"ground_truth_done", opt(p.ground_truth_done)},
+                      {"disagreement", opt(p.disagreement)},
                       {"motion", to_json(p.motion)},
                       {"task", p.task}});
   }
@@ -343,6 +345,10 @@ RunMetrics metrics_from_json(const json& j, const std::string& source) {
     ph.end_tick = pf.optional<std::uint32_t>("end_tick");
     ph.complete = pf.get<bool>("complete");
     if (pf.raw().contains("gave_up")) ph.gave_up = pf.optional<std::string>("gave_up");  // since schema 3
+    if (pf.raw().contains("ground_truth_done")) {  // since schema 5
+      ph.ground_truth_done = pf.optional<bool>("ground_truth_done");
+      ph.disagreement = pf.optional<std::string>("disagreement");
+    }
     ph.motion = motion_from_json(pf.at("motion"), pf.where() + ".motion");
     ph.task = pf.at("task");
     m.phases.push_back(std::move(ph));

@@ -158,5 +158,43 @@ TEST(ExperimentTasks, CoverAndMapfLiveQuickRunsComplete) {
   }
 }
 
+// The chained mission in its smallest setting: the run completes, every phase has its row in
+// the CSV and its table, with the cover phase's ratio to its bound, and no phase counts a conflict.
+TEST(ExperimentMission, QuickRunsTheChainAndTablesEveryPhase) {
+  const std::string dir = fresh_dir("experiment_mission");
+  const CommandResult r = run_swarm("experiment mission --quick --mission explore,cover,collect --out " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto results = read_json(dir + "/results.json");
+  ASSERT_EQ(results["runs"].size(), 1u);
+  const auto& run = results["runs"][0];
+  EXPECT_TRUE(run["complete"].get<bool>()) << run.dump();
+  ASSERT_EQ(run["phases"].size(), 3u);
+  for (const auto& p : run["phases"]) {
+    EXPECT_TRUE(p["complete"].get<bool>()) << p.dump();
+    EXPECT_EQ(p["vertex_conflicts"], 0) << p.dump();
+    EXPECT_EQ(p["edge_conflicts"], 0) << p.dump();
+    EXPECT_GT(p["ticks"].get<double>(), 0) << p.dump();
+  }
+  // cover's bound: ⌈cells / robots⌉ of 9 robots; a makespan can never beat it.
+  EXPECT_GE(run["phases"][1]["ratio"].get<double>(), 1.0);
+  EXPECT_TRUE(run["phases"][0]["ratio"].is_null());
+  std::ifstream table(dir + "/table.txt");
+  const std::string text((std::istreambuf_iterator<char>(table)), std::istreambuf_iterator<char>());
+  for (const char* phase : {"phase 1: explore", "phase 2: cover", "phase 3: collect"}) {
+    EXPECT_NE(text.find(phase), std::string::npos) << text;
+  }
+  EXPECT_NE(text.find("1 of 1 runs completed the whole mission"), std::string::npos) << text;
+  EXPECT_TRUE(fs::exists(dir + "/mission.png"));
+  std::ifstream csv(dir + "/results.csv");
+  std::string line;
+  std::size_t lines = 0;
+  while (std::getline(csv, line)) ++lines;
+  EXPECT_EQ(lines, 1u + 3u);
+  // Bad input is refused before any run, naming the flag.
+  const CommandResult bad = run_swarm("experiment mission --robots 3by3 --out " + dir + "-bad");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--robots '3by3'"), std::string::npos) << bad.output;
+}
+
 }  // namespace
 }  // namespace swarm::test

@@ -108,7 +108,7 @@ TEST(Faults, FrozenLeaderIsReadmittedAndNothingIsLost) {
   EXPECT_EQ(unreachable[0]["agent"], "leader-1");
   EXPECT_LT(unreachable[0]["to_tick"].get<int>() - unreachable[0]["from_tick"].get<int>(), 100) << unreachable;
   // Every message reached every receiver it was meant for (the standbys hear the members too).
-  for (const char* topic : {"patch_up", "patch_gcs", "group_status"}) {
+  for (const char* topic : {"patch_up", "patch_gcs", "task_report", "task_order"}) {
     const auto& t = m["traffic"]["by_topic"][topic];
     EXPECT_EQ(t["addressed_messages"], t["received_messages"]) << topic;
   }

@@ -75,8 +75,10 @@ TEST(IntegrationRun, SmallMissionCompletesWithEveryOutput) {
   for (const char* link : {"sim_robot", "member_leader", "leader_gcs", "telemetry"}) {
     EXPECT_GT(m["traffic"]["by_link"][link]["bytes"].get<long>(), 0) << link;
   }
-  for (const char* topic : {"sense", "motion", "patch_up", "patch_down", "assign", "status", "patch_gcs", "round",
-                            "group_status", "plan_report"}) {
+  // Exploration drives through the traffic layer: waypoints go to the GCS (task_report), windows
+  // come back (task_order) and reach the robots as routes and releases.
+  for (const char* topic : {"sense", "motion", "patch_up", "patch_down", "route", "release", "progress", "patch_gcs",
+                            "round", "task_report", "task_order", "plan_report"}) {
     EXPECT_GT(m["traffic"]["by_topic"][topic]["messages"].get<long>(), 0) << topic;
   }
   // No message is lost without loss emulation: what was sent was received.

@@ -132,6 +132,38 @@ TEST(Tasks, CollectThroughTheTrafficLayerWithAMemberAndALeaderKilledDeliversEver
   ASSERT_EQ(m["faults"]["leader_handovers"].size(), 1u) << m["faults"];
 }
 
+// The whole chain over DDS, every phase through the traffic layer: it completes on two maps, each
+// phase agreed on by the GCS and the simulator's ground truth, with no conflict in any phase.
+TEST(Tasks, TheWholeChainCompletesOnTwoMapsWithoutAConflictInAnyPhase) {
+  for (const std::string map : {"small", "warehouse-5x8"}) {
+    SCOPED_TRACE(map);
+    const auto m = run_task("chain_" + map, "default.pbtxt", "",
+                            "--map " + map + " --mission explore,cover,mapf,collect --max-ticks 3000");
+    ASSERT_EQ(m["phases"].size(), 4u);
+    for (const auto& p : m["phases"]) {
+      SCOPED_TRACE(p["name"].get<std::string>());
+      EXPECT_TRUE(p["complete"].get<bool>()) << p.dump();
+      EXPECT_TRUE(p["disagreement"].is_null()) << p.dump();
+      swarm::test::expect_no_conflict(p);
+    }
+    EXPECT_TRUE(phase_named(m, "explore")["ground_truth_done"].get<bool>());
+    EXPECT_TRUE(phase_named(m, "collect")["ground_truth_done"].get<bool>());
+  }
+}
+
+// maze1 is corridors: a member killed there mid-exploration stands as an obstacle that the
+// layer routes round in every later phase; the chain still completes with no conflict.
+TEST(Tasks, TheChainWithAMemberKilledInACorridorCompletesWithoutAConflict) {
+  const auto m = run_task("chain_killed", "default.pbtxt", "",
+                          "--map maze1 --mission explore,cover,collect --max-ticks 4000 --kill member-1-2@60");
+  for (const auto& p : m["phases"]) {
+    SCOPED_TRACE(p["name"].get<std::string>());
+    EXPECT_TRUE(p["complete"].get<bool>()) << p.dump();
+    swarm::test::expect_no_conflict(p);
+  }
+  ASSERT_EQ(m["faults"]["agents_lost"].size(), 1u) << m["faults"];
+}
+
 TEST(Tasks, CoverInGroupKOrderReachesEveryReachableCell) {
   const auto m = run_task("cover_group_k", "small.pbtxt", "mission { phase { cover { order: ORDER_GROUP_K } } }",
                           "--max-ticks 3000");

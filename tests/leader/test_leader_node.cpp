@@ -1,6 +1,9 @@
 // The leader node on the FakeBus with its real members and a scripted GCS: given a global map with
 // one unexplored region, it plans case B (no group frontiers) and assigns its three robots three
 // distinct frontier cells of that region, nearest first as the Hungarian assignment says.
+// Exploration here is the paper's drive (`traffic: false`), where the leader sends its robots
+// their waypoints: what these tests watch. Through the traffic layer the waypoints go to the GCS
+// (tests/tasks/test_explore.cpp).
 #include "swarm/leader/leader_node.hpp"
 
 #include <gtest/gtest.h>
@@ -46,6 +49,7 @@ TEST(LeaderNode, PlansCaseBOnTheGlobalMapAndAssignsEachRobotAFrontierCellOfTheRe
   sc.set_robots_per_group(3);
   sc.set_sensing_range_m(0.6);  // 3 cells: the robots see nothing the global map lacks
   sc.set_max_ticks(30);
+  sc.mutable_explore()->set_traffic(false);
   auto setup = swarm::test::setup_for(truth, {3, 3}, sc);
   const comm::Topology& t = setup.topology;
   swarm::test::FakeSwarm s(setup, {t.gcs()});
@@ -116,7 +120,7 @@ TEST(LeaderNode, PlansCaseBOnTheGlobalMapAndAssignsEachRobotAFrontierCellOfTheRe
 }
 
 TEST(LeaderNode, ALostMemberIsNoticedPlannedWithoutAndTheMissionStillCompletes) {
-  auto setup = swarm::test::setup_from_text("map: 'small' groups: 1 robots_per_group: 3 max_ticks: 800");
+  auto setup = swarm::test::setup_from_text("map: 'small' groups: 1 robots_per_group: 3 max_ticks: 800 explore { traffic: false }");
   const comm::Topology& t = setup.topology;
   swarm::test::FakeSwarm s(setup);
   comm::FakeBus spy(s.network());
@@ -152,7 +156,7 @@ TEST(LeaderNode, ALostMemberIsNoticedPlannedWithoutAndTheMissionStillCompletes) 
 // it from then on, never from two robots at one tick), plans the next rounds without the dead
 // robot, and the mission completes. metrics.json records the hand-over.
 TEST(LeaderNode, AStandbyTakesOverALostLeaderAndTheMissionCompletes) {
-  auto setup = swarm::test::setup_from_text("map: 'small' groups: 2 robots_per_group: 3 max_ticks: 1500");
+  auto setup = swarm::test::setup_from_text("map: 'small' groups: 2 robots_per_group: 3 max_ticks: 1500 explore { traffic: false }");
   const comm::Topology& t = setup.topology;
   ASSERT_EQ(t.standbys(), 1);
   swarm::test::FakeSwarm s(setup);

@@ -121,6 +121,30 @@ TEST(Traffic, TwoRobotsMeetingHeadOnInAOneCellCorridorPass) {
   EXPECT_LE(took, 32);
 }
 
+// An explored map grows: the door between two rooms is not known free at first, so the goal
+// beyond it is skipped, not chased; once the map knows the door, the next windows go through it.
+TEST(Traffic, ANewMapOpensTheWayToAGoalThatWasSkipped) {
+  const auto art = swarm::test::ascii_map({
+      "#########",
+      "#A..#..B#",
+      "#...#...#",
+      "#.......#",
+      "#########",
+  });
+  OccupancyGrid closed = art.grid;
+  for (int y = 1; y <= 3; ++y) closed.set({4, y}, CellState::Unknown);  // the door and the wall beside it
+  Planner p(closed, MotionModel::four(), {.seed = 3});
+  std::vector<Agent> agents = {{art.at.at('A'), {art.at.at('B')}}};
+  const Window unknown = p.plan(agents, 4);
+  ASSERT_EQ(unknown.done[0], 1);
+  EXPECT_EQ(unknown.reached_at[0][0], -1);  // B lies beyond cells not known free: skipped
+  EXPECT_EQ(unknown.paths[0].back(), art.at.at('A'));
+  p.set_map(art.grid);
+  const int took = drive(p, art.grid, MotionModel::four(), agents, 4, 10);
+  EXPECT_EQ(took, 4 * 3);  // 10 steps: to the door's row, through it, and back up: three windows of 4
+  EXPECT_THROW(p.set_map(OccupancyGrid(3, 3)), std::invalid_argument);
+}
+
 TEST(Traffic, EightRobotsOnARingOfEightCellsRotate) {
   // Every cell of the ring is taken: nobody can move unless all move together.
   const auto art = swarm::test::ascii_map({

@@ -7,6 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "swarm_test/fake_swarm.hpp"
+#include "swarm_test/metrics_fixture.hpp"
+#include "swarm_test/phase_checks.hpp"
+#include "swarm/tasks/explore/waypoint_report.hpp"
 
 namespace swarm::tasks {
 namespace {
@@ -52,6 +55,81 @@ TEST(ExploreTask, ASecondExplorePhaseGoesOnNumberingTheRunsRounds) {
   EXPECT_EQ(m["planning_rounds"], first + second);
   // The phase starts at the tick the first one ended; its first step, the tick after, plans.
   EXPECT_EQ(ticks.back(), m["phases"][1]["start_tick"].get<int>() + 1);
+}
+
+TEST(WaypointReport, CarriesARoundsWaypointsAndRefusesMalformedOnes) {
+  const RoundWaypoints w{7, {3, 5}, {{1, 2}, {4, 6}}};
+  const auto back = read_waypoints_report(waypoints_report(w));
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->round, 7u);
+  EXPECT_EQ(back->robots, w.robots);
+  EXPECT_EQ(back->cells, w.cells);
+  task::Report r = waypoints_report(w);
+  r.cells.pop_back();  // a robot without its cell
+  EXPECT_FALSE(read_waypoints_report(r).has_value());
+  r = waypoints_report(w);
+  r.values[0] = 3;  // another task's report (mapf's progress starts with its plan number)
+  EXPECT_FALSE(read_waypoints_report(r).has_value());
+  r = waypoints_report(w);
+  r.values[1] = -2;  // no round
+  EXPECT_FALSE(read_waypoints_report(r).has_value());
+  EXPECT_FALSE(read_waypoints_report(task::Report{}).has_value());
+}
+
+// Through the traffic layer (the default) every robot drives to its waypoint in the GCS's
+// conflict-free windows: the map is explored with no conflict and no blocked move, on maps the
+// exploration was not tuned for too.
+TEST(ExploreTask, ThroughTheTrafficLayerEveryMapIsExploredWithoutAConflict) {
+  for (const std::string map : {"small", "maze1", "warehouse-5x8", "clutter"}) {
+    SCOPED_TRACE(map);
+    swarm::test::FakeSwarm s(swarm::test::setup_from_text("map: '" + map +
+                                                          "' groups: 3 robots_per_group: 3 max_ticks: 3000 "
+                                                          "mission { phase { explore {} } }"));
+    const auto m = s.run_to_end();
+    ASSERT_TRUE(m["complete"].get<bool>()) << m.dump();
+    const auto& p = swarm::test::phase_named(m, "explore");
+    EXPECT_GE(p["task"]["explored_fraction"].get<double>(), 0.97) << p.dump();
+    swarm::test::expect_no_conflict(p);
+    EXPECT_GT(p["task"]["waypoints_reached"].get<int>(), 0) << p.dump();
+    EXPECT_GT(p["task"]["traffic"]["windows"].get<int>(), 1);
+  }
+}
+
+// Late messages only make robots wait: with member<->leader delay and jitter, and with a member
+// and (in another run) a leader lost midway, exploration still ends without a conflict.
+TEST(ExploreTask, ThroughTheTrafficLayerWithDelayAndLossesNoRobotCollides) {
+  struct Case {
+    std::string links;
+    int lost_group;  // -1: none
+    int lost_index;
+  };
+  for (const Case& c : {Case{"links { member_leader { delay_ticks: 3 jitter_ticks: 2 } } ", -1, 0},
+                        Case{"", 0, 2}, Case{"", 1, 0}}) {
+    SCOPED_TRACE(c.links + " lost " + std::to_string(c.lost_group) + "/" + std::to_string(c.lost_index));
+    auto setup = swarm::test::setup_from_text("map: 'small' groups: 3 robots_per_group: 3 max_ticks: 3000 " + c.links +
+                                              "mission { phase { explore {} } }");
+    swarm::test::FakeSwarm s(setup);
+    const auto m = s.run_to_end([&](std::uint32_t tick) {
+      if (tick == 20 && c.lost_group >= 0) s.disconnect(setup.topology.robot(c.lost_group, c.lost_index));
+    });
+    ASSERT_TRUE(m["complete"].get<bool>()) << m.dump();
+    const auto& p = swarm::test::phase_named(m, "explore");
+    EXPECT_GE(p["task"]["explored_fraction"].get<double>(), 0.97) << p.dump();
+    swarm::test::expect_no_conflict(p);
+  }
+}
+
+// The paper's drive stays available: each robot plans its own way to its waypoint.
+TEST(ExploreTask, WithoutTheTrafficLayerRobotsDriveToTheirWaypointsThemselves) {
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(std::string(kTwoGroups) +
+                                                        "mission { phase { explore { traffic: false } } }"));
+  const auto m = s.run_to_end();
+  ASSERT_TRUE(m["complete"].get<bool>()) << m.dump();
+  const auto& p = swarm::test::phase_named(m, "explore");
+  EXPECT_FALSE(p["task"].contains("traffic"));
+  int reached = 0;  // the members' reports of arriving, counted by their leaders
+  for (const char* leader : {"leader-0", "leader-1"}) reached += m["agents"][leader]["waypoints_reached"].get<int>();
+  EXPECT_GT(reached, 0) << m["agents"].dump();
 }
 
 }  // namespace

@@ -282,13 +282,18 @@ TEST(RunCommandHelpers, MetricsSummary) {
   mapf.motion.per_robot["member-1-2"].longest_blocked_ticks = 31;
   swarm::record::PhaseMetrics ph;
   ph.name = "mapf";
-  ph.complete = true;
+  ph.complete = false;
+  ph.ground_truth_done = false;
+  ph.disagreement = "the GCS judged the phase complete; by the simulator's ground truth its work is not done";
   ph.task = {{"ground_truth_at_goal", 8}, {"ground_truth_living", 9}};
   mapf.phases.push_back(ph);
+  mapf.complete = false;
   swarm::record::write_metrics(dir.file("mapf.json"), mapf);
   const std::string g = summarize_metrics(dir.file("mapf.json"));
   EXPECT_TRUE(contains(g, "longest block    31 ticks in a row (member-1-2)")) << g;
-  EXPECT_TRUE(contains(g, "8/9 robots at goal (ground truth; the GCS judged it complete: they disagree)")) << g;
+  EXPECT_TRUE(contains(g, "8/9 robots at goal (ground truth)")) << g;
+  EXPECT_TRUE(contains(g, "INCOMPLETE: phase mapf: the GCS judged the phase complete; by the simulator's ground truth")) << g;
+  EXPECT_TRUE(contains(g, "    they disagree: the GCS judged the phase complete")) << g;
   EXPECT_THROW((void)summarize_metrics(dir.file("none.json")), std::runtime_error);
   // A required key missing, or another schema version, is an error naming it.
   auto j = swarm::record::to_json(summary_fixture());

@@ -41,6 +41,7 @@ Command add_experiment_darp(CLI::App& experiment);
 Command add_experiment_tour(CLI::App& experiment);
 Command add_experiment_clean(CLI::App& experiment);
 Command add_task_experiment(CLI::App& experiment, const char* task, const char* what);  // cover, mapf-live
+Command add_experiment_mission(CLI::App& experiment);
 
 // planner_cli.cpp: the offline planners on one instance.
 Command add_mapf(CLI::App& app);

@@ -61,6 +61,7 @@ std::string summarize_metrics(const std::string& path) {
   std::string why = "stopped at --max-ticks";
   for (const auto& p : m.phases) {
     if (p.gave_up) why = "phase " + p.name + " given up: " + *p.gave_up;
+    if (p.disagreement) why = "phase " + p.name + ": " + *p.disagreement;
   }
   o << (m.complete ? "  complete: the mission's every phase is done\n" : "  INCOMPLETE: " + why + "\n");
   std::snprintf(buf, sizeof buf, "  steps            %u", m.steps);
@@ -83,13 +84,13 @@ std::string summarize_metrics(const std::string& path) {
         p.task.contains("ground_truth_living") &&
         p.task["ground_truth_living"].is_number()) {
       const int at = p.task["ground_truth_at_goal"].get<int>(), living = p.task["ground_truth_living"].get<int>();
-      std::snprintf(buf, sizeof buf, ", %d/%d robots at goal (ground truth%s)", at, living,
-                    p.complete && at < living ? "; the GCS judged it complete: they disagree" : "");
+      std::snprintf(buf, sizeof buf, ", %d/%d robots at goal (ground truth)", at, living);
       o << buf;
     }
     std::snprintf(buf, sizeof buf, ", %llu conflicts", static_cast<unsigned long long>(p.motion.vertex_conflict_events +
                                                                                        p.motion.edge_conflict_events));
     o << buf << "\n";
+    if (p.disagreement) o << "    they disagree: " << *p.disagreement << "\n";
   }
   std::snprintf(buf, sizeof buf, "  planning rounds  %u\n", m.planning_rounds);
   o << buf;

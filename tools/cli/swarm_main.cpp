@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   commands.push_back(add_task_experiment(*experiment, "mapf-live",
                                          "Live MAPF makespan and conflicts vs member<->leader delay and robots; "
                                          "ECBS vs LaCAM (swarm runs)"));
+  commands.push_back(add_experiment_mission(*experiment));
   commands.push_back(add_probe(app));
 
   try {

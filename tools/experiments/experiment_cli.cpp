@@ -8,6 +8,7 @@
 #include "darp_cli.hpp"
 #include "experiment.hpp"
 #include "experiment_command.hpp"
+#include "experiment_mission.hpp"
 #include "experiment_tasks.hpp"
 #include "mapf_cli.hpp"
 #include "offline_experiments.hpp"
@@ -119,6 +120,26 @@ Command add_task_experiment(CLI::App& experiment, const char* task, const char* 
   c->add_option("--out", o->out_dir, std::string("Experiment directory; default runs/experiment-") + task + "-<time>");
   c->add_flag("--quick", o->quick, "Only the first two points of the first sweep (a smoke test)");
   return {c, [o](std::ostream& out, std::ostream& err) { return task_experiment(*o, out, err); }};
+}
+
+Command add_experiment_mission(CLI::App& experiment) {
+  auto o = std::make_shared<MissionExperimentOptions>();
+  CLI::App* c = experiment.add_subcommand(
+      "mission", "The chained mission on every built-in map: ticks, ratio to a bound, conflicts, blocks per phase "
+                 "(swarm runs)");
+  c->add_option("--maps", o->maps, "Built-in maps, map_server YAML or MovingAI .map files; default every built-in map")
+      ->delimiter(',');
+  c->add_option("--mission", o->mission, "The phases, in order")->delimiter(',')->capture_default_str();
+  c->add_option("--links", o->links, "Link settings: base, delay (member<->leader 3 ± 2 ticks), loss (5 % everywhere)")
+      ->delimiter(',')
+      ->capture_default_str();
+  c->add_option("--robots", o->robots, "Teams, GROUPSxROBOTS_PER_GROUP")->delimiter(',')->capture_default_str();
+  c->add_option("--seeds", o->seeds, "Seeds 1..N per map, setting and team")->capture_default_str();
+  c->add_option("--jobs", o->jobs, "Runs at once")->capture_default_str();
+  c->add_option("--timeout", o->timeout_s, "Wall-clock limit per run in seconds")->capture_default_str();
+  c->add_option("--out", o->out_dir, "Experiment directory; default runs/experiment-mission-<time>");
+  c->add_flag("--quick", o->quick, "small, seed 1, exact links only (a smoke test)");
+  return {c, [o](std::ostream& out, std::ostream& err) { return mission_experiment(*o, out, err); }};
 }
 
 }  // namespace swarm::tools

@@ -28,6 +28,24 @@ Planner::Planner(OccupancyGrid map, MotionModel motion, Config config)
   for (std::size_t i = 0; i < map_.size(); ++i) free_[i] = map_.at(static_cast<int>(i)) == CellState::Free;
 }
 
+void Planner::set_map(const OccupancyGrid& map) {
+  if (map.width() != map_.width() || map.height() != map_.height()) {
+    throw std::invalid_argument("traffic: a new map must keep the planner's size");
+  }
+  bool changed = false;
+  for (std::size_t i = 0; i < map_.size(); ++i) {
+    const bool f = map.at(static_cast<int>(i)) == CellState::Free;
+    changed = changed || f != free_[i];
+    free_[i] = f;
+  }
+  map_ = map;
+  // Every distance may have changed with one cell: the searches start again.
+  if (changed) {
+    tables_.clear();
+    table_cells_ = 0;
+  }
+}
+
 int Planner::steps_to(int goal, int cell) {
   auto [it, added] = tables_.try_emplace(goal);
   Table& t = it->second;

@@ -37,7 +37,8 @@ class CollectJudge : public sim::PhaseJudge {
     const double length = static_cast<double>(f.motion.total.moves - f.diagonal_moves) +
                           static_cast<double>(f.diagonal_moves) * planner::MotionModel::kDiagonalCost;
     const double rotation = static_cast<double>(f.motion.total.turn_eighths) * std::acos(-1.0) / 4.0;
-    return {{"objects", c.objects},
+    return {{record::kGroundTruthDone, c.delivered == c.objects},
+            {"objects", c.objects},
             {"delivered", c.delivered},
             {"picked", c.picked},
             {"wrong_drops", c.wrong_drops},

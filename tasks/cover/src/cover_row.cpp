@@ -28,7 +28,8 @@ class CoverJudge : public sim::PhaseJudge {
   nlohmann::json judge(const sim::World& world, const sim::PhaseFacts& facts) const override {
     nlohmann::json curve = nlohmann::json::array();
     for (const auto& [tick, f] : curve_) curve.push_back({tick, f});
-    return {{"covered_fraction", world.covered_fraction()},
+    return {{record::kGroundTruthDone, world.covered_cells() >= world.coverage_target_cells()},
+            {"covered_fraction", world.covered_fraction()},
             {"covered_cells", world.covered_cells()},
             {"target_cells", world.coverage_target_cells()},
             {"makespan_ticks", full_tick_ ? nlohmann::json(*full_tick_ - facts.start_tick) : nlohmann::json(nullptr)},

@@ -2,6 +2,7 @@
 
 #include "swarm/tasks/explore/explore_gcs.hpp"
 #include "swarm/tasks/explore/explore_leader.hpp"
+#include "swarm/tasks/mapf/mapf_settings.hpp"
 
 namespace swarm::tasks {
 
@@ -10,7 +11,9 @@ namespace {
 class ExploreJudge : public sim::PhaseJudge {
  public:
   nlohmann::json judge(const sim::World& world, const sim::PhaseFacts& facts) const override {
-    return {{"explored_fraction", world.explored_fraction()},
+    // The paper's measure of an explored map: 99 % of the free cells the robots can reach, seen.
+    return {{record::kGroundTruthDone, world.explored_fraction() >= 0.99},
+            {"explored_fraction", world.explored_fraction()},
             {"steps_to_99", facts.steps_to_99 ? nlohmann::json(*facts.steps_to_99) : nlohmann::json(nullptr)}};
   }
 };
@@ -29,11 +32,18 @@ TaskRow explore_row() {
     c.replan_threshold = e.replan_threshold_steps();
     // Ideal mode is the paper's "no delay" comparison: the map fused now is used now.
     c.map_delay_rounds = e.mode() == swarm::scenario::IDEAL ? 0 : e.global_map_delay_rounds();
-    return std::make_unique<gcs::ExploreGcsTask>(index, std::move(c));
+    std::optional<gcs::ExploreGcsTask::Drive> drive;
+    if (e.traffic()) drive = gcs::ExploreGcsTask::Drive{traffic_driving(), static_cast<int>(e.traffic_window_steps())};
+    return std::make_unique<gcs::ExploreGcsTask>(index, std::move(c), std::move(drive));
   };
-  row.leader = [](const Phase& phase, const app::RoleSetup& setup, int, std::uint32_t) {
-    return std::make_unique<leader::ExploreGroupTask>(phase.explore(), setup.world.scenario.seed(),
-                                                      setup.topology.robots_per_group());
+  row.leader = [](const Phase& phase, const app::RoleSetup& setup, int group, std::uint32_t) {
+    const swarm::scenario::Explore& e = phase.explore();
+    return std::make_unique<leader::ExploreGroupTask>(
+        e, setup.world.scenario.seed(), setup.topology.robots_per_group(), group,
+        e.traffic() ? std::optional<swarm::scenario::Mapf>(traffic_driving()) : std::nullopt);
+  };
+  row.check = [](const Phase& phase, const config::World&, const std::string& field, config::Problems& p) {
+    p.at_least(field + ".traffic_window_steps", 1, phase.explore().traffic_window_steps());
   };
   row.judge = [](const Phase&, const app::RoleSetup&, std::uint32_t) { return std::make_unique<ExploreJudge>(); };
   return row;

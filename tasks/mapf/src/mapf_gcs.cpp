@@ -250,11 +250,15 @@ void MapfGcsTask::step(GcsContext& ctx) {
     return;
   }
   if (holding_ && all_held) {
-    if (window_ > 0) credit_window(ctx);
-    plan(ctx, "robot lost");
+    if (window_ > 0) credit_window(ctx, true);
+    const char* why = hold_why_ != nullptr ? hold_why_ : "robot lost";
+    hold_why_ = nullptr;
+    plan(ctx, why);
     return;
   }
   if (window_ > 0) {
+    if (!holding_ && !complete_) credit_window(ctx, false);  // the stops reported passed, at once
+    cut_for_repick(ctx);
     if (!holding_ && all_done && !complete_) window_done(ctx);
     return;
   }

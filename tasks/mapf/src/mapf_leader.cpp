@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "swarm/tasks/mapf/mapf_gcs.hpp"  // the messages' contract (kHoldStop)
+
 namespace swarm::leader {
 
 MapfGroupTask::MapfGroupTask(const swarm::scenario::Mapf& config, int group)
@@ -92,7 +94,10 @@ void MapfGroupTask::on_order(const task::Order& o, GroupContext& ctx) {
     holding_ = true;
     // Timed, every robot holds its whole route: stop them. Timed driving is chosen only with no
     // link delay, so every robot of the plan stops at the same tick: a frozen step of a valid plan.
-    if (timed_ && !adopting_) stop_own_robots(ctx);
+    // By the graph a robot may stop anywhere within its release: no robot is released into a cell
+    // before the robots planned there earlier have left it.
+    const bool stop = o.values.size() > 1 && o.values[1] == gcs::kHoldStop;
+    if ((timed_ || stop) && !adopting_) stop_own_robots(ctx);
     return;
   }
   if (o.kind == task::OrderKind::Rotate) {

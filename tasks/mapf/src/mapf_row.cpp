@@ -29,7 +29,8 @@ class MapfJudge : public sim::PhaseJudge {
       at_goal += world.robots()[r] == goals_[r] ? 1 : 0;
     }
     const bool known = !goals_.empty();
-    return {{"makespan_ticks", moved ? *f.last_move_tick - f.start_tick : 0},
+    return {{record::kGroundTruthDone, known ? nlohmann::json(at_goal == living) : nlohmann::json(nullptr)},
+            {"makespan_ticks", moved ? *f.last_move_tick - f.start_tick : 0},
             {"driven_makespan_ticks", moved ? *f.last_move_tick - *f.first_move_tick + 1 : 0},
             {"conflicts", f.motion.vertex_conflict_events + f.motion.edge_conflict_events},
             {"blocked_moves", f.motion.total.blocked_moves},

@@ -24,6 +24,7 @@ MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phas
       pick_routes_(std::move(lifelong.routes)),
       stop_done_(std::move(lifelong.done)),
       window_(lifelong.window),
+      map_grows_(lifelong.map_grows),
       motion_(lifelong.motion) {}
 
 std::vector<std::vector<MapfGcsTask::Stop>> MapfGcsTask::passing(const std::vector<std::vector<planner::Cell>>& routes) {
@@ -42,18 +43,24 @@ void MapfGcsTask::plan_window(GcsContext& ctx, const char* why) {
   for (int r = 0; r < t.robots(); ++r) {
     if (ctx.alive(r) && ctx.alive(ctx.leader_of(t.group_of(static_cast<comm::AgentId>(r))))) may_move.push_back(r);
   }
+  if (map_grows_) known_ = ctx.fused.grid();
   if (!next) {
+    repick_ = nullptr;
     sequences_ = pick_routes_(ctx, known_, may_move, why);
     sequences_.resize(static_cast<std::size_t>(t.robots()));
   }
-  if (!traffic_) {
+  if (!traffic_ || map_grows_) {
     // The robots stand on free cells whatever the known map says of them (a fused map may not
     // have seen a cell under a robot).
     planner::OccupancyGrid map = known_;
     for (int r = 0; r < t.robots(); ++r) map.set(ctx.cell_of(r), planner::CellState::Free);
-    traffic_ = std::make_unique<planner::traffic::Planner>(
-        std::move(map), motion_,
-        planner::traffic::Config{planner::mix_seed({ctx.setup.world.scenario.seed(), 9100 + phase_})});
+    if (traffic_) {
+      traffic_->set_map(map);
+    } else {
+      traffic_ = std::make_unique<planner::traffic::Planner>(
+          std::move(map), motion_,
+          planner::traffic::Config{planner::mix_seed({ctx.setup.world.scenario.seed(), 9100 + phase_})});
+    }
   }
   std::vector<planner::traffic::Agent> agents(static_cast<std::size_t>(t.robots()));
   for (int r = 0; r < t.robots(); ++r) {
@@ -96,6 +103,7 @@ void MapfGcsTask::plan_window(GcsContext& ctx, const char* why) {
     return;
   }
   ++windows_;
+  window_tick_ = ctx.tick();
   if (!next) {
     std::size_t goals = 0;
     for (const int r : planned_) goals += sequences_[static_cast<std::size_t>(r)].size();
@@ -117,17 +125,18 @@ void MapfGcsTask::add_acts(int robot, task::PlannedRoute& route) const {
   }
 }
 
-void MapfGcsTask::credit_window(const GcsContext& ctx) {
+void MapfGcsTask::credit_window(const GcsContext& ctx, bool over) {
   for (std::size_t k = 0; k < planned_.size() && k < progress_.size(); ++k) {
     const auto ur = static_cast<std::size_t>(planned_[k]);
     if (ur >= window_reached_.size()) continue;
     auto& seq = sequences_[ur];
-    const auto& at = window_reached_[ur];
-    // Its last report may be behind (a lost robot, or one a new leader stopped before reporting):
-    // where it stands says how far it got.
+    auto& at = window_reached_[ur];
     std::uint32_t progress = progress_[k];
     const auto& route = by_graph_ ? adg_.routes[k] : window_paths_[k];
-    for (std::size_t s = progress; s < route.size(); ++s) {
+    // Once the window is over its last report may be behind (a lost robot, or one a new leader
+    // stopped before reporting): where it stands says how far it got. (Not before: a route may
+    // come back to a cell.)
+    for (std::size_t s = progress; over && s < route.size(); ++s) {
       if (route[s] == ctx.cell_of(planned_[k])) {
         progress = static_cast<std::uint32_t>(s);
         break;
@@ -147,12 +156,19 @@ void MapfGcsTask::credit_window(const GcsContext& ctx) {
       if (stop_done_) stop_done_(planned_[k], seq[g], at[g] >= 0);
     }
     seq.erase(seq.begin(), seq.begin() + static_cast<std::ptrdiff_t>(n));
+    at.erase(at.begin(), at.begin() + static_cast<std::ptrdiff_t>(std::min(n, at.size())));
   }
-  window_reached_.clear();
+  if (over) window_reached_.clear();
 }
 
 void MapfGcsTask::window_done(GcsContext& ctx) {
-  credit_window(ctx);
+  credit_window(ctx, true);
+  if (repick_ != nullptr) {  // the window ended before it was cut
+    const char* why = repick_;
+    repick_ = nullptr;
+    plan_window(ctx, why);
+    return;
+  }
   // A robot lost with stops ahead of it: the task gives them to the others.
   for (int r = 0; r < ctx.setup.topology.robots(); ++r) {
     if (!ctx.alive(r) && !sequences_[static_cast<std::size_t>(r)].empty()) {
@@ -171,7 +187,29 @@ void MapfGcsTask::window_done(GcsContext& ctx) {
 
 void MapfGcsTask::restart(GcsContext& ctx, const char* why) {
   complete_ = false;
+  repick_ = nullptr;
   plan(ctx, why);
+}
+
+void MapfGcsTask::repick(GcsContext& ctx, const char* why) {
+  if (complete_) {
+    restart(ctx, why);
+    return;
+  }
+  if (!failed_) repick_ = why;
+  cut_for_repick(ctx);
+}
+
+void MapfGcsTask::cut_for_repick(GcsContext& ctx) {
+  // A window is driven for half its steps at least: new sequences that come faster than the robots
+  // can stop and start again would keep them standing.
+  if (repick_ == nullptr || holding_ || ctx.tick() < window_tick_ + static_cast<std::uint32_t>(window_ / 2)) return;
+  // Every robot stops where it stands (not at its release: that may be the window's end), and the
+  // next window starts from there once every group stands still.
+  hold_why_ = repick_;
+  repick_ = nullptr;
+  holding_ = true;
+  send_order(ctx, task::OrderKind::Hold, {static_cast<std::int32_t>(seq_), kHoldStop});
 }
 
 }  // namespace swarm::gcs

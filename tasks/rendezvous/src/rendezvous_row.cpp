@@ -40,13 +40,15 @@ class RendezvousJudge : public sim::PhaseJudge {
     for (const Cell c : living) on_cells += std::count(ideal.cells.begin(), ideal.cells.end(), c) > 0 ? 1 : 0;
     const int cannot_reach = static_cast<int>(living.size() - ideal.cells.size());
     const bool moved = f.last_move_tick.has_value();
-    return {{"centre", {ideal.centre.x, ideal.centre.y}},
+    const bool packed = got.unreachable == cannot_reach && got.step_sum == best.step_sum;
+    return {{record::kGroundTruthDone, packed},
+            {"centre", {ideal.centre.x, ideal.centre.y}},
             {"robots_alive", living.size()},
             {"robots_lost", lost},
             {"robots_cannot_reach", cannot_reach},
             {"on_gathering_cells", on_cells},
             // Every robot that can reach the centre stands on one of the nearest cells there are.
-            {"packed", got.unreachable == cannot_reach && got.step_sum == best.step_sum},
+            {"packed", packed},
             {"step_sum", got.step_sum},
             {"ideal_step_sum", best.step_sum},
             {"max_steps", got.max_steps},

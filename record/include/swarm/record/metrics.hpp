@@ -31,7 +31,7 @@
 
 namespace swarm::record {
 
-inline constexpr int kMetricsSchemaVersion = 4;  // 4: longest_blocked_ticks; 3: leader hand-overs
+inline constexpr int kMetricsSchemaVersion = 5;  // 5: phases' ground truth verdicts; 4: longest_blocked_ticks; 3: leader hand-overs
 
 class MetricsError : public std::runtime_error {
  public:
@@ -127,12 +127,23 @@ struct Unreachable {
   std::uint32_t to_tick = 0;
 };
 
+// The key of a phase judge's verdict (sim/phase_judge.hpp): true when the ground truth says the
+// phase's work is done, null where the simulator cannot tell. It becomes PhaseMetrics's
+// ground_truth_done.
+inline constexpr const char* kGroundTruthDone = "ground_truth_done";
+
 struct PhaseMetrics {
   std::string name;  // explore | cover | mapf | collect
   std::uint32_t start_tick = 0;
   std::optional<std::uint32_t> end_tick;
+  // Done by the GCS's judgement and, where the simulator can tell, by the ground truth too.
   bool complete = false;
   std::optional<std::string> gave_up;  // why the GCS ended it incomplete (gcs_task.hpp given_up)
+  // The simulator's verdict from the ground truth (the task's judge: ground_truth_done; none where
+  // it cannot tell, e.g. random mapf goals only the GCS knows), and, when it says the work is not
+  // done although the GCS ended the phase complete, what they disagree on.
+  std::optional<bool> ground_truth_done;
+  std::optional<std::string> disagreement;
   MotionNumbers motion;
   nlohmann::json task = nlohmann::json::object();  // the task's own numbers (its README section)
 };

@@ -7,7 +7,9 @@
 //   start(world, tick)       the phase begins: set the world up (coverage targets, objects)
 //   after_tick(world, k)     every tick of the phase, once the robots moved and scanned
 //   last_tick(world, k)      the run ends in this phase at tick k
-//   judge(world, facts)      its numbers: merged into metrics.json phases[i].task
+//   judge(world, facts)      its numbers: merged into metrics.json phases[i].task; among them
+//                            record::kGroundTruthDone, whether the ground truth says the work is
+//                            done (null: it cannot tell), which the phase's completion needs
 #pragma once
 
 #include <cstdint>

@@ -70,6 +70,10 @@ class Planner {
   // cell that is not free, two agents on one cell, or a changed number of agents.
   [[nodiscard]] Window plan(const std::vector<Agent>& agents, int steps);
 
+  // The map grew or changed (an explored map): the next window plans on `map`, of the same size.
+  // The robots keep their priorities. Throws std::invalid_argument for another size.
+  void set_map(const OccupancyGrid& map);
+
   // Steps planned so far; the most steps in a row any robot had a goal and got no closer to it.
   [[nodiscard]] std::uint64_t steps_planned() const { return steps_planned_; }
   [[nodiscard]] int longest_wait() const { return longest_wait_; }

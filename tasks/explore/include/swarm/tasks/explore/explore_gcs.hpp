@@ -1,22 +1,37 @@
 // The GCS's exploration task (docs/papers.md section 1): planning rounds on the fused map with the
 // paper's one-round delay (planning_rounds.hpp), each round's map to the leaders, completion when
 // no reachable frontier is left.
+// Through the traffic layer (`drive`, docs/traffic.md) the leaders send their rounds' waypoints
+// here (waypoint_report.hpp) and the GCS drives every robot to its waypoint in conflict-free
+// windows planned on the fused map as it grows (the mapf task's lifelong mode); a new round's
+// waypoints replace the old ones when the window being driven ends. A group has arrived when
+// every robot it gave a waypoint has reached it, or it was skipped as unreachable.
 #pragma once
 
+#include <memory>
 #include <optional>
+#include <vector>
 
 #include "swarm/gcs/gcs_task.hpp"
 #include "swarm/tasks/explore/planning_rounds.hpp"
+#include "swarm/tasks/mapf/mapf_gcs.hpp"
 
 namespace swarm::gcs {
 
 class ExploreGcsTask : public GcsTask {
  public:
-  ExploreGcsTask(std::uint32_t phase, tasks::PlanningRoundsConfig config)
-      : phase_(phase), config_(std::move(config)), rounds_(config_) {}
+  // `drive`: the traffic layer's settings and window length (none: each leader sends its
+  // waypoints to its robots, which drive there themselves).
+  struct Drive {
+    swarm::scenario::Mapf paths;
+    int window = 16;
+  };
+  ExploreGcsTask(std::uint32_t phase, tasks::PlanningRoundsConfig config, std::optional<Drive> drive = std::nullopt);
   void start(GcsContext& ctx) override;
   void step(GcsContext& ctx) override;
   [[nodiscard]] bool complete() const override { return complete_; }
+  [[nodiscard]] std::string given_up() const override { return drive_ ? drive_->given_up() : std::string(); }
+  void on_report(const task::Report& r, GcsContext& ctx) override;
   [[nodiscard]] ProgressLine progress(const GcsContext& ctx) const override;
   void on_round_done(int group, std::uint32_t round, GcsContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
@@ -29,6 +44,21 @@ class ExploreGcsTask : public GcsTask {
   // first_round_ + r - 1.
   std::optional<std::uint32_t> first_round_;
   bool complete_ = false;
+
+  // Through the traffic layer.
+  // The sequences the drive takes: every robot's waypoint, as a cell it can stand on.
+  std::vector<std::vector<MapfGcsTask::Stop>> targets(const GcsContext& ctx, const planner::OccupancyGrid& map,
+                                                       const std::vector<int>& robots);
+  void target_done(int robot, const MapfGcsTask::Stop& stop, bool reached);
+  // Round `round`'s arrival for every group whose robots have no waypoint left.
+  void note_arrivals();
+  std::unique_ptr<MapfGcsTask> drive_;
+  bool driving_ = false;      // the drive has started (with the first round's waypoints)
+  bool new_targets_ = false;  // waypoints came in this tick
+  std::vector<std::optional<planner::Cell>> target_;   // per robot id: where it is driven
+  std::vector<std::uint32_t> group_round_;             // per group: the wire round of its waypoints
+  std::vector<bool> group_arrived_;                    // per group: its round's arrival noted
+  std::uint64_t targets_reached_ = 0, targets_skipped_ = 0, targets_moved_ = 0;
 };
 
 }  // namespace swarm::gcs

@@ -1,21 +1,31 @@
 // The leader's exploration task (docs/papers.md section 1): at every planning round the GCS starts, it
 // plans the group's waypoints on the stale global map and the group map (planner/explore/explore.hpp),
 // assigns them, and tells the GCS when the whole group is done with them.
+// Through the traffic layer (`traffic`, docs/traffic.md) it sends the waypoints to the GCS instead
+// (waypoint_report.hpp), which judges the round's arrivals itself, and drives the GCS's windows
+// as a mapf plan (tasks/mapf/mapf_leader.hpp).
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "swarm/leader/group_task.hpp"
 #include "swarm/planner/explore/explore.hpp"
+#include "swarm/tasks/mapf/mapf_leader.hpp"
 
 namespace swarm::leader {
 
 class ExploreGroupTask : public GroupTask {
  public:
-  ExploreGroupTask(const swarm::scenario::Explore& config, std::uint64_t seed, int robots_per_group);
+  // `drive`: the traffic layer's driving settings (none: the classic drive, waypoints to the robots).
+  ExploreGroupTask(const swarm::scenario::Explore& config, std::uint64_t seed, int robots_per_group, int group,
+                   std::optional<swarm::scenario::Mapf> drive = std::nullopt);
   void start(GroupContext& ctx) override;
+  void on_order(const task::Order& order, GroupContext& ctx) override;
+  void on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) override;
+  void took_over(GroupContext& ctx) override;
   void step(GroupContext& ctx) override;
   void finish_step(GroupContext& ctx) override;
   void gcs_back(GroupContext& ctx) override;
@@ -30,6 +40,8 @@ class ExploreGroupTask : public GroupTask {
   void plan(std::uint32_t round, GroupContext& ctx);
 
   planner::ExploreConfig explore_;
+  std::unique_ptr<MapfGroupTask> drive_;  // through the traffic layer
+  task::Report sent_waypoints_;           // through the layer: the round's, as sent to the GCS
   std::optional<std::uint32_t> pending_round_;
   std::uint32_t round_ = 0;
   std::vector<bool> arrived_;

@@ -19,7 +19,9 @@
 //     its robots whose progress or release changed; state Done when all its robots of plan s have
 //     arrived; Held after a hold when they all stand still.
 //   Order Progress, kAllGroups: values = [s, robot, step, release, ...], relayed.
-//   Order Hold, seq s: stop releasing plan s.
+//   Order Hold, seq s: stop releasing plan s. values = [s] or [s, kHoldStop]: with kHoldStop
+//     each leader also stops its robots where they stand (an empty route each), as a timed plan's
+//     hold does, instead of letting them drive to their release; Held once all are confirmed.
 //   Order Rotate, kAllGroups, seq s: values = [s, q, T]: the robots of the plan's
 //     rotation q (planner/mapf/adg.hpp: robots moving round a cycle of cells in one time step)
 //     make their step of it at tick T, all together. Driven by the graph, leaders never release a
@@ -49,6 +51,9 @@
 
 namespace swarm::gcs {
 
+// Order Hold's second value: stop the robots where they stand (see the contract above).
+inline constexpr std::int32_t kHoldStop = 1;
+
 class MapfGcsTask : public GcsTask {
  public:
   // Where the robots go: called at every plan (the phase's start, and again after a loss) with the
@@ -68,8 +73,8 @@ class MapfGcsTask : public GcsTask {
   // robot stands on it. The picker gives every robot id its sequence (empty: none; such a robot
   // may still be pushed aside) at the phase's start, after a loss (the living robots it is
   // given), and at restart(); `why` says which. Every stop behind a robot is handed to `done`
-  // once known: at the end of its window, or, for a window cut short by a loss, as far as each
-  // robot's reported progress goes. Complete when every sequence is done; given up after a run of
+  // once known: when the robot's reported progress passes it, and at the end of its window (or of
+  // one cut short by a loss) as far as the robot got. Complete when every sequence is done; given up after a run of
   // windows in which no robot moved or reached a goal.
   struct Stop {
     enum class Act : std::uint8_t { kNone, kPick, kDrop };
@@ -87,10 +92,18 @@ class MapfGcsTask : public GcsTask {
     int window = 16;                                      // steps per window
     planner::MotionModel motion = planner::MotionModel::four();  // the phase's robots'
     StopDone done;                                        // may be empty
+    // The map grows while the robots drive (exploration): every window plans on the fused map of
+    // its tick, not the phase's first.
+    bool map_grows = false;
   };
   MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, Lifelong lifelong);
   // Lifelong, once complete: asks the picker for new sequences and drives them.
   void restart(GcsContext& ctx, const char* why);
+  // Lifelong: the picker has new sequences (a new planning round's waypoints). Once the window
+  // being driven has run half its steps it is held with every robot stopped where it stands, and
+  // the next is planned from there with the picker's sequences (at once if the drive was complete,
+  // at its end if it ends first).
+  void repick(GcsContext& ctx, const char* why);
   void start(GcsContext& ctx) override;
   void step(GcsContext& ctx) override;
   [[nodiscard]] bool complete() const override { return complete_; }
@@ -115,8 +128,11 @@ class MapfGcsTask : public GcsTask {
   // next one, or completes.
   void window_done(GcsContext& ctx);
   // Lifelong: the stops behind each planned robot leave its sequence (and go to stop_done_), as
-  // far as its reported progress goes, or further along its route to the cell it stands on.
-  void credit_window(const GcsContext& ctx);
+  // far as its reported progress goes, or, once the window is `over`, further along its route to
+  // the cell it stands on.
+  void credit_window(const GcsContext& ctx, bool over);
+  // Lifelong: a repick waiting, and the window old enough: hold it, stopping every robot.
+  void cut_for_repick(GcsContext& ctx);
   // Lifelong: robot `robot`'s pick-ups and drops in the current window, on its planned route.
   void add_acts(int robot, task::PlannedRoute& route) const;
   // A new plan's bookkeeping: its number, and which groups are in it under which leaders.
@@ -164,6 +180,10 @@ class MapfGcsTask : public GcsTask {
   RoutePicker pick_routes_;
   StopDone stop_done_;
   int window_ = 0;
+  bool map_grows_ = false;
+  const char* repick_ = nullptr;    // new sequences wait (repick's `why`)
+  const char* hold_why_ = nullptr;  // a hold's reason other than a loss (the next plan's `why`)
+  std::uint32_t window_tick_ = 0;   // the tick the current window was sent
   planner::MotionModel motion_ = planner::MotionModel::four();
   std::vector<std::vector<Stop>> sequences_;    // per robot id: the stops still ahead
   // per robot id: for each stop the current window gets it past, the window's time step at which

@@ -17,7 +17,7 @@ namespace swarm::tasks {
 [[nodiscard]] swarm::scenario::Mapf resolved_mapf(const swarm::scenario::Mapf& mapf,
                                                   const swarm::scenario::Scenario& scenario);
 
-// How the leaders drive the traffic layer's windows (cover and collect with `traffic`): always by
+// How the leaders drive the traffic layer's windows (explore, cover and collect): always by
 // each window's action-dependency graph. A robot lost without warning then only makes the others
 // wait (timed driving would send them into its cell), and in lockstep without delay it costs
 // next to nothing: explore,cover,mapf,collect on small, maze1 and open, 3 x 3 robots, took
