@@ -243,6 +243,7 @@ bool GcsNode::step(const msgs::Clock& clock) {
   task_reports_.clear();
   if (settling_) {
     settle(ctx);
+    give_up_settling(clock.tick());
   } else if (!complete_tick_ && !gave_up_) {
     tasks_[phase_]->step(ctx);
     if (tasks_[phase_]->complete()) {
@@ -251,6 +252,7 @@ bool GcsNode::step(const msgs::Clock& clock) {
       if (phase_ + 1 < tasks_.size()) {
         ++phase_;
         settling_ = true;
+        settle_since_ = clock.tick();
         settled_.assign(static_cast<std::size_t>(setup_.topology.groups()), false);
         announce_phase_(phase_, config::task_name(phases_[phase_]), true);
       } else {
@@ -304,6 +306,24 @@ void GcsNode::watch_stall(const ProgressLine& line, std::uint32_t tick) {
   char why[160];
   std::snprintf(why, sizeof why, "stalled: %s at %.1f %% since tick %u, no progress in %u ticks (stall_ticks)",
                 line.label.c_str(), 100.0 * stall_best_, stall_since_, limit);
+  phase_ends_.push_back(tick);
+  record_phase(tick, true, false);
+  std::fprintf(stderr, "gcs: phase %u (%s) given up at tick %u: %s\n", phase_, config::task_name(phases_[phase_]).c_str(),
+               tick, why);
+  gave_up_ = why;
+}
+
+void GcsNode::give_up_settling(std::uint32_t tick) {
+  const std::uint32_t limit = setup_.world.scenario.stall_ticks();
+  if (!settling_ || limit == 0 || tick - settle_since_ < limit) return;
+  // The phase cannot start from robots that are not known to stand still: it starts and ends
+  // here, given up, and the mission with it.
+  char why[160];
+  std::snprintf(why, sizeof why, "stalled: not every group reported its robots standing within %u ticks (stall_ticks)",
+                limit);
+  settling_ = false;
+  phase_starts_.push_back(tick);
+  record_phase(tick, false, false);
   phase_ends_.push_back(tick);
   record_phase(tick, true, false);
   std::fprintf(stderr, "gcs: phase %u (%s) given up at tick %u: %s\n", phase_, config::task_name(phases_[phase_]).c_str(),

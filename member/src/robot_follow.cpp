@@ -11,10 +11,16 @@ using planner::RouteState;
 
 void RobotAgent::follow(std::uint32_t id, std::vector<Cell> cells, std::uint32_t release,
                         std::vector<std::uint32_t> picks, std::vector<std::uint32_t> drops, std::uint32_t start_tick) {
+  if (id < newest_route_) return;  // overtaken by a newer one on the way (link jitter, a resend)
+  newest_route_ = id;
   waypoint_.reset();
   path_.clear();
   Follow f;
   f.cells = std::move(cells);
+  for (const auto& [route, up_to] : early_releases_) {
+    if (route == id) release = std::max(release, up_to);
+  }
+  std::erase_if(early_releases_, [id](const auto& r) { return r.first == id; });
   f.release = std::min<std::uint32_t>(release, f.cells.empty() ? 0 : static_cast<std::uint32_t>(f.cells.size() - 1));
   f.picks = std::move(picks);
   f.drops = std::move(drops);
@@ -24,7 +30,19 @@ void RobotAgent::follow(std::uint32_t id, std::vector<Cell> cells, std::uint32_t
 }
 
 void RobotAgent::release(std::uint32_t id, std::uint32_t up_to) {
-  if (!follow_ || follow_progress_.id != id) return;  // a release for a route replaced since
+  if (!follow_ || follow_progress_.id != id) {
+    // For a route replaced since (forgotten with the others once they are many), or one still on
+    // its way.
+    constexpr std::size_t kKept = 8;
+    auto it = std::find_if(early_releases_.begin(), early_releases_.end(), [id](const auto& r) { return r.first == id; });
+    if (it != early_releases_.end()) {
+      it->second = std::max(it->second, up_to);
+    } else {
+      if (early_releases_.size() == kKept) early_releases_.erase(early_releases_.begin());
+      early_releases_.emplace_back(id, up_to);
+    }
+    return;
+  }
   const auto last = static_cast<std::uint32_t>(follow_->cells.size() - 1);
   follow_->release = std::max(follow_->release, std::min(up_to, last));
 }

@@ -153,5 +153,29 @@ TEST(GcsNode, APhaseWhoseProgressStopsIsGivenUpAsStalled) {
   EXPECT_LT(m["ticks_run"].get<int>(), 1000);
 }
 
+// Between two phases the robots must all be known to stand still before the next starts. A member
+// whose links are cut as exploration ends cannot confirm its stop until they heal: after
+// stall_ticks of waiting the next phase is given up as stalled, not waited for up to max_ticks.
+TEST(GcsNode, RobotsThatDoNotAllStandStillInTimeStallTheNextPhase) {
+  const std::string mission = "mission { phase { explore {} } phase { cover {} } }";
+  // Lockstep runs are deterministic: the same run without the cut says when exploration ends.
+  swarm::test::FakeSwarm plain(swarm::test::setup_from_text("map: 'small' max_ticks: 3000 " + mission));
+  const int end = plain.run_to_end()["phases"][0]["end_tick"].get<int>();
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+      "map: 'small' max_ticks: 3000 stall_ticks: 40 faults { agent: 'member-0-1' cut_from_tick: " + std::to_string(end) +
+      " cut_to_tick: " + std::to_string(end + 800) + " } " + mission));
+  const auto m = s.run_to_end();
+  EXPECT_FALSE(m["complete"].get<bool>());
+  ASSERT_EQ(m["phases"].size(), 2u) << m["phases"].dump(1);
+  EXPECT_TRUE(m["phases"][0]["complete"].get<bool>());
+  EXPECT_EQ(m["phases"][0]["end_tick"], end);
+  const auto& cover = m["phases"][1];
+  ASSERT_TRUE(cover["gave_up"].is_string()) << cover.dump(1);
+  EXPECT_EQ(cover["gave_up"].get<std::string>().rfind("stalled: not every group reported its robots standing", 0), 0u);
+  EXPECT_EQ(cover["start_tick"], cover["end_tick"]);
+  EXPECT_EQ(cover["start_tick"].get<int>(), end + 40);
+  EXPECT_LT(m["ticks_run"].get<int>(), end + 800);
+}
+
 }  // namespace
 }  // namespace swarm::gcs

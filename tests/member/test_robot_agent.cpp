@@ -318,6 +318,26 @@ TEST(RobotAgent, StuckWithinTwoCellsOfTheGoalIsBlockedNearNotArrived) {
   EXPECT_EQ(far.waypoint(), (std::optional<Cell>{Cell{3, 0}}));
 }
 
+// A release can arrive before its route (another topic; a lost message is sent again later): it
+// is kept, and the route is driven as far as it says when it comes. Releases of other routes
+// change nothing.
+TEST(RobotAgent, AReleaseThatArrivesBeforeItsRouteIsKeptForIt) {
+  const auto art = ascii_map({
+      "#######",
+      "#A....#",
+      "#######",
+  });
+  RobotAgent robot = agent_for(art.grid);
+  const Cell a = art.at.at('A');
+  const std::vector<Cell> route = {a, {a.x + 1, a.y}, {a.x + 2, a.y}, {a.x + 3, a.y}};
+  robot.release(7, 3);  // route 7's release, early
+  robot.release(9, 1);  // another route's
+  robot.follow(7, route, 1);
+  const RobotAgent::Step s = tick_at(robot, art.grid, a, 3.0f);
+  ASSERT_TRUE(s.path_changed);
+  EXPECT_EQ(s.path, route);  // to index 3, not only 1
+}
+
 TEST(RobotAgent, LearnReturnsHowManyCellsChanged) {
   RobotAgent robot(3, 2, 0.2);
   // Cell 0 twice in one patch counts once; cell 1 becomes Occupied.

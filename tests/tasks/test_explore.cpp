@@ -119,6 +119,18 @@ TEST(ExploreTask, ThroughTheTrafficLayerWithDelayAndLossesNoRobotCollides) {
   }
 }
 
+// With jitter on the member links a route can overtake an older one: the robot keeps the newer
+// (before, a stop sent between phases was overtaken by the last window's route, the stop was
+// never confirmed and the next phase never started: empty, seed 2).
+TEST(ExploreTask, ThroughTheTrafficLayerUnderJitterTheNextPhaseStarts) {
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+      "map: 'empty' groups: 3 robots_per_group: 3 max_ticks: 3000 seed: 2 "
+      "links { member_leader { delay_ticks: 3 jitter_ticks: 2 } } mission { phase { explore {} } phase { cover {} } }"));
+  const auto m = s.run_to_end();
+  ASSERT_TRUE(m["complete"].get<bool>()) << m["phases"].dump();
+  for (const auto& p : m["phases"]) swarm::test::expect_no_conflict(p);
+}
+
 // The paper's drive stays available: each robot plans its own way to its waypoint.
 TEST(ExploreTask, WithoutTheTrafficLayerRobotsDriveToTheirWaypointsThemselves) {
   swarm::test::FakeSwarm s(swarm::test::setup_from_text(std::string(kTwoGroups) +

@@ -63,6 +63,8 @@ class GcsNode {
   // Between phases: starts phase_ once every group with a living leader has reported its robots
   // standing (see the header).
   void settle(GcsContext& ctx);
+  // Settling for stall_ticks without every group standing: the phase is given up as stalled.
+  void give_up_settling(std::uint32_t tick);
 
   comm::LockstepAgent& agent_;
   const app::RoleSetup& setup_;
@@ -79,6 +81,7 @@ class GcsNode {
   std::function<void(std::uint32_t, const std::string&, bool settle)> announce_phase_;
   bool settling_ = false;       // phase_ waits for its robots to stand still
   std::vector<bool> settled_;   // per group, while settling: its robots stand
+  std::uint32_t settle_since_ = 0;  // the tick settling began
   std::vector<msgs::GroupStatus> statuses_;
   std::vector<msgs::TaskReport> task_reports_;
   Progress progress_;

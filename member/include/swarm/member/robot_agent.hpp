@@ -49,9 +49,14 @@ class RobotAgent {
   // step() of tick `start_tick` (or at once if that has passed). An empty route means "stop where
   // you stand": the simulator is told at once, and the route's progress turns Stopped once the
   // simulator confirms it (until then Active), so a leader knows when the robot stands still.
+  // Route ids only grow (a leader numbers its routes, a standby's above its predecessor's): a
+  // route older than one followed already was overtaken on the way and is ignored.
   void follow(std::uint32_t id, std::vector<planner::Cell> cells, std::uint32_t release,
               std::vector<std::uint32_t> picks = {}, std::vector<std::uint32_t> drops = {},
               std::uint32_t start_tick = 0);
+  // Route `id` may be driven as far as index `up_to`. A release may come before its route (they
+  // travel on different topics, and a lost message is sent again later): it is kept until the
+  // route comes.
   void release(std::uint32_t id, std::uint32_t up_to);
 
   struct Step {
@@ -120,6 +125,9 @@ class RobotAgent {
   };
   std::optional<Follow> follow_;
   planner::RouteProgress follow_progress_;
+  std::uint32_t newest_route_ = 0;  // the highest route id followed
+  // Releases of routes not followed (yet): route id -> index; the few latest.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> early_releases_;
 };
 
 }  // namespace swarm::member
