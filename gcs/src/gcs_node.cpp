@@ -87,9 +87,8 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const 
   // complete before tick 0).
   // To every candidate leader: a standby keeps the latest of each, to take its group over.
   const std::vector<comm::AgentId> leaders = setup.topology.all_candidates();
-  std::vector<comm::AgentId> leaders_and_sim = leaders;
-  leaders_and_sim.push_back(setup.topology.sim());
-  auto& phase = agent.advertise<msgs::PhaseStart>(topic::kPhase, LinkClass::LeaderGcs, leaders_and_sim);
+  auto& phase = agent.advertise<msgs::PhaseStart>(topic::kPhase, LinkClass::LeaderGcs, leaders);
+  auto& phase_sim = agent.advertise<msgs::PhaseStart>(topic::kPhaseSim, LinkClass::Control, {setup.topology.sim()});
   auto& order = agent.advertise<msgs::TaskOrder>(topic::kTaskOrder, LinkClass::LeaderGcs, leaders);
   auto& round = agent.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, leaders);
   outlets_.order = [this, &order](const task::Order& o) {
@@ -110,12 +109,13 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const 
     round.send(r);
     return index;
   };
-  announce_phase_ = [&phase](std::uint32_t index, const std::string& task, bool settle) {
+  announce_phase_ = [&phase, &phase_sim](std::uint32_t index, const std::string& task, bool settle) {
     msgs::PhaseStart p;
     p.phase(index);
     p.task(task);
     p.settle(settle);
     phase.send(p);
+    phase_sim.send(p);
   };
   for (std::uint32_t i = 0; i < phases_.size(); ++i) tasks_.push_back(make_task(phases_[i], setup, i));
 

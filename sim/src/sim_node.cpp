@@ -46,7 +46,7 @@ SimNode::SimNode(comm::LockstepClock& clock, const app::RoleSetup& setup, PhaseS
   clock.subscribe<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, [this, &t](const msgs::MotionCommand& m) {
     if (t.is_robot(m.robot()) && alive_[m.robot()]) world_.command(m.robot(), m.route_id(), app::from_xy(m.path_xy()), m.pick_steps(), m.drop_steps());
   }, comm::Delivery::Reliable, t.robots());
-  clock.subscribe<msgs::PhaseStart>(topic::kPhase, LinkClass::LeaderGcs,
+  clock.subscribe<msgs::PhaseStart>(topic::kPhaseSim, LinkClass::Control,
                                     [this](const msgs::PhaseStart& p) {
                                       // Judged from when the robots stand still (PhaseStart.settle).
                                       if (!p.settle()) next_phase_ = p.phase();

@@ -166,5 +166,22 @@ TEST(CollectTask, ThroughTheTrafficLayerUnderLossOnTheMemberLinkEveryObjectIsDel
   }
 }
 
+// Loss on every link, collect after the other phases: the simulator switches to collect's
+// 8-connected moves before any robot acts on collect's orders (before, a lost and repeated phase
+// announcement reached it after a leader's own robot had set off diagonally, the move was refused
+// as a wall stop and the robot never moved again: open, seed 2).
+TEST(CollectTask, ThroughTheTrafficLayerAfterTheOtherPhasesUnderLossOnEveryLink) {
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+      "map: 'open' groups: 3 robots_per_group: 3 max_ticks: 12000 seed: 2 links { sim_robot { loss: 0.05 } "
+      "member_leader { loss: 0.05 } leader_gcs { loss: 0.05 } } "
+      "mission { phase { explore {} } phase { cover {} } phase { mapf {} } phase { collect {} } }"));
+  const auto m = s.run_to_end();
+  expect_all_delivered_without_a_conflict(m);
+  for (const auto& p : m["phases"]) {
+    swarm::test::expect_no_conflict(p);
+    for (const auto& [robot, counts] : p["motion"]["per_robot"].items()) EXPECT_EQ(counts["wall_stops"], 0) << robot;
+  }
+}
+
 }  // namespace
 }  // namespace swarm::leader

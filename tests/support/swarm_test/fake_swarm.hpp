@@ -172,9 +172,8 @@ class FakeSwarm {
       sub(Tag<msgs::GroupStatus>{}, topic::kGroupStatus, LinkClass::LeaderGcs, writers);
       sub(Tag<msgs::TaskReport>{}, topic::kTaskReport, LinkClass::LeaderGcs, writers);
       sub(Tag<msgs::PlanReport>{}, topic::kPlanReport, LinkClass::Telemetry, writers);
-      auto leaders_and_sim = leaders;
-      leaders_and_sim.push_back(t.sim());
-      pub(Tag<msgs::PhaseStart>{}, topic::kPhase, LinkClass::LeaderGcs, leaders_and_sim);
+      pub(Tag<msgs::PhaseStart>{}, topic::kPhase, LinkClass::LeaderGcs, leaders);
+      pub(Tag<msgs::PhaseStart>{}, topic::kPhaseSim, LinkClass::Control, {t.sim()});
       pub(Tag<msgs::TaskOrder>{}, topic::kTaskOrder, LinkClass::LeaderGcs, leaders);
       pub(Tag<msgs::RoundStart>{}, topic::kRound, LinkClass::LeaderGcs, leaders);
       return;

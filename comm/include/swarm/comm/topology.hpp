@@ -73,6 +73,10 @@ inline const std::string kHeartbeat = "heartbeat";
 inline const std::string kPlanReport = "plan_report";
 inline const std::string kReport = "report";
 inline const std::string kPhase = "phase";
+// The same announcement to the simulator, on the unemulated control link: the simulator is the
+// world, not a radio node, and must move the robots by a phase's motion model before any robot
+// acts on that phase's orders (a lost and repeated announcement would come after them).
+inline const std::string kPhaseSim = "phase_sim";
 inline const std::string kTaskOrder = "task_order";
 inline const std::string kTaskReport = "task_report";
 inline std::string sense(AgentId robot) { return "sense_" + std::to_string(robot); }
