@@ -16,6 +16,7 @@
 #include "offline_common.hpp"
 #include "plot.hpp"
 #include "run_launch.hpp"
+#include "scenario_changes.hpp"
 #include "stats.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/record/metrics.hpp"
@@ -32,24 +33,14 @@ struct Links {
   std::string name;
   std::string label;
   Colour colour;
-  std::function<void(Scenario&)> apply;
+  ScenarioChange apply;
 };
 
 const std::vector<Links>& all_links() {
   static const std::vector<Links> links = {
       {"base", "exact links", {0, 114, 178}, [](Scenario&) {}},
-      {"delay", "member<->leader 3 ± 2 ticks", {213, 94, 0},
-       [](Scenario& s) {
-         s.mutable_links()->mutable_member_leader()->set_delay_ticks(3);
-         s.mutable_links()->mutable_member_leader()->set_jitter_ticks(2);
-       }},
-      {"loss", "5 % loss on every link", {0, 158, 115},
-       [](Scenario& s) {
-         for (auto* l : {s.mutable_links()->mutable_sim_robot(), s.mutable_links()->mutable_member_leader(),
-                         s.mutable_links()->mutable_leader_gcs()}) {
-           l->set_loss(0.05);
-         }
-       }},
+      {"delay", "member<->leader 3 ± 2 ticks", {213, 94, 0}, member_leader_delay(3, 2)},
+      {"loss", "5 % loss on every link", {0, 158, 115}, every_link_loss(0.05)},
   };
   return links;
 }
@@ -95,11 +86,6 @@ struct Outcome {
   std::string failure;
   std::vector<std::optional<PhaseRow>> phases;  // per phase of the mission (none: never started)
 };
-
-double task_number(const record::PhaseMetrics& p, const char* key) {
-  const auto it = p.task.find(key);
-  return it != p.task.end() && it->is_number() ? it->get<double>() : std::nan("");
-}
 
 PhaseRow phase_row(const record::PhaseMetrics& p, std::uint32_t robots) {
   PhaseRow r;

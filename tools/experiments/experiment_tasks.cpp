@@ -12,6 +12,7 @@
 #include "experiment.hpp"
 #include "experiment_runner.hpp"
 #include "offline_common.hpp"
+#include "scenario_changes.hpp"
 #include "stats.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/config/task_config.hpp"
@@ -72,22 +73,6 @@ Change team(std::uint32_t groups, std::uint32_t robots_per_group) {
   };
 }
 
-Change member_leader_delay(std::uint32_t ticks, std::uint32_t jitter) {
-  return [=](Scenario& s) {
-    s.mutable_links()->mutable_member_leader()->set_delay_ticks(ticks);
-    s.mutable_links()->mutable_member_leader()->set_jitter_ticks(jitter);
-  };
-}
-
-Change every_link_loss(double loss) {
-  return [=](Scenario& s) {
-    for (auto* l : {s.mutable_links()->mutable_sim_robot(), s.mutable_links()->mutable_member_leader(),
-                    s.mutable_links()->mutable_leader_gcs()}) {
-      l->set_loss(loss);
-    }
-  };
-}
-
 // Applies `f` to every phase of the mission that runs task `task` (its registry name).
 Change each_phase(const std::string& task, std::function<void(swarm::scenario::Phase&)> f) {
   return [=](Scenario& s) {
@@ -95,12 +80,6 @@ Change each_phase(const std::string& task, std::function<void(swarm::scenario::P
       if (config::task_name(ph) == task) f(ph);
     }
   };
-}
-
-double task_number(const record::PhaseMetrics& p, const std::string& key) {
-  const auto it = p.task.find(key);
-  if (it == p.task.end() || !it->is_number()) return std::nan("");
-  return it->get<double>();
 }
 
 Spec cover_spec() {
