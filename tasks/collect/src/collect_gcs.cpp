@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "swarm/tasks/collect/nearest_with_room.hpp"
 #include "swarm/comm/link.hpp"
 #include "swarm/planner/grid/rng.hpp"
 #include "swarm/planner/tours/tour.hpp"
@@ -49,19 +50,15 @@ void CollectGcsTask::start(GcsContext& ctx) {
     return;
   }
   if (groups.empty()) return;
-  const std::size_t room = (world_.objects.size() + groups.size() - 1) / groups.size();
+  // Each object to the group whose leader is nearest, with room left.
+  std::vector<planner::Cell> objects, leaders;
+  for (const auto& o : world_.objects) objects.push_back(o.cell);
+  for (int g : groups) leaders.push_back(ctx.cell_of(ctx.leader_of(g)));
+  std::vector<std::size_t> held;
+  const std::vector<int> to = collect::nearest_with_room(objects, leaders, held);
   std::vector<std::vector<std::int32_t>> ids(static_cast<std::size_t>(t.groups()));
-  for (std::size_t i = 0; i < world_.objects.size(); ++i) {
-    const planner::Cell o = world_.objects[i].cell;
-    int best = -1;
-    double best_d = std::numeric_limits<double>::infinity();
-    for (int g : groups) {
-      if (ids[static_cast<std::size_t>(g)].size() >= room) continue;
-      const planner::Cell l = ctx.cell_of(ctx.leader_of(g));
-      const double d = std::hypot(o.x - l.x, o.y - l.y);
-      if (d < best_d) best_d = d, best = g;
-    }
-    ids[static_cast<std::size_t>(best)].push_back(static_cast<std::int32_t>(i));
+  for (std::size_t i = 0; i < to.size(); ++i) {
+    ids[static_cast<std::size_t>(groups[static_cast<std::size_t>(to[i])])].push_back(static_cast<std::int32_t>(i));
   }
   for (int g : groups) {
     auto& mine = ids[static_cast<std::size_t>(g)];
@@ -207,27 +204,24 @@ std::vector<std::vector<MapfGcsTask::Stop>> CollectGcsTask::tours(const GcsConte
   for (int r = 0; r < t.robots(); ++r) {
     if (std::find(robots.begin(), robots.end(), r) == robots.end()) around.set(ctx.cell_of(r), planner::CellState::Occupied);
   }
-  // Each robot keeps what it carries; each lying object goes to the nearest robot with room left.
+  // Each robot keeps what it carries; each lying object goes to the nearest robot with room left
+  // (nearest_with_room.hpp).
   std::vector<std::vector<int>> mine(static_cast<std::size_t>(t.robots()));
   std::vector<int> lying;
   for (std::size_t id = 0; id < known_.size(); ++id) {
     if (known_[id][0] == collect::kObjectCarried) mine[static_cast<std::size_t>(known_[id][1])].push_back(static_cast<int>(id));
     if (known_[id][0] == collect::kObjectLying) lying.push_back(static_cast<int>(id));
   }
-  std::size_t total = lying.size();
-  for (const int r : robots) total += mine[static_cast<std::size_t>(r)].size();
-  const std::size_t room = robots.empty() ? 0 : (total + robots.size() - 1) / robots.size();
-  for (const int id : lying) {
-    const planner::Cell c{known_[static_cast<std::size_t>(id)][1], known_[static_cast<std::size_t>(id)][2]};
-    int best = -1;
-    double best_d = std::numeric_limits<double>::infinity();
-    for (const int r : robots) {
-      if (mine[static_cast<std::size_t>(r)].size() >= room) continue;
-      const planner::Cell p = ctx.cell_of(r);
-      const double d = std::hypot(p.x - c.x, p.y - c.y);
-      if (d < best_d) best_d = d, best = r;
-    }
-    if (best >= 0) mine[static_cast<std::size_t>(best)].push_back(id);
+  std::vector<planner::Cell> cells, holders;
+  std::vector<std::size_t> held;
+  for (const int id : lying) cells.push_back({known_[static_cast<std::size_t>(id)][1], known_[static_cast<std::size_t>(id)][2]});
+  for (const int r : robots) {
+    holders.push_back(ctx.cell_of(r));
+    held.push_back(mine[static_cast<std::size_t>(r)].size());
+  }
+  const std::vector<int> to = collect::nearest_with_room(cells, holders, held);
+  for (std::size_t i = 0; i < lying.size(); ++i) {
+    if (to[i] >= 0) mine[static_cast<std::size_t>(robots[static_cast<std::size_t>(to[i])])].push_back(lying[i]);
   }
   std::vector<std::vector<Stop>> stops(static_cast<std::size_t>(t.robots()));
   for (const int r : robots) {

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "swarm/tasks/collect/nearest_with_room.hpp"
 #include "swarm/comm/link.hpp"
 #include "swarm/tasks/collect/object_facts.hpp"
 #include "swarm/planner/grid/astar.hpp"
@@ -154,22 +155,19 @@ void CollectGroupTask::resume(GroupContext& ctx) {
 }
 
 void CollectGroupTask::share(const std::vector<int>& ids, GroupContext& ctx) {
-  // Each object to the nearest living robot with room left (room: an even share of these and what
-  // the robots have pending already).
+  // Each object to the nearest living robot with room left, counting what the robots have
+  // pending already (nearest_with_room.hpp).
   const std::vector<int> living = ctx.living();
-  std::size_t total = ids.size();
-  for (int i : living) total += robots_[static_cast<std::size_t>(i)].pending.size();
-  const std::size_t room = (total + living.size() - 1) / std::max<std::size_t>(1, living.size());
-  for (int id : ids) {
-    int best = -1;
-    double best_d = std::numeric_limits<double>::infinity();
-    for (int i : living) {
-      if (robots_[static_cast<std::size_t>(i)].pending.size() >= room) continue;
-      const Cell at = ctx.cell_of(i), c = where_[static_cast<std::size_t>(id)];
-      const double d = std::hypot(at.x - c.x, at.y - c.y);
-      if (d < best_d) best_d = d, best = i;
-    }
-    if (best >= 0) robots_[static_cast<std::size_t>(best)].pending.push_back(id);
+  std::vector<Cell> objects, at;
+  std::vector<std::size_t> held;
+  for (int id : ids) objects.push_back(where_[static_cast<std::size_t>(id)]);
+  for (int i : living) {
+    at.push_back(ctx.cell_of(i));
+    held.push_back(robots_[static_cast<std::size_t>(i)].pending.size());
+  }
+  const std::vector<int> to = collect::nearest_with_room(objects, at, held);
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    if (to[k] >= 0) robots_[static_cast<std::size_t>(living[static_cast<std::size_t>(to[k])])].pending.push_back(ids[k]);
   }
 }
 
