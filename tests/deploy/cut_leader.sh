@@ -43,8 +43,9 @@ while read -r interval; do
 done < <(sed 's/},{/}\n{/g' <<<"$unreachable")
 ((away < 200)) || fail "group 1 was unreachable for $away ticks although its standby took over"
 
-# Every message reached every receiver it was meant for (the standbys hear the members too).
-for topic in patch_up patch_gcs group_status; do
+# Every message reached every receiver it was meant for (the standbys hear the members too). The
+# leaders' task reports carry each exploration round's waypoints to the GCS, which drives them.
+for topic in patch_up patch_gcs task_report; do
   b=$(block_of "\"$topic\": {")
   [[ $b =~ \"addressed_messages\":([0-9]+) ]] || fail "no traffic on $topic"
   sent=${BASH_REMATCH[1]}
