@@ -68,7 +68,7 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, 
   }
   // The task's outlets; the leader's own robot (self_index_) is told directly.
   outlets_.route = [this, route](int index, const task::Route& plan) {
-    msgs::Route r = app::route_msg(plan, phase_, topology_.robot(group_, index), ++route_ids_);
+    msgs::Route r = app::route_msg(plan, phase_, topology_.robot(group_, index), plan.grows != 0 ? plan.grows : ++route_ids_);
     if (index == self_index_) {
       member::follow_route(robot_, r);
     } else if (route != nullptr) {

@@ -12,6 +12,22 @@ using planner::RouteState;
 void RobotAgent::follow(std::uint32_t id, std::vector<Cell> cells, std::uint32_t release,
                         std::vector<std::uint32_t> picks, std::vector<std::uint32_t> drops, std::uint32_t start_tick) {
   if (id < newest_route_) return;  // overtaken by a newer one on the way (link jitter, a resend)
+  if (follow_ && id == follow_progress_.id && !follow_->cells.empty() && !cells.empty()) {
+    Follow& f = *follow_;
+    const std::size_t common = std::min(cells.size(), f.cells.size());
+    if (std::equal(cells.begin(), cells.begin() + static_cast<std::ptrdiff_t>(common), f.cells.begin())) {
+      // The route it follows again: grown at its end, it keeps its place and drives on; as it was
+      // or shorter, it is an older version overtaken on the way (jitter, a lost message repeated).
+      if (cells.size() > f.cells.size()) {
+        f.cells = std::move(cells);
+        f.picks = std::move(picks);
+        f.drops = std::move(drops);
+        if (follow_progress_.state == RouteState::Finished) follow_progress_.state = RouteState::Active;
+      }
+      f.release = std::max(f.release, std::min<std::uint32_t>(release, static_cast<std::uint32_t>(f.cells.size() - 1)));
+      return;
+    }
+  }
   newest_route_ = id;
   waypoint_.reset();
   path_.clear();

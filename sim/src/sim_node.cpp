@@ -112,7 +112,7 @@ void SimNode::begin_tick(std::uint32_t k) {
     const bool lost = clock_.is_lost(static_cast<comm::AgentId>(r));
     // A lost robot stands where it was; one whose link healed senses and moves again.
     if (alive_[r] && lost) {
-      world_.command(static_cast<int>(r), world_.route(static_cast<int>(r)).id, {});
+      world_.stop(static_cast<int>(r));
       world_.put_down(static_cast<int>(r));  // what it carried lies where it stopped
     }
     alive_[r] = !lost;

@@ -94,6 +94,9 @@ World::World(planner::OccupancyGrid truth, std::vector<Cell> robot_cells, LidarC
 void World::command(int robot, std::uint32_t route_id, const std::vector<Cell>& route,
                     const std::vector<std::uint32_t>& picks, const std::vector<std::uint32_t>& drops) {
   planner::RouteProgress& p = progress_[robot];
+  // A robot numbers its commands upwards: an older one that arrives after a newer (a lost
+  // transmission repeated, link jitter) was overtaken on the way.
+  if (route_id <= p.id) return;
   p.id = route_id;
   p.step = 0;
   routes_[robot].clear();
@@ -109,6 +112,11 @@ void World::command(int robot, std::uint32_t route_id, const std::vector<Cell>& 
     p.state = route.size() == 1 ? RouteState::Finished : RouteState::Active;
     act(robot);
   }
+}
+
+void World::stop(int robot) {
+  routes_[static_cast<std::size_t>(robot)].clear();
+  progress_[static_cast<std::size_t>(robot)].state = RouteState::Stopped;
 }
 
 void World::set_objects(std::vector<planner::TourObject> objects, std::vector<Cell> destinations) {

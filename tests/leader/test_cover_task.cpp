@@ -93,8 +93,29 @@ TEST(CoverTask, ThroughTheTrafficLayerEveryCellIsCoveredWithoutAConflict) {
   EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
   expect_no_conflict(cover);
   EXPECT_GT(cover["task"]["traffic"]["windows"].get<int>(), 1);
+  // Each window is planned from the plan's end while the one before is driven, and continues the
+  // plan: no window waits for the slowest robot of the last.
+  EXPECT_GT(cover["task"]["traffic"]["windows_continued"].get<int>(), cover["task"]["traffic"]["windows"].get<int>() / 2);
   // As the hierarchical cover divides: among the groups, then each share among its robots.
   EXPECT_EQ(cover["task"]["divisions"][0]["agents"], "leaders");
+}
+
+// Jitter on the GCS's link reorders its orders: a window can reach a leader before the one it
+// continues, and a relay of progress before its window. They wait for it; nothing is lost.
+TEST(CoverTask, ThroughTheTrafficLayerWindowsThatArriveOutOfOrderWaitForTheirPlan) {
+  for (const int seed : {1, 2}) {
+    SCOPED_TRACE(seed);
+    swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+        "map: 'small' groups: 3 robots_per_group: 3 max_ticks: 4000 seed: " + std::to_string(seed) +
+        " links { leader_gcs { delay_ticks: 2 jitter_ticks: 2 loss: 0.05 } member_leader { jitter_ticks: 1 } } "
+        "mission { phase { cover { } } }"));
+    const auto m = s.run_to_end();
+    ASSERT_TRUE(m["complete"].get<bool>()) << m["phases"].dump(1);
+    const auto& cover = phase_named(m, "cover");
+    EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
+    expect_no_conflict(cover);
+    EXPECT_GT(cover["task"]["traffic"]["windows_continued"].get<int>(), 0);
+  }
 }
 
 TEST(CoverTask, ThroughTheTrafficLayerTheFlatDivisionCoversToo) {

@@ -318,15 +318,20 @@ TEST(RobotAgent, StuckWithinTwoCellsOfTheGoalIsBlockedNearNotArrived) {
   EXPECT_EQ(far.waypoint(), (std::optional<Cell>{Cell{3, 0}}));
 }
 
-// A release can arrive before its route (another topic; a lost message is sent again later): it
-// is kept, and the route is driven as far as it says when it comes. Releases of other routes
-// change nothing.
-TEST(RobotAgent, AReleaseThatArrivesBeforeItsRouteIsKeptForIt) {
-  const auto art = ascii_map({
+// A corridor of five cells, robot 'A' at its west end.
+auto corridor() {
+  return ascii_map({
       "#######",
       "#A....#",
       "#######",
   });
+}
+
+// A release can arrive before its route (another topic; a lost message is sent again later): it
+// is kept, and the route is driven as far as it says when it comes. Releases of other routes
+// change nothing.
+TEST(RobotAgent, AReleaseThatArrivesBeforeItsRouteIsKeptForIt) {
+  const auto art = corridor();
   RobotAgent robot = agent_for(art.grid);
   const Cell a = art.at.at('A');
   const std::vector<Cell> route = {a, {a.x + 1, a.y}, {a.x + 2, a.y}, {a.x + 3, a.y}};
@@ -336,6 +341,53 @@ TEST(RobotAgent, AReleaseThatArrivesBeforeItsRouteIsKeptForIt) {
   const RobotAgent::Step s = tick_at(robot, art.grid, a, 3.0f);
   ASSERT_TRUE(s.path_changed);
   EXPECT_EQ(s.path, route);  // to index 3, not only 1
+}
+
+// A leader extending its plan by the next window sends the route again under its id with more
+// cells at its end: the robot keeps its place on it and drives on from where it stands, even after
+// it had finished the shorter one; the shorter one arriving after it (link jitter) is ignored.
+TEST(RobotAgent, TheRouteItFollowsGrownAtItsEndIsDrivenOnFromWhereItStands) {
+  const auto art = corridor();
+  RobotAgent robot = agent_for(art.grid);
+  const Cell a = art.at.at('A');
+  const auto along = [a](int i) { return Cell{a.x + i, a.y}; };
+  // One tick with the robot on `at`, the simulator at `step` of the part it was sent last.
+  const auto tick = [&](Cell at, std::uint32_t step, planner::RouteState state) {
+    std::vector<float> ranges(kBeams);
+    planner::scan(art.grid, at, kBeams, 3.0f, ranges.data());
+    robot.sense(at, ranges, 3.0f, {robot.route_id(), step, state});
+    return robot.step();
+  };
+  robot.follow(7, {along(0), along(1), along(2)}, 2);
+  RobotAgent::Step s = tick(along(0), 0, planner::RouteState::Active);
+  ASSERT_TRUE(s.path_changed);
+  EXPECT_EQ(s.path, (std::vector<Cell>{along(0), along(1), along(2)}));
+  (void)tick(along(1), 1, planner::RouteState::Active);
+  (void)tick(along(2), 2, planner::RouteState::Finished);
+  EXPECT_EQ(robot.following().state, planner::RouteState::Finished);
+  EXPECT_EQ(robot.following().step, 2u);
+
+  robot.follow(7, {along(0), along(1), along(2), along(3), along(4)}, 3);
+  EXPECT_EQ(robot.following().id, 7u);
+  EXPECT_EQ(robot.following().step, 2u);  // its place kept
+  EXPECT_EQ(robot.following().state, planner::RouteState::Active);
+  s = tick(along(2), 2, planner::RouteState::Finished);
+  ASSERT_TRUE(s.path_changed);
+  EXPECT_EQ(s.path, (std::vector<Cell>{along(2), along(3)}));  // as far as released
+  robot.release(7, 4);
+  s = tick(along(3), 1, planner::RouteState::Finished);
+  ASSERT_TRUE(s.path_changed);
+  EXPECT_EQ(s.path, (std::vector<Cell>{along(3), along(4)}));
+  EXPECT_EQ(robot.following().step, 3u);
+
+  // The shorter version overtaken on the way changes nothing.
+  robot.follow(7, {along(0), along(1), along(2)}, 2);
+  EXPECT_EQ(robot.following().step, 3u);
+  EXPECT_EQ(robot.following().state, planner::RouteState::Active);
+
+  // The same id with other cells is not its route grown: it starts anew from its first cell.
+  robot.follow(7, {along(3), along(2), along(1), along(0)}, 3);
+  EXPECT_EQ(robot.following().step, 0u);
 }
 
 TEST(RobotAgent, LearnReturnsHowManyCellsChanged) {

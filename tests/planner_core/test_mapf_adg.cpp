@@ -76,4 +76,47 @@ TEST(Adg, AHeldRotationIsNamedWhenReadyAndIsBehindItsRobotsOnceMade) {
   EXPECT_EQ(releasable(d, 0, {1, 1, 1, 1}, Rotations::Held), 2u);
 }
 
+// The traffic layer grows a plan by its next window while it is driven: the grown plan's old steps
+// keep their needs, and its old rotations their numbers, so progress, releases and rotation
+// orders of the plan as it was hold for it. Window 1 (times 0-2) has a rotation at time 2; window 2
+// (times 2-4, from where window 1 ends) one at time 3 that robot 0 is in, so a search robot by
+// robot finds it first.
+TEST(Adg, APlanGrownAtItsEndKeepsItsStepsNeedsAndItsRotationsNumbers) {
+  // Window 1: robots 1, 2, 3, 7 round the square (0, 0)-(1, 1); robots 0, 4, 5, 6 wait.
+  const std::vector<Path> window1{{{5, 0}, {5, 0}, {5, 0}}, {{0, 0}, {0, 0}, {1, 0}}, {{1, 0}, {1, 0}, {1, 1}},
+                                  {{1, 1}, {1, 1}, {0, 1}}, {{6, 0}, {6, 0}, {6, 0}}, {{6, 1}, {6, 1}, {6, 1}},
+                                  {{5, 1}, {5, 1}, {5, 1}}, {{0, 1}, {0, 1}, {0, 0}}};
+  // Window 2: robots 0, 4, 5, 6 round the square (5, 0)-(6, 1) at time 3; the others wait.
+  const std::vector<Path> window2{{{5, 0}, {6, 0}, {6, 0}}, {{1, 0}, {1, 0}, {1, 0}}, {{1, 1}, {1, 1}, {1, 1}},
+                                  {{0, 1}, {0, 1}, {0, 1}}, {{6, 0}, {6, 1}, {6, 1}}, {{6, 1}, {5, 1}, {5, 1}},
+                                  {{5, 1}, {5, 0}, {5, 0}}, {{0, 0}, {0, 0}, {0, 0}}};
+  std::vector<Path> grown = window1;
+  for (std::size_t r = 0; r < grown.size(); ++r) grown[r].insert(grown[r].end(), window2[r].begin() + 1, window2[r].end());
+  const Dependencies before = dependencies(window1);
+  const Dependencies after = dependencies(grown);
+  ASSERT_EQ(before.rotations.size(), 1u);
+  ASSERT_EQ(after.rotations.size(), 2u);
+  EXPECT_EQ(after.rotations[0], before.rotations[0]);
+  EXPECT_EQ(after.rotation_of[0][1], 1);  // the new one after it
+  for (std::size_t r = 0; r < window1.size(); ++r) {
+    for (std::size_t k = 0; k < before.routes[r].size(); ++k) {
+      EXPECT_EQ(after.routes[r][k], before.routes[r][k]) << r << " " << k;
+      EXPECT_EQ(after.needs[r][k], before.needs[r][k]) << r << " " << k;
+      EXPECT_EQ(after.rotation_of[r][k], before.rotation_of[r][k]) << r << " " << k;
+    }
+  }
+}
+
+// Rotations are numbered by their time step, whatever robot finds them first.
+TEST(Adg, RotationsAreNumberedByTheirTimeStep) {
+  // Robots 0-3 round the square (4, 0)-(5, 1) at time 2; robots 4-7 round (0, 0)-(1, 1) at time 1.
+  const std::vector<Path> plan{{{4, 0}, {4, 0}, {5, 0}}, {{5, 0}, {5, 0}, {5, 1}}, {{5, 1}, {5, 1}, {4, 1}},
+                               {{4, 1}, {4, 1}, {4, 0}}, {{0, 0}, {1, 0}, {1, 0}}, {{1, 0}, {1, 1}, {1, 1}},
+                               {{1, 1}, {0, 1}, {0, 1}}, {{0, 1}, {0, 0}, {0, 0}}};
+  const Dependencies d = dependencies(plan);
+  ASSERT_EQ(d.rotations.size(), 2u);
+  EXPECT_EQ(d.rotation_of[4][1], 0);  // time 1
+  EXPECT_EQ(d.rotation_of[0][1], 1);  // time 2
+}
+
 }  // namespace

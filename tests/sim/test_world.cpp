@@ -78,6 +78,24 @@ TEST(World, ARouteNotStartingOnTheRobotsCellIsRejectedAndStopsIt) {
   EXPECT_EQ(w.route(0).state, RouteState::Stopped);
 }
 
+// A lost command repeated later, or one delayed by jitter, can arrive after a newer one: it was
+// overtaken and changes nothing (before, a stop sent after a route part could be undone by the
+// part's repeat, and the robot never confirmed its stop).
+TEST(World, ACommandOlderThanTheRobotsRouteIsIgnored) {
+  World w(open_room(6, 6), {{0, 0}}, kLidar);
+  w.command(0, 5, {});  // stop
+  w.command(0, 4, {{0, 0}, {1, 0}, {2, 0}});  // the part before it, repeated late
+  EXPECT_EQ(w.route(0).id, 5u);
+  EXPECT_EQ(w.route(0).state, RouteState::Stopped);
+  w.move();
+  EXPECT_EQ(w.robots()[0], (Cell{0, 0}));
+  w.command(0, 5, {{0, 0}, {1, 0}});  // the same again: applied once already
+  EXPECT_EQ(w.route(0).state, RouteState::Stopped);
+  w.command(0, 6, {{0, 0}, {1, 0}});
+  w.move();
+  EXPECT_EQ(w.robots()[0], (Cell{1, 0}));
+}
+
 TEST(World, AWaitKeepsTheRobotAndIsNoWallStop) {
   World w(open_room(3, 1), {{0, 0}}, kLidar);
   w.command(0, 1, {{0, 0}, {0, 0}, {0, 0}, {1, 0}});

@@ -67,6 +67,20 @@ void join_rotations(Dependencies& d) {
   }
 }
 
+// Numbers the rotations in the order of their time step (stable: the order found among those of
+// one step), so that a plan grown at its end (the traffic layer's next window appended) keeps the
+// numbers of the rotations it had: a rotation's number is what the GCS orders it by.
+void number_by_time(Dependencies& d) {
+  const auto time_of = [&d](const std::vector<Need>& q) {
+    return d.planned_time[static_cast<std::size_t>(q.front().robot)][q.front().step];
+  };
+  std::stable_sort(d.rotations.begin(), d.rotations.end(),
+                   [&](const std::vector<Need>& a, const std::vector<Need>& b) { return time_of(a) < time_of(b); });
+  for (std::size_t q = 0; q < d.rotations.size(); ++q) {
+    for (const Need& m : d.rotations[q]) d.rotation_of[static_cast<std::size_t>(m.robot)][m.step] = static_cast<int>(q);
+  }
+}
+
 }  // namespace
 
 Dependencies dependencies(const std::vector<Path>& paths) {
@@ -112,6 +126,7 @@ Dependencies dependencies(const std::vector<Path>& paths) {
     }
   }
   join_rotations(d);
+  number_by_time(d);
   return d;
 }
 

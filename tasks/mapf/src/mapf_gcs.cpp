@@ -101,6 +101,7 @@ void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
     }
   }
   begin_plan(ctx);
+  chain_first_ = seq_;
 
   planner::mapf::SolverConfig solver = tasks::mapf_solver_config(config_, ctx.setup.world.scenario.seed());
   planner::mapf::Result res = planner::mapf::solve(in, solver, planner::mapf::StopCondition::after(config_.time_limit_s()));
@@ -143,12 +144,14 @@ void MapfGcsTask::note_plan(GcsContext& ctx, const char* why, const planner::map
                res.message.empty() ? "" : ": ", res.message.c_str());
 }
 
-void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res) {
+void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res, std::optional<int> continues) {
   by_graph_ = config_.execution() != swarm::scenario::MAPF_EXECUTE_TIMED;
-  progress_.assign(res.paths.size(), 0);
+  if (!continues) progress_.assign(res.paths.size(), 0);
   if (by_graph_) {
+    // A grown plan keeps its steps' needs and its rotations' numbers (planner/mapf/adg.hpp).
     adg_ = planner::mapf::dependencies(res.paths);
-    rotation_ordered_.assign(adg_.rotations.size(), false);
+    if (!continues) rotation_ordered_.clear();
+    rotation_ordered_.resize(adg_.rotations.size(), false);
   }
   route_steps_ = 0;
   for (std::size_t k = 0; k < res.paths.size(); ++k) {
@@ -159,15 +162,19 @@ void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res) {
   o.group = task::kAllGroups;
   o.kind = task::OrderKind::Work;
   o.seq = seq_;
-  if (config_.execution() == swarm::scenario::MAPF_EXECUTE_TIMED) {
+  if (continues) {
+    o.values = {kContinues, static_cast<std::int32_t>(chain_first_), *continues};
+  } else if (config_.execution() == swarm::scenario::MAPF_EXECUTE_TIMED) {
     // One start tick for every robot: late enough for the order to reach every leader and its
     // routes every member, with the configured delays and jitter (loss is not allowed for).
     o.values.push_back(static_cast<std::int32_t>(start_tick(ctx)));
   }
+  const auto from = static_cast<std::ptrdiff_t>(continues.value_or(0));
   for (std::size_t k = 0; k < planned_.size(); ++k) {
-    o.routes.push_back({planned_[k], res.paths[k], {}, {}});
-    if (window_ > 0) add_acts(planned_[k], o.routes.back());
-    ctx.record.append(route_frame(ctx.tick(), phase_, planned_[k], res.paths[k]));
+    planner::mapf::Path path(res.paths[k].begin() + from, res.paths[k].end());
+    o.routes.push_back({planned_[k], path, {}, {}});
+    if (window_ > 0) add_acts(planned_[k], o.routes.back(), static_cast<int>(from));
+    ctx.record.append(route_frame(ctx.tick(), phase_, planned_[k], path));
   }
   ctx.out.order(o);
 }
@@ -201,7 +208,10 @@ void MapfGcsTask::send_order(GcsContext& ctx, task::OrderKind kind, std::vector<
 
 void MapfGcsTask::on_report(const task::Report& r, GcsContext&) {
   const auto& v = r.values;
-  if (!v.empty() && static_cast<std::uint32_t>(v[0]) == seq_ && v.size() % 3 == 1) {
+  // Progress along any window of the current plan counts along the plan as it is now.
+  const bool in_plan = !v.empty() && static_cast<std::uint32_t>(v[0]) >= chain_first_ &&
+                       static_cast<std::uint32_t>(v[0]) <= seq_;
+  if (in_plan && v.size() % 3 == 1) {
     relay_.insert(relay_.end(), v.begin() + 1, v.end());
     for (std::size_t i = 1; i + 2 < v.size(); i += 3) {
       const auto it = std::find(planned_.begin(), planned_.end(), v[i]);
@@ -245,7 +255,10 @@ void MapfGcsTask::step(GcsContext& ctx) {
   }
   if (lost && !holding_ && !all_done) {
     holding_ = true;
-    send_order(ctx, task::OrderKind::Hold, {static_cast<std::int32_t>(seq_)});
+    // Lifelong, the robots stop where they stand: their releases may reach windows ahead.
+    std::vector<std::int32_t> hold{static_cast<std::int32_t>(seq_)};
+    if (window_ > 0) hold.push_back(kHoldStop);
+    send_order(ctx, task::OrderKind::Hold, std::move(hold));
     std::fprintf(stderr, "gcs: mapf: a planned robot was lost at tick %u; holding plan %u\n", ctx.tick(), seq_);
     return;
   }
@@ -259,6 +272,7 @@ void MapfGcsTask::step(GcsContext& ctx) {
   if (window_ > 0) {
     if (!holding_ && !complete_) credit_window(ctx, false);  // the stops reported passed, at once
     cut_for_repick(ctx);
+    if (!all_done && time_to_extend(ctx)) extend_window(ctx);
     if (!holding_ && all_done && !complete_) window_done(ctx);
     return;
   }
@@ -291,6 +305,7 @@ nlohmann::json MapfGcsTask::numbers() const {
     return {{"execution", swarm::scenario::MapfExecution_Name(config_.execution())},
             {"window_steps", window_},
             {"windows", windows_},
+            {"windows_continued", windows_continued_},
             {"goals_done", goals_done_},
             {"goals_skipped", goals_skipped_},
             {"longest_wait_steps", traffic_ ? traffic_->longest_wait() : 0},

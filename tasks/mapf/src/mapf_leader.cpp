@@ -14,6 +14,7 @@ MapfGroupTask::MapfGroupTask(const swarm::scenario::Mapf& config, int group)
 void MapfGroupTask::start(GroupContext&) {
   have_plan_ = false;
   holding_ = false;
+  waiting_.clear();
 }
 
 void MapfGroupTask::note(int k) {
@@ -32,6 +33,7 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
     return;
   }
   seq_ = o.seq;
+  chain_first_ = o.seq;
   have_plan_ = true;
   holding_ = false;
   stopping_.clear();
@@ -40,6 +42,7 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
   ++plans_taken_;
   const std::size_t n = paths.size();
   routes_ = timed_ ? paths : adg_.routes;
+  paths_ = std::move(paths);
   robot_of_.clear();
   picks_.assign(n, {});
   drops_.assign(n, {});
@@ -86,10 +89,29 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
 
 void MapfGroupTask::on_order(const task::Order& o, GroupContext& ctx) {
   if (o.kind == task::OrderKind::Work) {
-    if (!have_plan_ || o.seq > seq_) take_plan(o, ctx);
+    if (have_plan_ && o.seq <= seq_) return;  // taken already, or overtaken
+    if (o.values.size() == 3 && o.values[0] == gcs::kContinues) {
+      // It continues the plan this leader drives (its next window), or one not yet here.
+      if (!(have_plan_ && static_cast<std::uint32_t>(o.values[1]) == chain_first_ && o.seq == seq_ + 1 &&
+            extend_plan(o, ctx))) {
+        waiting_.push_back(o);
+        return;
+      }
+    } else {
+      take_plan(o, ctx);
+    }
+    take_waiting(ctx);
     return;
   }
-  if (!have_plan_ || o.values.empty() || static_cast<std::uint32_t>(o.values[0]) != seq_) return;  // stale
+  if (o.values.empty()) return;
+  const auto plan = static_cast<std::uint32_t>(o.values[0]);
+  if (!have_plan_ || plan > seq_) {  // for a plan or window not yet here
+    constexpr std::size_t kWaitingKept = 256;
+    if (waiting_.size() == kWaitingKept) waiting_.erase(waiting_.begin());
+    waiting_.push_back(o);
+    return;
+  }
+  if (!in_plan(plan)) return;  // stale
   if (o.kind == task::OrderKind::Hold) {
     holding_ = true;
     // Timed, every robot holds its whole route: stop them. Timed driving is chosen only with no
@@ -108,7 +130,11 @@ void MapfGroupTask::on_order(const task::Order& o, GroupContext& ctx) {
     return;
   }
   if (o.kind != task::OrderKind::Progress) return;
-  const auto& v = o.values;
+  take_progress(o.values);
+  release(ctx);
+}
+
+void MapfGroupTask::take_progress(const std::vector<std::int32_t>& v) {
   for (std::size_t i = 1; i + 2 < v.size(); i += 3) {
     const auto it = std::find(robot_of_.begin(), robot_of_.end(), v[i]);
     if (it == robot_of_.end()) continue;
@@ -117,7 +143,97 @@ void MapfGroupTask::on_order(const task::Order& o, GroupContext& ctx) {
     progress_[k] = std::max(progress_[k], static_cast<std::uint32_t>(v[i + 1]));
     released_[k] = std::max(released_[k], static_cast<std::uint32_t>(v[i + 2]));
   }
-  release(ctx);
+}
+
+void MapfGroupTask::take_waiting(GroupContext& ctx) {
+  // Continuations first, in order: each may make the next one fit, and the relays for them count.
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (std::size_t i = 0; i < waiting_.size(); ++i) {
+      const task::Order& o = waiting_[i];
+      if (o.kind == task::OrderKind::Work && o.seq == seq_ + 1 &&
+          static_cast<std::uint32_t>(o.values[1]) == chain_first_ && extend_plan(o, ctx)) {
+        waiting_.erase(waiting_.begin() + static_cast<std::ptrdiff_t>(i));
+        grew = true;
+        break;
+      }
+    }
+  }
+  std::vector<task::Order> now;
+  std::erase_if(waiting_, [&](const task::Order& o) {
+    if (o.kind == task::OrderKind::Work) return o.seq <= seq_;  // overtaken by the plan taken
+    const auto plan = static_cast<std::uint32_t>(o.values[0]);
+    if (plan > seq_) return false;  // still ahead
+    if (in_plan(plan)) now.push_back(o);
+    return true;
+  });
+  for (const task::Order& o : now) on_order(o, ctx);
+}
+
+bool MapfGroupTask::extend_plan(const task::Order& o, GroupContext& ctx) {
+  const auto from = static_cast<std::size_t>(o.values[2]);
+  if (timed_ || o.routes.size() != paths_.size()) return false;
+  std::vector<planner::mapf::Path> paths = paths_;
+  for (std::size_t k = 0; k < paths.size(); ++k) {
+    const task::PlannedRoute& r = o.routes[k];
+    if (r.robot != robot_of_[k] || r.path.empty() || paths[k].size() != from + 1 || r.path.front() != paths[k].back()) {
+      std::fprintf(stderr, "leader-%d: mapf window %u does not continue plan %u; dropped\n", group_, o.seq, seq_);
+      return false;
+    }
+    paths[k].insert(paths[k].end(), r.path.begin() + 1, r.path.end());
+  }
+  try {
+    adg_ = planner::mapf::dependencies(paths);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "leader-%d: mapf window %u dropped: %s\n", group_, o.seq, e.what());
+    adg_ = planner::mapf::dependencies(paths_);  // the plan as it was
+    return false;
+  }
+  // The grown plan's old steps keep their needs (planner/mapf/adg.hpp): progress and releases
+  // carry over.
+  paths_ = std::move(paths);
+  seq_ = o.seq;
+  std::vector<std::size_t> had(routes_.size());
+  for (std::size_t k = 0; k < routes_.size(); ++k) had[k] = routes_[k].size();
+  routes_ = adg_.routes;
+  reported_done_ = reported_held_ = false;
+  ++plans_continued_;
+  for (std::size_t k = 0; k < paths_.size(); ++k) {
+    const auto to_route = [&](std::uint32_t time) {
+      return planner::mapf::step_at(adg_, static_cast<int>(k), static_cast<int>(from + time));
+    };
+    for (const std::uint32_t s : o.routes[k].pick_steps) picks_[k].push_back(to_route(s));
+    for (const std::uint32_t s : o.routes[k].drop_steps) drops_[k].push_back(to_route(s));
+  }
+  if (adopting_ || holding_ || !stopping_.empty() || stopped_all_) return true;
+  // Each robot gets its route again under the same id, longer: it keeps its place and drives on.
+  for (int k : own_) {
+    const auto ku = static_cast<std::size_t>(k);
+    // A robot that only waits in the new window keeps its route as it is.
+    if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])] || routes_[ku].size() == had[ku]) continue;
+    released_[ku] = std::max(released_[ku], planner::mapf::releasable(adg_, k, progress_, planner::mapf::Rotations::Held));
+    task::Route m = route_from(ku, base_[ku]);
+    m.grows = route_id_[ku];
+    ctx.out.route(index_of_[ku], m);
+    note(k);
+  }
+  return true;
+}
+
+task::Route MapfGroupTask::route_from(std::size_t k, std::uint32_t from) const {
+  task::Route r;
+  r.path.assign(routes_[k].begin() + from, routes_[k].end());
+  r.release = released_[k] - from;
+  // Its acts still ahead, in steps of this route; one at `from` only on a route from the start (a
+  // robot sent on from a later step stands there, its act made).
+  const auto ahead = [from](std::uint32_t s) { return s > from || (s == from && from == 0); };
+  for (const std::uint32_t s : picks_[k]) {
+    if (ahead(s)) r.pick_steps.push_back(s - from);
+  }
+  for (const std::uint32_t s : drops_[k]) {
+    if (ahead(s)) r.drop_steps.push_back(s - from);
+  }
+  return r;
 }
 
 void MapfGroupTask::stop_own_robots(GroupContext& ctx) {
@@ -173,19 +289,10 @@ void MapfGroupTask::rotate(int q, std::uint32_t tick, GroupContext& ctx) {
     // The rest of its route from the cell it stands on, its first step released from `tick` on:
     // every member's simulator command then leaves in one tick.
     const std::uint32_t from = m.step - 1;
-    task::Route r;
-    r.path.assign(routes_[ku].begin() + from, routes_[ku].end());
-    r.release = 1;
-    r.start_tick = tick;
-    // Its acts still ahead, in steps of the new route (those at `from` are made: it stands there).
-    for (const std::uint32_t s : picks_[ku]) {
-      if (s > from) r.pick_steps.push_back(s - from);
-    }
-    for (const std::uint32_t s : drops_[ku]) {
-      if (s > from) r.drop_steps.push_back(s - from);
-    }
     base_[ku] = from;
     released_[ku] = m.step;
+    task::Route r = route_from(ku, from);
+    r.start_tick = tick;
     route_id_[ku] = ctx.out.route(index_of_[ku], r);
     note(static_cast<int>(ku));
   }
@@ -238,7 +345,7 @@ void MapfGroupTask::gcs_back(GroupContext&) {
 }
 
 nlohmann::json MapfGroupTask::numbers() const {
-  return {{"plans", plans_taken_}, {"releases_sent", releases_sent_}};
+  return {{"plans", plans_taken_}, {"windows_continued", plans_continued_}, {"releases_sent", releases_sent_}};
 }
 
 }  // namespace swarm::leader

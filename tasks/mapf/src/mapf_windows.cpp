@@ -82,28 +82,15 @@ void MapfGcsTask::plan_window(GcsContext& ctx, const char* why) {
   }
   planned_ = may_move;
   begin_plan(ctx);
+  chain_first_ = seq_;
+  no_continuation_ = false;
+  window_reached_.assign(static_cast<std::size_t>(t.robots()), {});
+  window_paths_.assign(planned_.size(), {});
+  if (!take_window(w, 0)) return;
+  window_tick_ = ctx.tick();
   planner::mapf::Result res;
   res.status = planner::mapf::Status::Solved;
-  window_reached_.assign(static_cast<std::size_t>(t.robots()), {});
-  bool moved = false;
-  int reached = 0;
-  for (const int r : planned_) {
-    const auto ur = static_cast<std::size_t>(r);
-    res.paths.push_back(w.paths[ur]);
-    goals_[ur] = w.paths[ur].back();
-    window_reached_[ur] = w.reached_at[ur];
-    reached += w.done[ur];
-    moved = moved || w.paths[ur].back() != w.paths[ur].front();
-  }
-  window_paths_ = res.paths;
-  idle_windows_ = moved || reached > 0 ? 0 : idle_windows_ + 1;
-  if (idle_windows_ >= kIdleWindowsLimit) {
-    failed_ = true;
-    failure_ = "traffic: no robot moved or reached a goal in " + std::to_string(kIdleWindowsLimit) + " windows";
-    return;
-  }
-  ++windows_;
-  window_tick_ = ctx.tick();
+  res.paths = window_paths_;
   if (!next) {
     std::size_t goals = 0;
     for (const int r : planned_) goals += sequences_[static_cast<std::size_t>(r)].size();
@@ -114,14 +101,109 @@ void MapfGcsTask::plan_window(GcsContext& ctx, const char* why) {
   send_plan(ctx, res);
 }
 
-void MapfGcsTask::add_acts(int robot, task::PlannedRoute& route) const {
+bool MapfGcsTask::take_window(const planner::traffic::Window& w, int at) {
+  bool moved = false;
+  int reached = 0;
+  for (std::size_t k = 0; k < planned_.size(); ++k) {
+    const auto ur = static_cast<std::size_t>(planned_[k]);
+    auto& path = window_paths_[k];
+    path.insert(path.end(), w.paths[ur].begin() + (path.empty() ? 0 : 1), w.paths[ur].end());
+    goals_[ur] = w.paths[ur].back();
+    for (const int time : w.reached_at[ur]) window_reached_[ur].push_back(time < 0 ? -1 : at + time);
+    reached += w.done[ur];
+    moved = moved || w.paths[ur].back() != w.paths[ur].front();
+  }
+  idle_windows_ = moved || reached > 0 ? 0 : idle_windows_ + 1;
+  if (idle_windows_ >= kIdleWindowsLimit) {
+    failed_ = true;
+    failure_ = "traffic: no robot moved or reached a goal in " + std::to_string(kIdleWindowsLimit) + " windows";
+    return false;
+  }
+  ++windows_;
+  return true;
+}
+
+bool MapfGcsTask::time_to_extend(const GcsContext& ctx) const {
+  if (!by_graph_ || holding_ || failed_ || complete_ || no_continuation_ || repick_ != nullptr ||
+      window_paths_.empty() || window_reached_.empty() || adg_.routes.size() != planned_.size()) {
+    return false;
+  }
+  const int end = static_cast<int>(window_paths_.front().size()) - 1;
+  if (end + window_ > kPlanSteps) return false;  // then the next plan starts afresh
+  bool more = false;
+  for (std::size_t k = 0; k < planned_.size(); ++k) {
+    const auto ur = static_cast<std::size_t>(planned_[k]);
+    const auto& seq = sequences_[ur];
+    const std::size_t planned = window_reached_[ur].size();
+    if (seq.size() <= planned) continue;
+    more = true;
+    // An act on the cell the plan leaves the robot on would fall between two windows' routes.
+    if (seq[planned].act != Stop::Act::kNone && seq[planned].cell == window_paths_[k].back()) return false;
+  }
+  if (!more) return false;
+  // The leading robot's time in the plan, as reported.
+  int lead = 0;
+  for (std::size_t k = 0; k < planned_.size(); ++k) lead = std::max(lead, adg_.planned_time[k][progress_[k]]);
+  // The window must reach the robots before the leader runs out: half a window ahead, plus the
+  // time its progress took to come and the order takes to reach the members.
+  const auto trip = static_cast<int>(start_tick(ctx) - ctx.tick());
+  return lead + window_ / 2 + 2 * trip >= end;
+}
+
+void MapfGcsTask::extend_window(GcsContext& ctx) {
+  const comm::Topology& t = ctx.setup.topology;
+  const int end = static_cast<int>(window_paths_.front().size()) - 1;
+  // The next window from where the plan leaves every robot; the robots not planned for stand.
+  std::vector<planner::traffic::Agent> agents(static_cast<std::size_t>(t.robots()));
+  for (int r = 0; r < t.robots(); ++r) {
+    agents[static_cast<std::size_t>(r)].at = ctx.cell_of(r);
+    agents[static_cast<std::size_t>(r)].fixed = true;
+  }
+  for (std::size_t k = 0; k < planned_.size(); ++k) {
+    const auto ur = static_cast<std::size_t>(planned_[k]);
+    auto& agent = agents[ur];
+    agent.at = window_paths_[k].back();
+    agent.fixed = false;
+    const auto& seq = sequences_[ur];
+    for (std::size_t g = window_reached_[ur].size(); g < seq.size(); ++g) agent.goals.push_back(seq[g].cell);
+  }
+  if (map_grows_) {
+    known_ = ctx.fused.grid();
+    planner::OccupancyGrid map = known_;
+    for (const auto& a : agents) map.set(a.at, planner::CellState::Free);
+    traffic_->set_map(map);
+  }
+  planner::traffic::Window w;
+  try {
+    w = traffic_->plan(agents, window_);
+  } catch (const std::invalid_argument& e) {
+    // The plan is driven to its end and the next one made from where the robots stand.
+    no_continuation_ = true;
+    std::fprintf(stderr, "gcs: traffic: plan %u cannot grow: %s\n", seq_, e.what());
+    return;
+  }
+  const std::uint32_t first = chain_first_;
+  begin_plan(ctx);
+  chain_first_ = first;
+  if (!take_window(w, end)) return;
+  ++windows_continued_;
+  planner::mapf::Result res;
+  res.status = planner::mapf::Status::Solved;
+  res.paths = window_paths_;
+  send_plan(ctx, res, end);
+}
+
+void MapfGcsTask::add_acts(int robot, task::PlannedRoute& route, int from) const {
   const auto ur = static_cast<std::size_t>(robot);
   const auto& seq = sequences_[ur];
   const auto& at = window_reached_[ur];
   for (std::size_t g = 0; g < at.size() && g < seq.size(); ++g) {
-    if (at[g] < 0) continue;
-    if (seq[g].act == Stop::Act::kPick) route.pick_steps.push_back(static_cast<std::uint32_t>(at[g]));
-    if (seq[g].act == Stop::Act::kDrop) route.drop_steps.push_back(static_cast<std::uint32_t>(at[g]));
+    // A window that continues the plan carries the acts after its first cell (the one before
+    // ended there, with its act).
+    if (at[g] < 0 || (from > 0 && at[g] <= from)) continue;
+    const auto step = static_cast<std::uint32_t>(at[g] - from);
+    if (seq[g].act == Stop::Act::kPick) route.pick_steps.push_back(step);
+    if (seq[g].act == Stop::Act::kDrop) route.drop_steps.push_back(step);
   }
 }
 

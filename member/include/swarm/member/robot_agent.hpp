@@ -50,7 +50,9 @@ class RobotAgent {
   // you stand": the simulator is told at once, and the route's progress turns Stopped once the
   // simulator confirms it (until then Active), so a leader knows when the robot stands still.
   // Route ids only grow (a leader numbers its routes, a standby's above its predecessor's): a
-  // route older than one followed already was overtaken on the way and is ignored.
+  // route older than one followed already was overtaken on the way and is ignored. The route it
+  // follows, sent again with its cells so far first and more after them, grows: the robot keeps
+  // its place and drives on as released (a leader extending a plan by its next window).
   void follow(std::uint32_t id, std::vector<planner::Cell> cells, std::uint32_t release,
               std::vector<std::uint32_t> picks = {}, std::vector<std::uint32_t> drops = {},
               std::uint32_t start_tick = 0);

@@ -78,11 +78,16 @@ class World {
   void set_motion(const planner::MotionModel& motion) { motion_ = motion; }
   const planner::MotionModel& motion() const { return motion_; }
 
-  // A new route for `robot` (see the file comment); an empty route stops it. At the route indices
+  // A new route for `robot` (see the file comment); an empty route stops it. Route ids only grow
+  // (a robot numbers its commands): one not above the robot's current id was overtaken on its way
+  // and is ignored. At the route indices
   // in `picks` the robot picks up every object lying on its cell; at those in `drops` it drops
   // all it carries: an object at its type's destination is delivered, elsewhere it lies there.
   void command(int robot, std::uint32_t route_id, const std::vector<planner::Cell>& route,
                const std::vector<std::uint32_t>& picks = {}, const std::vector<std::uint32_t>& drops = {});
+
+  // The robot stops where it stands, its route given up (a robot lost to the swarm).
+  void stop(int robot);
 
   // Collect (docs/papers.md section 4): the objects, each lying on its cell, and each type's destination.
   void set_objects(std::vector<planner::TourObject> objects, std::vector<planner::Cell> destinations);

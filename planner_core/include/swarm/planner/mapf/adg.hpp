@@ -53,7 +53,8 @@ struct Dependencies {
   std::vector<std::vector<std::vector<Need>>> needs;
   // per robot, per route step k: the plan's time step of entering route[k]
   std::vector<std::vector<int>> planned_time;
-  // Rotations: each the (robot, step) of its members; rotation_of[r][k] = its index, or -1.
+  // Rotations: each the (robot, step) of its members, numbered in the order of their time step
+  // (a plan grown at its end keeps its rotations' numbers); rotation_of[r][k] = its index, or -1.
   std::vector<std::vector<Need>> rotations;
   std::vector<std::vector<int>> rotation_of;
 };

@@ -15,6 +15,10 @@
 //   Order Work, group kAllGroups, seq s: routes = the planned robots' timed paths (one cell per
 //     tick, waits included); timed execution (Mapf.execution): values = [the start tick every
 //     robot sets off at].
+//   Order Work, seq s, values = [kContinues, f, T] (lifelong, by the graph): the plan f..s-1 grows
+//     by a window: routes = the same robots, in the same order, from time T of the plan (its end,
+//     where each robot's path ends) on. The plan is then seq s, its robots' progress and releases
+//     count along the grown routes, and reports and relays of seqs f..s still hold for it.
 //   Report (leader -> GCS): values = [s, robot, step, release, robot, step, release, ...] for
 //     its robots whose progress or release changed; state Done when all its robots of plan s have
 //     arrived; Held after a hold when they all stand still.
@@ -32,8 +36,8 @@
 // The first plan is made at the phase's start, from where the robots stand (a phase after another
 // starts once they all stand still: gcs/gcs_node.hpp).
 // A planned robot lost midway, or a group's leader replaced by its standby: the GCS holds the
-// plan, waits until every group reports its robots still, and plans again from where the living
-// robots stand (seq s + 1).
+// plan (lifelong, with kHoldStop: a robot's release may reach windows ahead), waits until every
+// group reports its robots still, and plans again from where the living robots stand (seq s + 1).
 // Complete when every group of the current plan has reported Done; given up when a plan cannot be
 // made (proven infeasible, or none within the time limit): the mission ends there, incomplete.
 #pragma once
@@ -41,6 +45,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +58,8 @@ namespace swarm::gcs {
 
 // Order Hold's second value: stop the robots where they stand (see the contract above).
 inline constexpr std::int32_t kHoldStop = 1;
+// Order Work's first value for a window that continues a plan (see the contract above).
+inline constexpr std::int32_t kContinues = -1;
 
 class MapfGcsTask : public GcsTask {
  public:
@@ -68,14 +75,19 @@ class MapfGcsTask : public GcsTask {
   // Lifelong, the traffic layer (docs/traffic.md): each robot takes a sequence of stops (a coverage
   // route's cells, a tour's pick-ups and drops) and the robots are driven in windows of `window`
   // steps that the traffic planner makes (planner/traffic/traffic.hpp: no conflict, dead robots
-  // planned around), each sent as a plan and driven as one once every group has finished the
-  // last. A stop's act goes with the window's route as a pick-up or drop step at the time the
-  // robot stands on it. The picker gives every robot id its sequence (empty: none; such a robot
-  // may still be pushed aside) at the phase's start, after a loss (the living robots it is
-  // given), and at restart(); `why` says which. Every stop behind a robot is handed to `done`
-  // once known: when the robot's reported progress passes it, and at the end of its window (or of
-  // one cut short by a loss) as far as the robot got. Complete when every sequence is done; given up after a run of
-  // windows in which no robot moved or reached a goal.
+  // planned around). The first window is a plan; each next one is planned from where that plan
+  // leaves the robots while it is still driven, and continues it (Work with kContinues), up to
+  // kPlanSteps; then, or after a hold, the next plan starts from where the robots stand. A stop's
+  // act goes with the window's route as a pick-up or drop step at the time the robot stands on
+  // it. The picker gives every robot id its sequence (empty: none; such a robot may still be
+  // pushed aside) at the phase's start, after a loss (the living robots it is given), and at
+  // restart(); `why` says which. Every stop behind a robot is handed to `done` once known: when
+  // the robot's reported progress passes it, and at the end of its plan (or of one cut short by
+  // a loss) as far as the robot got. Complete when every sequence is done; given up after a run
+  // of windows in which no robot moved or reached a goal.
+  // The longest a plan grows to by windows that continue it, in time steps: its routes go to the
+  // robots whole each time it grows.
+  static constexpr int kPlanSteps = 256;
   struct Stop {
     enum class Act : std::uint8_t { kNone, kPick, kDrop };
     planner::Cell cell;
@@ -133,12 +145,22 @@ class MapfGcsTask : public GcsTask {
   void credit_window(const GcsContext& ctx, bool over);
   // Lifelong: a repick waiting, and the window old enough: hold it, stopping every robot.
   void cut_for_repick(GcsContext& ctx);
-  // Lifelong: robot `robot`'s pick-ups and drops in the current window, on its planned route.
-  void add_acts(int robot, task::PlannedRoute& route) const;
+  // Lifelong, by the graph: once the leading robot is within half a window (and the links' round
+  // trip) of the plan's end, the next window is planned from the plan's end and sent as its
+  // continuation, so the robots drive on without waiting for the slowest (docs/traffic.md).
+  [[nodiscard]] bool time_to_extend(const GcsContext& ctx) const;
+  void extend_window(GcsContext& ctx);
+  // Lifelong: robot `robot`'s pick-ups and drops in the window from the plan's time `from` on, in
+  // steps of its part of the plan from there.
+  void add_acts(int robot, task::PlannedRoute& route, int from) const;
+  // Lifelong: a window planned from the plan's time `at` (0: a new plan) becomes the plan's part
+  // from there; false if the phase is given up as idle.
+  bool take_window(const planner::traffic::Window& w, int at);
   // A new plan's bookkeeping: its number, and which groups are in it under which leaders.
   void begin_plan(const GcsContext& ctx);
   void note_plan(GcsContext& ctx, const char* why, const planner::mapf::Result& res);  // metrics + log
-  void send_plan(GcsContext& ctx, const planner::mapf::Result& res);
+  // `continues`: res.paths are the grown plan, whose new window starts at time *continues.
+  void send_plan(GcsContext& ctx, const planner::mapf::Result& res, std::optional<int> continues = std::nullopt);
   void send_order(GcsContext& ctx, task::OrderKind kind, std::vector<std::int32_t> values = {});
   // The tick a timed plan or a rotation sets off at: late enough for an order sent now to reach
   // every leader and its routes every member, with the configured delays and jitter (loss is not
@@ -186,10 +208,14 @@ class MapfGcsTask : public GcsTask {
   std::uint32_t window_tick_ = 0;   // the tick the current window was sent
   planner::MotionModel motion_ = planner::MotionModel::four();
   std::vector<std::vector<Stop>> sequences_;    // per robot id: the stops still ahead
-  // per robot id: for each stop the current window gets it past, the window's time step at which
-  // it stands on it (-1: skipped as unreachable)
+  // per robot id: for each stop the current plan's windows get it past, the plan's time step at
+  // which it stands on it (-1: skipped as unreachable)
   std::vector<std::vector<int>> window_reached_;
-  std::vector<planner::mapf::Path> window_paths_;  // per plan index: the current window's
+  // per plan index: the current plan's timed path (its windows one after another, all as long)
+  std::vector<planner::mapf::Path> window_paths_;
+  std::uint32_t chain_first_ = 0;  // the seq of the current plan's first window
+  bool no_continuation_ = false;    // the current plan cannot grow (its next window found none)
+  std::uint64_t windows_continued_ = 0;
   std::unique_ptr<planner::traffic::Planner> traffic_;
   std::uint64_t windows_ = 0;
   std::uint64_t goals_done_ = 0;

@@ -22,6 +22,12 @@
 // again from where every robot stands.
 // A planned route's pick-up and drop steps (the traffic layer's collect stops) go with the route
 // its robot drives, moved to the step the robot stands on at that time of the plan.
+// A window that continues the plan (the traffic layer's next one, sent while this one is driven)
+// is appended to every robot's timed path and the graph is built again over the grown plan: its
+// old steps keep their needs and numbers, so progress and releases carry over, and each robot gets
+// its route again under the same id, longer (member::RobotAgent::follow), driving on without a
+// stop. A window that comes before the one it continues (jitter, a lost order sent again) waits
+// for it, and so does a relay of progress for a plan not yet taken.
 #pragma once
 
 #include <cstdint>
@@ -46,6 +52,15 @@ class MapfGroupTask : public GroupTask {
 
  private:
   void take_plan(const task::Order& order, GroupContext& ctx);
+  // Appends a continuing window (Work with kContinues) to the plan; false if it does not fit it.
+  bool extend_plan(const task::Order& order, GroupContext& ctx);
+  // Takes what waited for the plan just taken: continuations of it, progress relayed for it.
+  void take_waiting(GroupContext& ctx);
+  void take_progress(const std::vector<std::int32_t>& values);
+  // Robot k's route from its step `from` on, released as far as it is, with its acts still ahead.
+  [[nodiscard]] task::Route route_from(std::size_t k, std::uint32_t from) const;
+  // A seq of the current plan (its first window's up to its latest).
+  [[nodiscard]] bool in_plan(std::uint32_t seq) const { return have_plan_ && seq >= chain_first_ && seq <= seq_; }
   // Sends a release to every robot of the group that may now go further.
   void release(GroupContext& ctx);
   void note(int k);  // robot k's progress/release goes into the next report
@@ -55,7 +70,10 @@ class MapfGroupTask : public GroupTask {
   bool timed_;
   int group_;
   std::uint32_t seq_ = 0;
+  std::uint32_t chain_first_ = 0;  // the seq of the plan's first window
   bool have_plan_ = false;
+  std::vector<task::Order> waiting_;  // continuations and progress relays ahead of their plan
+  std::vector<planner::mapf::Path> paths_;  // per plan index: the timed path (grown by continuations)
   bool holding_ = false;
   planner::mapf::Dependencies adg_;
   std::vector<std::vector<planner::Cell>> routes_;  // per plan index: what the robot drives
@@ -83,6 +101,7 @@ class MapfGroupTask : public GroupTask {
   bool reported_held_ = false;
   std::uint64_t releases_sent_ = 0;
   std::uint64_t plans_taken_ = 0;
+  std::uint64_t plans_continued_ = 0;
 };
 
 }  // namespace swarm::leader
