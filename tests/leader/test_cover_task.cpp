@@ -84,14 +84,21 @@ TEST(CoverTask, PlowAndGroupKOrdersCoverEveryReachableCell) {
 
 // ---- Through the traffic layer (cover.traffic, docs/traffic.md) ---------------------------------
 
+// The mission complete, every cell covered as the simulator judges, no conflict in the cover phase,
+// which it returns.
+const nlohmann::json& expect_covered_without_a_conflict(const nlohmann::json& m) {
+  EXPECT_TRUE(m["complete"].get<bool>()) << m["phases"].dump(1);
+  const auto& cover = phase_named(m, "cover");
+  EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
+  expect_no_conflict(cover);
+  return cover;
+}
+
 TEST(CoverTask, ThroughTheTrafficLayerEveryCellIsCoveredWithoutAConflict) {
   swarm::test::FakeSwarm s(swarm::test::setup_from_text(
       "map: 'small' groups: 3 robots_per_group: 3 max_ticks: 3000 mission { phase { cover { traffic: true } } }"));
   const auto m = s.run_to_end();
-  ASSERT_TRUE(m["complete"].get<bool>()) << m["phases"].dump(1);
-  const auto& cover = phase_named(m, "cover");
-  EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
-  expect_no_conflict(cover);
+  const auto& cover = expect_covered_without_a_conflict(m);
   EXPECT_GT(cover["task"]["traffic"]["windows"].get<int>(), 1);
   // Each window is planned from the plan's end while the one before is driven, and continues the
   // plan: no window waits for the slowest robot of the last.
@@ -110,10 +117,7 @@ TEST(CoverTask, ThroughTheTrafficLayerWindowsThatArriveOutOfOrderWaitForTheirPla
         " links { leader_gcs { delay_ticks: 2 jitter_ticks: 2 loss: 0.05 } member_leader { jitter_ticks: 1 } } "
         "mission { phase { cover { } } }"));
     const auto m = s.run_to_end();
-    ASSERT_TRUE(m["complete"].get<bool>()) << m["phases"].dump(1);
-    const auto& cover = phase_named(m, "cover");
-    EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
-    expect_no_conflict(cover);
+    const auto& cover = expect_covered_without_a_conflict(m);
     EXPECT_GT(cover["task"]["traffic"]["windows_continued"].get<int>(), 0);
   }
 }
@@ -123,10 +127,7 @@ TEST(CoverTask, ThroughTheTrafficLayerTheFlatDivisionCoversToo) {
       "map: 'small' groups: 2 robots_per_group: 2 max_ticks: 3000 "
       "mission { phase { cover { traffic: true hierarchical: false } } }"));
   const auto m = s.run_to_end();
-  ASSERT_TRUE(m["complete"].get<bool>()) << m["phases"].dump(1);
-  const auto& cover = phase_named(m, "cover");
-  EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
-  expect_no_conflict(cover);
+  const auto& cover = expect_covered_without_a_conflict(m);
   EXPECT_EQ(cover["task"]["divisions"][0]["agents"], "robots");
 }
 
@@ -134,11 +135,7 @@ TEST(CoverTask, ThroughTheTrafficLayerAfterExplorationTooWithoutAConflict) {
   swarm::test::FakeSwarm s(swarm::test::setup_from_text(
       "map: 'small' groups: 3 robots_per_group: 3 max_ticks: 4000 "
       "mission { phase { explore {} } phase { cover { traffic: true } } }"));
-  const auto m = s.run_to_end();
-  ASSERT_TRUE(m["complete"].get<bool>()) << m["phases"].dump(1);
-  const auto& cover = phase_named(m, "cover");
-  EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
-  expect_no_conflict(cover);
+  expect_covered_without_a_conflict(s.run_to_end());
 }
 
 TEST(CoverTask, ThroughTheTrafficLayerALostMembersCellsGoToTheOthers) {
@@ -148,13 +145,10 @@ TEST(CoverTask, ThroughTheTrafficLayerALostMembersCellsGoToTheOthers) {
   const auto m = s.run_to_end([&](std::uint32_t tick) {
     if (tick == 60) s.disconnect(setup.topology.robot(0, 2));
   });
-  ASSERT_TRUE(m["complete"].get<bool>()) << m["phases"].dump(1);
-  const auto& cover = phase_named(m, "cover");
-  EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0);
+  const auto& cover = expect_covered_without_a_conflict(m);
   bool redivided = false;
   for (const auto& d : cover["task"]["divisions"]) redivided = redivided || d["why"] == "robot lost";
   EXPECT_TRUE(redivided) << cover["task"]["divisions"].dump();
-  expect_no_conflict(cover);
 }
 
 }  // namespace
