@@ -95,7 +95,12 @@ void RobotAgent::step_following(Step& out, std::uint32_t tick) {
   if (!part_done || f.release <= at) return;
   if (f.sim_id == 0 && tick < f.start_tick) return;  // not yet: the route sets off at its start tick
   if (pose_ != f.cells[at]) {
-    follow_progress_.state = RouteState::Abandoned;  // not where the route says: cannot go on
+    // Not where the route says: it cannot go on, and it stops, so that it does not drive on along
+    // the part of an earlier route still in the simulator while its leader routes it from where it
+    // stands (before, a leader's new routes chased a robot that kept moving, each one abandoned).
+    follow_progress_.state = RouteState::Abandoned;
+    out.path_changed = true;
+    out.path.clear();
     return;
   }
   out.path_changed = true;

@@ -390,6 +390,25 @@ TEST(RobotAgent, TheRouteItFollowsGrownAtItsEndIsDrivenOnFromWhereItStands) {
   EXPECT_EQ(robot.following().step, 0u);
 }
 
+// A route that does not start where the robot stands (its leader saw it a step back) is abandoned,
+// and the robot stops instead of driving on along the part of its last route still in the
+// simulator; its leader then routes it from where it stands.
+TEST(RobotAgent, ARouteNotStartingWhereItStandsIsAbandonedAndTheRobotStops) {
+  const auto art = corridor();
+  RobotAgent robot = agent_for(art.grid);
+  const Cell a = art.at.at('A');
+  const auto along = [a](int i) { return Cell{a.x + i, a.y}; };
+  robot.follow(7, {along(0), along(1), along(2), along(3)}, 3);
+  RobotAgent::Step s = tick_at(robot, art.grid, along(0), 3.0f);
+  ASSERT_TRUE(s.path_changed);
+  (void)tick_at(robot, art.grid, along(1), 3.0f);
+  robot.follow(8, {along(0), along(1), along(2), along(3), along(4)}, 4);  // from where it was
+  s = tick_at(robot, art.grid, along(2), 3.0f);
+  EXPECT_EQ(robot.following().state, planner::RouteState::Abandoned);
+  ASSERT_TRUE(s.path_changed);
+  EXPECT_TRUE(s.path.empty());  // stop
+}
+
 TEST(RobotAgent, LearnReturnsHowManyCellsChanged) {
   RobotAgent robot(3, 2, 0.2);
   // Cell 0 twice in one patch counts once; cell 1 becomes Occupied.
