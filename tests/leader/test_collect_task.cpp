@@ -80,7 +80,8 @@ TEST(CollectTask, ALostLeadersGroupIsResumedByItsStandbyAndEveryObjectIsDelivere
 }
 
 // A member lost in the very tick it picks up an object, after exploration (3 x 3 robots on
-// small): its last report does not say so, but its true cell in the clock shows how far along its
+// small; both phases in their classic drives, so that the traffic layer's timing does not move the
+// test into the classic collect's known head-on gridlock): its last report does not say so, but its true cell in the clock shows how far along its
 // route it got, so the leader knows it carried the object, which the simulator put down beside it
 // with the other it held. Both lie on one cell, and a robot picks up everything on the cell it
 // picks at: they go to one robot. Before, one of them was looked for where it had been picked up,
@@ -88,7 +89,7 @@ TEST(CollectTask, ALostLeadersGroupIsResumedByItsStandbyAndEveryObjectIsDelivere
 // simulator judged, 14 as the GCS knew, run to max_ticks).
 TEST(CollectTask, AMemberLostAsItPicksUpStillHasItsLoadCollected) {
   auto setup = swarm::test::setup_from_text(
-      "map: 'small' max_ticks: 1500 mission { phase { explore {} } phase { collect { traffic: false } } }");
+      "map: 'small' max_ticks: 1500 mission { phase { explore { traffic: false } } phase { collect { traffic: false } } }");
   const comm::AgentId robot = setup.topology.robot(0, 2);
   // The tick it first picks up (runs are deterministic): found by a run without the loss, so the
   // test stays on that moment whatever exploration takes before.
