@@ -182,13 +182,14 @@ bool MapfGroupTask::extend_plan(const task::Order& o, GroupContext& ctx) {
     }
     paths[k].insert(paths[k].end(), r.path.begin() + 1, r.path.end());
   }
+  planner::mapf::Dependencies grown;
   try {
-    adg_ = planner::mapf::dependencies(paths);
+    grown = planner::mapf::dependencies(paths);
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "leader-%d: mapf window %u dropped: %s\n", group_, o.seq, e.what());
-    adg_ = planner::mapf::dependencies(paths_);  // the plan as it was
-    return false;
+    return false;  // the plan stays as it was
   }
+  adg_ = std::move(grown);
   // The grown plan's old steps keep their needs (planner/mapf/adg.hpp): progress and releases
   // carry over.
   paths_ = std::move(paths);
