@@ -90,13 +90,15 @@ std::optional<Instance> load_or_skip(benchmark::State& state, const std::string&
   }
 }
 
-void BM_Division(benchmark::State& state, const std::string& name, DarpDistance distance, DarpInit init) {
+void BM_Division(benchmark::State& state, const std::string& name, DivisionMethod method, DarpDistance distance,
+                 DarpInit init) {
   const std::optional<Instance> loaded = load_or_skip(state, name);
   if (!loaded) return;
   const Instance& in = *loaded;
   DarpRequest req;
   req.robots = in.robots;
   DarpConfig cfg;
+  cfg.method = method;
   cfg.distance = distance;
   cfg.init = init;
   DarpResult r;
@@ -110,6 +112,7 @@ void BM_Division(benchmark::State& state, const std::string& name, DarpDistance 
   const Reference& ref = kReference.at(name);
   state.counters["iterations"] = r.iterations;
   state.counters["converged"] = r.status == DarpStatus::Converged;
+  state.counters["repaired_cells"] = r.repair_moves;
   state.counters["ref_iterations"] = ref.iterations;
   state.counters["ref_converged"] = ref.converged;
   set_reference(state, ref.division_s, cpu / static_cast<double>(state.iterations()));
@@ -131,7 +134,9 @@ void BM_Paths(benchmark::State& state, const std::string& name) {
   const Instance& in = *loaded;
   DarpRequest req;
   req.robots = in.robots;
-  const DarpResult division = divide_areas(in.map, req);  // the Division/euclidean/given result
+  DarpConfig darp_alone;
+  darp_alone.method = DivisionMethod::Darp;
+  const DarpResult division = divide_areas(in.map, req, darp_alone);  // the Division/darp/euclidean/given result
   std::vector<CoveragePlan> plans;
   double cpu = 0;
   for (auto _ : state) {
@@ -163,14 +168,18 @@ void register_all() {
   for (const auto& [name, ref] : kReference) {
     // The failed searches run up to 10,000 iterations: once is enough.
     const int runs = ref.converged ? 0 : 1;
-    auto division = [&](const std::string& label, DarpDistance d, DarpInit i) {
-      auto* b = benchmark::RegisterBenchmark(("Division/" + name + "/" + label).c_str(), BM_Division, name, d, i)
+    auto division = [&](DivisionMethod m, DarpDistance d, DarpInit i) {
+      const std::string label = std::string(to_string(m)) + "/" + to_string(d) + "/" + to_string(i);
+      auto* b = benchmark::RegisterBenchmark(("Division/" + name + "/" + label).c_str(), BM_Division, name, m, d, i)
                     ->Unit(benchmark::kMillisecond);
-      if (runs > 0) b->Iterations(runs);
+      if (runs > 0 && m == DivisionMethod::Darp) b->Iterations(runs);
     };
-    division("euclidean/given", DarpDistance::Euclidean, DarpInit::Given);
-    division("geodesic/given", DarpDistance::Geodesic, DarpInit::Given);
-    division("geodesic/bfs-kmeans", DarpDistance::Geodesic, DarpInit::BfsKMeans);
+    // DARP alone, as the reference (and the paper's BFS + K-Means); then the default, auto.
+    division(DivisionMethod::Darp, DarpDistance::Euclidean, DarpInit::Given);
+    division(DivisionMethod::Darp, DarpDistance::Geodesic, DarpInit::Given);
+    division(DivisionMethod::Darp, DarpDistance::Geodesic, DarpInit::BfsKMeans);
+    division(DivisionMethod::Auto, DarpDistance::Euclidean, DarpInit::Given);
+    division(DivisionMethod::Auto, DarpDistance::Geodesic, DarpInit::Given);
     auto* p = benchmark::RegisterBenchmark(("Paths/" + name).c_str(), BM_Paths, name)->Unit(benchmark::kMillisecond);
     if (runs > 0) p->Iterations(1);
   }

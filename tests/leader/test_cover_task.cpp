@@ -4,6 +4,9 @@
 // and through the traffic layer with no conflict.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 #include "swarm_test/fake_swarm.hpp"
 #include "swarm_test/phase_checks.hpp"
 
@@ -103,8 +106,20 @@ TEST(CoverTask, ThroughTheTrafficLayerEveryCellIsCoveredWithoutAConflict) {
   // Each window is planned from the plan's end while the one before is driven, and continues the
   // plan: no window waits for the slowest robot of the last.
   EXPECT_GT(cover["task"]["traffic"]["windows_continued"].get<int>(), cover["task"]["traffic"]["windows"].get<int>() / 2);
-  // As the hierarchical cover divides: among the groups, then each share among its robots.
-  EXPECT_EQ(cover["task"]["divisions"][0]["agents"], "leaders");
+  // As the hierarchical cover divides: among the groups, then each share among its robots; both
+  // levels are recorded, each balanced within one cell of every share.
+  const auto& division = cover["task"]["divisions"][0];
+  EXPECT_EQ(division["agents"], "leaders");
+  ASSERT_EQ(division["within_groups"].size(), 3u) << division.dump(1);
+  std::vector<nlohmann::json> levels{division};
+  for (const auto& g : division["within_groups"]) levels.push_back(g);
+  for (const auto& d : levels) {
+    EXPECT_EQ(d["darp_status"], "converged") << d.dump(1);
+    EXPECT_TRUE(d["finished_by"] == "darp" || d["finished_by"] == "repair") << d.dump(1);
+    for (std::size_t k = 0; k < d["cells"].size(); ++k) {
+      EXPECT_LE(std::abs(d["cells"][k].get<double>() - d["shares"][k].get<double>()), 1.0) << d.dump(1);
+    }
+  }
 }
 
 // Jitter on the GCS's link reorders its orders: a window can reach a leader before the one it

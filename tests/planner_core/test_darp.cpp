@@ -8,6 +8,7 @@
 #include "swarm/planner/coverage/darp.hpp"
 #include "swarm/planner/grid/rng.hpp"
 #include "swarm_test/ascii_grid.hpp"
+#include "swarm_test/random_grid.hpp"
 
 namespace {
 
@@ -163,11 +164,13 @@ TEST(Darp, StopAndIterationLimitReturnTheBestDivisionSoFar) {
   const OccupancyGrid g(30, 30, 0.2, 0, 0, CellState::Free);
   DarpRequest req;
   req.robots = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {2, 2}, {3, 0}};
-  const DarpResult stopped = divide_areas(g, req, {}, [] { return true; });
+  DarpConfig alone;
+  alone.method = DivisionMethod::Darp;
+  const DarpResult stopped = divide_areas(g, req, alone, [] { return true; });
   EXPECT_EQ(stopped.status, DarpStatus::Stopped);
   EXPECT_EQ(stopped.iterations, 0);
   expect_valid(g, req, stopped);
-  DarpConfig few;
+  DarpConfig few = alone;
   few.max_iterations = 5;
   const DarpResult failed = divide_areas(g, req, few);
   EXPECT_EQ(failed.status, DarpStatus::Failed);
@@ -245,9 +248,8 @@ TEST(Darp, RandomMapsGiveValidDivisions) {
   Rng rng(11);
   int converged = 0, runs = 0;
   for (int trial = 0; trial < 12; ++trial) {
-    const int w = rng.uniform_int(12, 28), h = rng.uniform_int(12, 28);
-    OccupancyGrid g(w, h, 0.2, 0, 0, CellState::Free);
-    for (int k = 0; k < w * h / 12; ++k) g.set({rng.uniform_int(0, w - 1), rng.uniform_int(0, h - 1)}, CellState::Occupied);
+    const OccupancyGrid g = swarm::test::random_walls(rng, 12, 28, 12);
+    const int w = g.width(), h = g.height();
     DarpRequest req;
     const int n = rng.uniform_int(2, 5);
     while (static_cast<int>(req.robots.size()) < n) {
@@ -257,6 +259,7 @@ TEST(Darp, RandomMapsGiveValidDivisions) {
     for (DarpInit init : {DarpInit::Given, DarpInit::Random, DarpInit::KMeans, DarpInit::BfsKMeans}) {
       for (DarpDistance d : {DarpDistance::Euclidean, DarpDistance::Geodesic}) {
         DarpConfig cfg;
+        cfg.method = DivisionMethod::Darp;  // DARP alone (test_division_repair.cpp: the default)
         cfg.init = init;
         cfg.distance = d;
         cfg.max_iterations = 2000;
@@ -280,6 +283,10 @@ TEST(Darp, NamesRoundTrip) {
   EXPECT_EQ(parse_darp_distance("geodesic"), DarpDistance::Geodesic);
   EXPECT_EQ(parse_darp_distance("manhattan"), std::nullopt);
   EXPECT_STREQ(to_string(DarpStatus::Failed), "failed");
+  EXPECT_STREQ(to_string(DarpStatus::Impossible), "impossible");
+  EXPECT_EQ(parse_division_method("auto"), DivisionMethod::Auto);
+  EXPECT_EQ(parse_division_method("darp"), DivisionMethod::Darp);
+  EXPECT_EQ(parse_division_method("best"), std::nullopt);
 }
 
 }  // namespace

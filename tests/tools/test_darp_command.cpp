@@ -1,4 +1,4 @@
-// `swarm darp`: a map file and robots in, division.png and result.json out, exit 0 / 1 / 2; every
+// `swarm darp`: a map file and robots in, division.png and result.json out, exit 0 / 1 / 2 / 3; every
 // bad input of issue 8 exits 2 naming the flag, file and line.
 #include <gtest/gtest.h>
 
@@ -102,9 +102,48 @@ TEST_F(DarpCommand, NotConvergedExitsOne) {
   o.map = map(kSmall);
   o.robots = "0,0;1,0";
   o.max_iterations = 0;
+  o.method = "darp";
   const Outcome r = run(o);
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.result["status"], "failed");
+  EXPECT_EQ(r.result["finished_by"], "darp");
+}
+
+// The default method finishes what DARP leaves: the same start, no DARP iteration, converged by
+// the repair, and says so.
+TEST_F(DarpCommand, TheDefaultMethodRepairsWhatDarpLeaves) {
+  DarpOptions o;
+  o.map = map(kSmall);
+  o.robots = "0,0;1,0";
+  o.max_iterations = 0;
+  const Outcome r = run(o);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.result["status"], "converged");
+  EXPECT_EQ(r.result["method"], "auto");
+  EXPECT_EQ(r.result["finished_by"], "repair");
+  EXPECT_GT(r.result["repair_moves"].get<int>(), 0);
+  EXPECT_EQ(r.result["cells"], nlohmann::json({11, 11}));
+  EXPECT_NE(r.out.find("finished by repair"), std::string::npos) << r.out;
+}
+
+// Three arms of 4 cells on one centre cell, two robots (shares 6.5): a region without the centre
+// fits in one arm, so no division within one cell exists. Exit 3, the reason, the best division.
+TEST_F(DarpCommand, NoBalancedDivisionExitsThreeWithTheReason) {
+  DarpOptions o;
+  o.map = map({"@@@@.@@@@",
+               "@@@@.@@@@",
+               "@@@@.@@@@",
+               "@@@@.@@@@",
+               ".........",
+               "@@@@@@@@@"});
+  o.robots = "4,0;8,4";
+  const Outcome r = run(o);
+  EXPECT_EQ(r.status, 3) << r.out << r.err;
+  EXPECT_EQ(r.result["status"], "impossible");
+  EXPECT_NE(r.result["message"].get<std::string>().find("parts of 4, 4 and 4 cells"), std::string::npos)
+      << r.result["message"];
+  EXPECT_NE(r.out.find("no division within 1 cell of every share exists"), std::string::npos) << r.out;
+  EXPECT_TRUE(r.result["problems"].empty()) << r.result["problems"];
 }
 
 // Every bad input: exit 2 and one message that names where the problem is.
@@ -120,6 +159,10 @@ TEST_F(DarpCommand, BadInputExitsTwoNamingTheProblem) {
   o.map = m;
   o.robots = "1,1";
   expect_bad(o, "--robots entry 0: robot at (1, 1) is on a blocked cell");
+  o.robots = "0,0";
+  o.method = "best";
+  expect_bad(o, "--method \"best\": expected auto or darp");
+  o.method = "auto";
   o.robots = "0,0;6,0";
   expect_bad(o, "--robots entry 1: robot at (6, 0) is outside the map (6 x 4 cells");
   o.robots = "0,0;3,2;0,0";

@@ -44,6 +44,30 @@ TEST(ExperimentDarp, WritesTableCsvJsonAndPlots) {
   int lines = 0;
   for (std::string line; std::getline(csv, line);) ++lines;
   EXPECT_EQ(lines, 1 + 6);
+  // The default division converges every run and says how many the repair finished.
+  EXPECT_NE(out.str().find("division auto: 0 of 6 runs did not converge"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("finished by the repair"), std::string::npos) << out.str();
+  for (const auto& run : j["runs"]) EXPECT_EQ(run["status"], "converged") << run.dump();
+}
+
+// --division darp: DARP alone, its iterations against the paper's; no repair.
+TEST(ExperimentDarp, DarpAloneForThePapersFigures) {
+  TempDir dir;
+  DarpExperimentOptions o;
+  o.maps = {"rectangle"};
+  o.conditions = {"far"};
+  o.methods = {"standalone", "bfs-kmeans"};
+  o.robots = {3};
+  o.seeds = 1;
+  o.sweep_max = 0;
+  o.jobs = 1;
+  o.division = "darp";
+  o.out_dir = dir.str();
+  std::ostringstream out, err;
+  ASSERT_EQ(swarm::tools::experiment_darp_command(o, out, err), 0) << err.str();
+  EXPECT_NE(out.str().find("check: BFS + K-Means (always)"), std::string::npos) << out.str();
+  const nlohmann::json j = nlohmann::json::parse(slurp(dir.file("results.json")));
+  for (const auto& run : j["runs"]) EXPECT_EQ(run["finished_by"], "darp") << run.dump();
 }
 
 TEST(ExperimentDarp, BadInputExitsTwo) {
@@ -65,6 +89,9 @@ TEST(ExperimentDarp, BadInputExitsTwo) {
   expect_bad(o, "the bottleneck condition needs a map with a known narrowest passage");
   o.maps = {"nowhere"};
   expect_bad(o, "--map: unknown map 'nowhere'");
+  o.maps = {};
+  o.division = "best";
+  expect_bad(o, "--division \"best\": expected auto or darp");
 }
 
 }  // namespace

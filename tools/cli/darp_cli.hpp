@@ -19,6 +19,8 @@ inline CLI::App* add_darp_flags(CLI::App& app, DarpOptions& o) {
   c->add_option("--placement", o.placement, "spread | bunched")->capture_default_str();
   c->add_option("--seed", o.seed, "Placement and DARP random factors")->capture_default_str();
   c->add_option("--weights", o.weights, "Portions \"1,2,1\" (one per robot); default equal");
+  c->add_option("--method", o.method, "auto (DARP, then a repair when it does not converge) | darp (DARP alone)")
+      ->capture_default_str();
   c->add_option("--init", o.init, "given | random | kmeans | bfs-kmeans")->capture_default_str();
   c->add_option("--reinit", o.reinit, "bfs-kmeans: selective (paper) | always (paper's tables)")->capture_default_str();
   c->add_option("--distance", o.distance, "euclidean (paper) | geodesic")->capture_default_str();
@@ -37,6 +39,8 @@ inline CLI::App* add_experiment_darp_flags(CLI::App& experiment, DarpExperimentO
   c->add_option("--conditions", o.conditions, "bottleneck, entrance, far, near (default all)")->delimiter(',');
   c->add_option("--methods", o.methods, "standalone, random, kmeans, bfs-kmeans, selective "
                                          "(default standalone,kmeans,bfs-kmeans,selective)")->delimiter(',');
+  c->add_option("--division", o.division, "auto (DARP, then the repair) | darp (DARP alone: the paper's figures)")
+      ->capture_default_str();
   c->add_option("--distance", o.distance, "euclidean (paper) | geodesic")->capture_default_str();
   c->add_option("--max-iterations", o.max_iterations, "I_max")->capture_default_str();
   c->add_option("--sweep-max", o.sweep_max, "Sweep n = 1..N on the rectangle (0 = no sweep)")->capture_default_str();

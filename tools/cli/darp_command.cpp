@@ -235,6 +235,9 @@ int darp_command(const DarpOptions& o, std::ostream& out, std::ostream& err) {
       else throw DarpInputError("--placement \"" + o.placement + "\": expected spread or bunched");
     }
     weights = parse_weights(o.weights, robots.size());
+    const auto method = planner::parse_division_method(o.method);
+    if (!method) throw DarpInputError("--method \"" + o.method + "\": expected auto or darp");
+    cfg.method = *method;
     const auto init = planner::parse_darp_init(o.init);
     if (!init) throw DarpInputError("--init \"" + o.init + "\": expected given, random, kmeans or bfs-kmeans");
     const auto distance = planner::parse_darp_distance(o.distance);
@@ -262,7 +265,7 @@ int darp_command(const DarpOptions& o, std::ostream& out, std::ostream& err) {
   const OccupancyGrid& map = loaded.grid;
 
   out << "swarm darp: " << loaded.path << " (" << map.width() << " x " << map.height() << ", " << free_cells(map)
-      << " free cells), " << robots.size() << " robots, init " << o.init
+      << " free cells), " << robots.size() << " robots, method " << o.method << ", init " << o.init
       << (cfg.init == planner::DarpInit::BfsKMeans ? " (" + o.reinit + ")" : "") << ", " << o.distance << "\n";
   // Progress every second (DARP may run 10,000 iterations); the time limit, if any.
   const Clock::time_point t0 = Clock::now();
@@ -289,7 +292,8 @@ int darp_command(const DarpOptions& o, std::ostream& out, std::ostream& err) {
 
   // Trust nothing unchecked: the independent validators (a failure here is a bug).
   std::vector<std::string> problems =
-      planner::check_division(map, request, division, cfg.init == planner::DarpInit::Given);
+      planner::check_division(map, request, division,
+                              cfg.init == planner::DarpInit::Given && cfg.method == planner::DivisionMethod::Darp);
   for (std::size_t r = 0; r < plans.size(); ++r) {
     const OccupancyGrid region = planner::region_of(map, division.assignment, static_cast<int>(r));
     const Cell from = plans[r].approach.empty() ? robots[r] : plans[r].approach.back();
@@ -303,7 +307,12 @@ int darp_command(const DarpOptions& o, std::ostream& out, std::ostream& err) {
   j["map"] = loaded.path;
   j["coordinates"] = "x = column, y = row from the top row of the map file (0-based)";
   j["status"] = planner::to_string(division.status);
+  if (!division.message.empty()) j["message"] = division.message;
+  j["method"] = o.method;
+  j["finished_by"] = division.finished_by;
   j["iterations"] = division.iterations;
+  j["repair_moves"] = division.repair_moves;
+  j["starts_moved"] = division.starts_moved;
   j["init"] = o.init;
   j["reinit"] = o.reinit;
   j["distance"] = o.distance;
@@ -364,17 +373,21 @@ int darp_command(const DarpOptions& o, std::ostream& out, std::ostream& err) {
     std::ostringstream title;
     title << "DARP " << o.init << ", " << o.distance << ": " << robots.size() << " robots, "
           << planner::to_string(division.status) << " after " << division.iterations << " iterations";
+    if (division.finished_by != "darp") title << " + " << division.finished_by << " (" << division.repair_moves << " cells)";
     draw_division(map, robots, division, plans, title.str(), png_path);
   } catch (const std::exception& e) {
     err << "swarm darp: " << e.what() << "\n";
     return 1;
   }
 
-  char line[160];
-  std::snprintf(line, sizeof line, "  %s after %d iterations in %.3f s (alpha0 %.3f); paths in %.3f s\n",
-                planner::to_string(division.status), division.iterations, seconds_division, division.alpha0,
-                seconds_paths);
+  char line[200];
+  std::snprintf(line, sizeof line, "  %s, finished by %s: %d DARP iterations, %d cells repaired, %.3f s (alpha0 %.3f, "
+                "final imbalance %.4f); paths in %.3f s\n",
+                planner::to_string(division.status), division.finished_by.c_str(), division.iterations,
+                division.repair_moves, seconds_division, division.alpha0, division.final_imbalance, seconds_paths);
   out << line;
+  if (!division.message.empty()) out << "  " << division.message << "\n";
+  if (division.starts_moved) out << "  some regions grow from a cell other than their robot's: it drives there first\n";
   if (division.unreachable_cells > 0) {
     out << "  " << division.unreachable_cells << " free cells no robot can reach (-2 in the assignment)\n";
   }
@@ -386,6 +399,7 @@ int darp_command(const DarpOptions& o, std::ostream& out, std::ostream& err) {
   }
   out << "  wrote " << png_path << ", " << json_path << "\n";
   if (!problems.empty()) return 1;
+  if (division.status == planner::DarpStatus::Impossible) return 3;
   return division.status == planner::DarpStatus::Converged ? 0 : 1;
 }
 

@@ -10,7 +10,8 @@
 // image, first row = top), 0-based. Writes DIR/division.png (regions in colours, robots as discs,
 // relocated starts as rings, paths as lines) and DIR/result.json (see write_darp_json).
 // Exit status: 0 converged, 1 not converged (failed or stopped; the best division is still
-// written), 2 bad input (one message naming the flag, file and line, or field).
+// written), 2 bad input (one message naming the flag, file and line, or field), 3 no division
+// within one cell exists (the reason is printed; the most balanced connected one found is written).
 #pragma once
 
 #include <cstdint>
@@ -34,6 +35,7 @@ struct DarpOptions {
   std::string placement = "spread";  // spread | bunched
   std::uint64_t seed = 1;           // placement and DARP's random factors
   std::string weights;              // "1,2,1": unequal portions; "" = equal
+  std::string method = "auto";      // auto | darp (planner::DivisionMethod)
   std::string init = "given";       // given | random | kmeans | bfs-kmeans
   std::string reinit = "selective";  // bfs-kmeans: selective | always
   std::string distance = "euclidean";  // euclidean | geodesic

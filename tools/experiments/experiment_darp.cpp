@@ -83,6 +83,8 @@ struct Outcome {
   int iterations = 0;
   double alpha0 = NAN, alpha1 = NAN, final_imbalance = NAN, max_deviation = NAN;
   int split = 0;
+  bool repaired = false;  // the repair finished the division (DivisionMethod::Auto)
+  int repair_moves = 0;
   double seconds = 0;
   std::string error;
   std::vector<Cell> robots;                // kept for the pictures (seed 1, first robot count)
@@ -101,6 +103,7 @@ std::vector<Cell> starts_for(const MapInfo& m, const std::string& condition, int
 
 DarpConfig config_for(const std::string& method, const DarpExperimentOptions& o, int seed) {
   DarpConfig c;
+  c.method = *planner::parse_division_method(o.division);
   c.max_iterations = o.max_iterations;
   c.distance = *planner::parse_darp_distance(o.distance);
   c.seed = planner::mix_seed(seed, 0xda49);
@@ -137,6 +140,8 @@ Outcome run_job(const Job& job, const std::vector<MapInfo>& maps, const DarpExpe
   out.final_imbalance = r.final_imbalance;
   out.max_deviation = r.max_deviation;
   out.split = r.split_regions;
+  out.repaired = r.finished_by == "repair";
+  out.repair_moves = r.repair_moves;
   if (keep) {
     out.robots = req.robots;
     out.kept = std::make_shared<const DarpResult>(r);
@@ -155,7 +160,7 @@ Colour method_colour(const std::string& m) {
 // Per (map, condition, method): what the table shows.
 struct Cellwise {
   std::vector<double> iterations;  // failed runs at I_max
-  int failed = 0, runs = 0;
+  int failed = 0, runs = 0, repaired = 0;
   std::vector<double> imbalance, alpha0, alpha1, seconds;
 };
 
@@ -194,6 +199,9 @@ int experiment_darp_command(const DarpExperimentOptions& opt, std::ostream& out,
     if (o.max_iterations < 1) throw DarpInputError("--max-iterations must be >= 1");
     for (int n : o.robots) {
       if (n < 1) throw DarpInputError("--robots: robot counts must be >= 1");
+    }
+    if (!planner::parse_division_method(o.division)) {
+      throw DarpInputError("--division \"" + o.division + "\": expected auto or darp");
     }
     if (!planner::parse_darp_distance(o.distance)) {
       throw DarpInputError("--distance \"" + o.distance + "\": expected euclidean or geodesic");
@@ -248,7 +256,8 @@ int experiment_darp_command(const DarpExperimentOptions& opt, std::ostream& out,
   }
   out << "swarm experiment darp: " << jobs.size() << " runs (" << main_maps << " maps x " << conditions.size()
       << " conditions x " << o.robots.size() << " robot counts x " << *o.seeds << " seeds x " << methods.size()
-      << " methods" << (o.sweep_max > 0 ? " + sweep" : "") << "), " << o.distance << ", I_max " << o.max_iterations
+      << " methods" << (o.sweep_max > 0 ? " + sweep" : "") << "), division " << o.division << ", " << o.distance
+      << ", I_max " << o.max_iterations
       << ", " << o.jobs << " at once -> " << dir << "\n";
 
   // Run, o.jobs at once; a line per finished group.
@@ -297,6 +306,7 @@ int experiment_darp_command(const DarpExperimentOptions& opt, std::ostream& out,
     const bool ok = r.status == DarpStatus::Converged;
     ++c.runs;
     c.failed += !ok;
+    c.repaired += r.repaired;
     c.iterations.push_back(ok ? r.iterations : o.max_iterations);
     if (ok) c.imbalance.push_back(r.final_imbalance);
     c.alpha0.push_back(r.alpha0);
@@ -311,6 +321,7 @@ int experiment_darp_command(const DarpExperimentOptions& opt, std::ostream& out,
       all.iterations.insert(all.iterations.end(), x.iterations.begin(), x.iterations.end());
       all.failed += x.failed;
       all.runs += x.runs;
+      all.repaired += x.repaired;
       all.imbalance.insert(all.imbalance.end(), x.imbalance.begin(), x.imbalance.end());
       all.alpha0.insert(all.alpha0.end(), x.alpha0.begin(), x.alpha0.end());
       all.alpha1.insert(all.alpha1.end(), x.alpha1.begin(), x.alpha1.end());
@@ -342,7 +353,8 @@ int experiment_darp_command(const DarpExperimentOptions& opt, std::ostream& out,
       t.add_row(row);
     }
     std::vector<std::string> all_row{"  all"}, change_row{"  change vs standalone"}, imb_row{"  final imbalance"},
-        a0_row{"  alpha0"}, a1_row{"  alpha after re-init"}, sec_row{"  seconds"};
+        a0_row{"  alpha0"}, a1_row{"  alpha after re-init"}, sec_row{"  seconds"},
+        repaired_row{"  finished by the repair"};
     const double base = mean(pooled(m, "standalone").iterations);
     for (const std::string& method : methods) {
       const Cellwise all = pooled(m, method);
@@ -352,6 +364,7 @@ int experiment_darp_command(const DarpExperimentOptions& opt, std::ostream& out,
       a0_row.push_back(fixed(mean(all.alpha0), 3));
       a1_row.push_back(fixed(mean(all.alpha1), 3));
       sec_row.push_back(fixed(mean(all.seconds), 4));
+      repaired_row.push_back(std::to_string(all.repaired) + " of " + std::to_string(all.runs));
     }
     t.add_row(all_row);
     if (std::count(methods.begin(), methods.end(), "standalone")) t.add_row(change_row);
@@ -360,10 +373,15 @@ int experiment_darp_command(const DarpExperimentOptions& opt, std::ostream& out,
     t.add_row(a0_row);
     t.add_row(a1_row);
     t.add_row(sec_row);
+    if (o.division == "auto") t.add_row(repaired_row);
     table << maps[m].name << " (" << maps[m].free << " free cells), " << o.distance << " distances, robots " << robots_text
           << ", " << *o.seeds << " seeds per condition:\n"
           << t.render();
-    if (std::count(methods.begin(), methods.end(), "standalone") && std::count(methods.begin(), methods.end(), "bfs-kmeans")) {
+    if (o.division == "auto") {
+      table << "(division auto: DARP runs at most " << DarpConfig{}.auto_darp_iterations
+            << " iterations, then the repair finishes; the paper's comparison of iterations needs --division darp)\n";
+    } else if (std::count(methods.begin(), methods.end(), "standalone") &&
+               std::count(methods.begin(), methods.end(), "bfs-kmeans")) {
       const auto pct = percent_change(mean(pooled(m, "bfs-kmeans").iterations), base);
       const double paper = maps[m].name == "terminal" ? -75.0 : -59.9;
       const bool yes = pct && *pct <= -50.0;
@@ -396,26 +414,36 @@ int experiment_darp_command(const DarpExperimentOptions& opt, std::ostream& out,
           << " seeds, " << o.distance << " (paper: Tables 3 and 4):\n"
           << t.render() << "\n";
   }
+  int not_converged = 0;
+  double slowest = 0;
+  for (const Outcome& r : outcomes) {
+    not_converged += r.status != DarpStatus::Converged;
+    slowest = std::max(slowest, r.seconds);
+  }
+  table << "division " << o.division << ": " << not_converged << " of " << outcomes.size()
+        << " runs did not converge; slowest division " << fixed(slowest, 3) << " s (thread CPU)\n";
   out << "\n" << table.str();
 
   // Files: table, CSV, JSON, plots, pictures.
   try {
     std::ofstream(fs::path(dir) / "table.txt") << table.str();
     std::ofstream csv(fs::path(dir) / "results.csv");
-    csv << "part,map,condition,robots,seed,method,status,iterations,alpha0,alpha_reinit,final_imbalance,"
-           "max_deviation,split_regions,seconds\n";
+    csv << "part,map,condition,robots,seed,method,division,status,finished_by,iterations,repair_moves,alpha0,"
+           "alpha_reinit,final_imbalance,max_deviation,split_regions,seconds\n";
     nlohmann::json runs = nlohmann::json::array();
     for (std::size_t i = 0; i < jobs.size(); ++i) {
       const Job& j = jobs[i];
       const Outcome& r = outcomes[i];
       csv << (j.sweep ? "sweep" : "methods") << "," << maps[j.map].name << "," << j.condition << "," << j.robots << ","
-          << j.seed << "," << j.method << "," << planner::to_string(r.status) << "," << r.iterations << ","
+          << j.seed << "," << j.method << "," << o.division << "," << planner::to_string(r.status) << ","
+          << (r.repaired ? "repair" : "darp") << "," << r.iterations << "," << r.repair_moves << ","
           << fixed(r.alpha0, 6) << "," << fixed(r.alpha1, 6) << "," << fixed(r.final_imbalance, 6) << ","
           << fixed(r.max_deviation, 2) << "," << r.split << "," << fixed(r.seconds, 6) << "\n";
       auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
       runs.push_back({{"part", j.sweep ? "sweep" : "methods"}, {"map", maps[j.map].name}, {"condition", j.condition},
                       {"robots", j.robots}, {"seed", j.seed}, {"method", j.method},
                       {"status", planner::to_string(r.status)}, {"iterations", r.iterations},
+                      {"finished_by", r.repaired ? "repair" : "darp"}, {"repair_moves", r.repair_moves},
                       {"alpha0", num(r.alpha0)}, {"alpha_reinit", num(r.alpha1)},
                       {"final_imbalance", num(r.final_imbalance)}, {"max_deviation", num(r.max_deviation)},
                       {"split_regions", r.split}, {"seconds", r.seconds}, {"error", r.error}});
@@ -425,7 +453,7 @@ int experiment_darp_command(const DarpExperimentOptions& opt, std::ostream& out,
       const auto& [m, c, method] = key;
       const Summary s = summarize(x.iterations);
       aggregates[maps[m].name][c][method] = {{"iterations_mean", s.mean}, {"iterations_std", s.std},
-                                             {"failed", x.failed}, {"runs", x.runs},
+                                             {"failed", x.failed}, {"runs", x.runs}, {"repaired", x.repaired},
                                              {"final_imbalance_mean", mean(x.imbalance)},
                                              {"alpha0_mean", mean(x.alpha0)}, {"seconds_mean", mean(x.seconds)}};
     }
@@ -437,7 +465,7 @@ int experiment_darp_command(const DarpExperimentOptions& opt, std::ostream& out,
                             {"alpha0_mean", mean(x.alpha0)}});
     }
     nlohmann::json j = {{"parameters", {{"seeds", *o.seeds}, {"robots", o.robots}, {"conditions", conditions},
-                                        {"methods", methods}, {"distance", o.distance},
+                                        {"methods", methods}, {"division", o.division}, {"distance", o.distance},
                                         {"max_iterations", o.max_iterations}, {"sweep_max", o.sweep_max},
                                         {"sweep_seeds", *o.sweep_seeds}}},
                         {"runs", runs}, {"aggregates", aggregates}, {"sweep", sweep_json}, {"checks", checks}};

@@ -14,6 +14,10 @@
 //    Reported: iterations mean ± std (a failed run counts I_max, a lower bound), failures, final
 //    imbalance, alpha0 and alpha after re-initialisation, seconds (thread CPU time), and the check
 //    "BFS + K-Means needs >= 50 % fewer iterations than standalone on the terminal" (paper: -75 %).
+//    Each run divides with --division: auto (the default: DARP for at most 100 iterations, then
+//    the repair, darp.hpp) or darp (DARP alone, up to I_max: the paper's comparisons, which count
+//    DARP's iterations); the table says how many runs the repair finished and how many did not
+//    converge at all.
 // 2. Far vs close sweep (the paper's Tables 3 and 4): the rectangle, n = 1..sweep_max robots,
 //    spread vs bunched starts, standalone DARP, beside the paper's iterations.
 //
@@ -37,6 +41,7 @@ struct DarpExperimentOptions {
   std::vector<std::string> maps;         // empty = {"terminal", "rectangle"}
   std::vector<std::string> conditions;   // empty = bottleneck, entrance, far, near
   std::vector<std::string> methods;      // empty = standalone, kmeans, bfs-kmeans, selective
+  std::string division = "auto";         // auto | darp (planner::DivisionMethod); darp = the paper's figures
   std::string distance = "euclidean";
   int max_iterations = 10000;
   int sweep_max = 10;                    // 0 = no sweep

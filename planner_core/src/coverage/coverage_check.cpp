@@ -85,8 +85,10 @@ std::vector<std::string> check_division(const OccupancyGrid& map, const DarpRequ
     int in_piece = 0;
     for (char v : piece) in_piece += v;
     if (in_piece != cells[r]) ++split;
-    if (result.status == DarpStatus::Converged) {
+    if (result.status == DarpStatus::Converged || result.status == DarpStatus::Impossible) {
       if (in_piece != cells[r]) problems.push_back(who + ": region is not 4-connected");
+    }
+    if (result.status == DarpStatus::Converged) {
       if (std::abs(cells[r] - result.shares[r]) > tolerance_cells + 1e-9) {
         problems.push_back(who + ": " + std::to_string(cells[r]) + " cells, share " + std::to_string(result.shares[r]));
       }

@@ -1,11 +1,14 @@
 #include "swarm/planner/coverage/darp.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <memory>
+#include <cstdio>
 #include <set>
 
 #include "darp_engine.hpp"
+#include "division_repair.hpp"
 #include "swarm/planner/coverage/region_graph.hpp"
 
 namespace swarm::planner {
@@ -106,6 +109,12 @@ DarpSpace make_space(const OccupancyGrid& region, const DarpRequest& req, std::v
 
 double alpha_of(const DarpEngine& e, const DarpSpace& s) { return imbalance(e.counts(), s.weights); }
 
+std::string format_cells(double cells) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g cell%s", cells, cells == 1 ? "" : "s");
+  return text;
+}
+
 }  // namespace
 
 const char* to_string(DarpStatus status) {
@@ -114,6 +123,7 @@ const char* to_string(DarpStatus status) {
     case DarpStatus::Failed: return "failed";
     case DarpStatus::Stopped: return "stopped";
     case DarpStatus::BadInput: return "bad-input";
+    case DarpStatus::Impossible: return "impossible";
   }
   return "?";
 }
@@ -130,6 +140,15 @@ const char* to_string(DarpInit init) {
     case DarpInit::BfsKMeans: return "bfs-kmeans";
   }
   return "?";
+}
+
+const char* to_string(DivisionMethod method) { return method == DivisionMethod::Auto ? "auto" : "darp"; }
+
+std::optional<DivisionMethod> parse_division_method(const std::string& text) {
+  for (DivisionMethod m : {DivisionMethod::Darp, DivisionMethod::Auto}) {
+    if (text == to_string(m)) return m;
+  }
+  return std::nullopt;
 }
 
 std::optional<DarpDistance> parse_darp_distance(const std::string& text) {
@@ -163,6 +182,7 @@ double imbalance(const std::vector<int>& cells, const std::vector<double>& weigh
 
 DarpResult divide_areas(const OccupancyGrid& map, const DarpRequest& request, const DarpConfig& config,
                         const std::function<bool()>& should_stop) {
+  const auto t0 = std::chrono::steady_clock::now();
   if (!request.region.empty() && request.region.size() != map.size()) {
     return bad_input("region mask has " + std::to_string(request.region.size()) + " cells, the map " +
                      std::to_string(map.size()));
@@ -210,8 +230,49 @@ DarpResult divide_areas(const OccupancyGrid& map, const DarpRequest& request, co
 
   std::vector<int> best;
   DivisionScore best_score;
-  out.status = engine->run(std::max(0, config.max_iterations - abandoned), should_stop, best, best_score);
+  const bool repair = config.method == DivisionMethod::Auto;
+  const int budget = repair ? std::min(config.max_iterations, config.auto_darp_iterations) : config.max_iterations;
+  out.status = engine->run(std::max(0, budget - abandoned), should_stop, best, best_score);
   out.iterations = engine->updates() + abandoned;
+  std::vector<int> starts = engine->starts();
+  if (repair && out.status != DarpStatus::Converged) {
+    auto deviation = [&](const std::vector<int>& owner) {
+      std::vector<int> held(space.robots(), 0);
+      for (int r : owner) ++held[r];
+      double most = 0;
+      for (int r = 0; r < space.robots(); ++r) most = std::max(most, std::abs(held[r] - space.shares[r]));
+      return most;
+    };
+    detail::RepairOutcome done = detail::repair_division(space, best, starts, robots, config.tolerance_cells);
+    // Should the repair of DARP's division get stuck, it starts again from fresh first divisions
+    // (K-Means starts, then random ones) and keeps the best.
+    Rng rng(mix_seed(config.seed, 0x4e5));
+    for (int attempt = 0; !done.goal && attempt < config.repair_restarts; ++attempt) {
+      const DarpEngine fresh(space,
+                             attempt == 0 ? detail::kmeans_starts(space, robots, config)
+                                          : detail::random_starts(space, robots, config.distance, rng),
+                             config, stream + 1 + attempt);
+      std::vector<int> owner(fresh.owner().begin(), fresh.owner().end());
+      std::vector<int> from = fresh.starts();
+      const detail::RepairOutcome again = detail::repair_division(space, owner, from, robots, config.tolerance_cells);
+      if (again.goal || deviation(owner) < deviation(best)) best = std::move(owner), starts = std::move(from), done = again;
+    }
+    out.finished_by = "repair";
+    out.repair_moves = done.moves;
+    out.starts_moved = starts != engine->starts();
+    best_score = {};
+    best_score.max_deviation = deviation(best);
+    if (done.goal) {
+      out.status = DarpStatus::Converged;
+    } else if (std::string why = detail::no_balanced_division(space, config.tolerance_cells); !why.empty()) {
+      out.status = DarpStatus::Impossible;
+      out.message = "no division within " + format_cells(config.tolerance_cells) + " of every share exists: " + why;
+    } else {
+      out.status = DarpStatus::Failed;
+      out.message = "no division within " + format_cells(config.tolerance_cells) +
+                    " of every share found (and no proof that none exists)";
+    }
+  }
 
   const RegionGraph& g = space.graph;
   const int n = space.robots();
@@ -224,12 +285,13 @@ DarpResult divide_areas(const OccupancyGrid& map, const DarpRequest& request, co
     out.assignment[map.index(g.cells[i])] = best[i];
     ++out.cells[best[i]];
   }
-  for (int s : engine->starts()) out.starts.push_back(g.cells[s]);
+  for (int s : starts) out.starts.push_back(g.cells[s]);
   out.shares = space.shares;
   out.final_imbalance = imbalance(out.cells, space.weights);
   out.max_deviation = best_score.max_deviation;
   out.split_regions = best_score.split;
   out.unreachable_cells = unreachable;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
 

@@ -164,23 +164,6 @@ int find_root(std::vector<int>& parent, int i) {
 
 }  // namespace
 
-bool DarpEngine::simple_point(int c, int r) const {
-  // The cell's 4-neighbours owned by r, in order around it (+x, +y, -x, -y); two consecutive ones
-  // are joined when the corner cell between them is r's too. Removing c keeps r's cells around it
-  // together exactly when that leaves one group.
-  const auto& nb = space_.graph.next[c];  // RegionGraph order: +x, -x, +y, -y
-  const int ring[4] = {nb[0], nb[2], nb[1], nb[3]};
-  constexpr int kTowardsNext[4] = {2, 1, 3, 0};  // the direction of ring[k + 1] as seen from c
-  auto mine = [&](int cell) { return cell >= 0 && owner_[cell] == r; };
-  int present = 0, joined = 0;
-  for (int k = 0; k < 4; ++k) {
-    if (!mine(ring[k])) continue;
-    ++present;
-    if (mine(ring[(k + 1) % 4]) && mine(space_.graph.next[ring[k]][kTowardsNext[k]])) ++joined;
-  }
-  return present > 0 && (joined == 4 || present - joined == 1);
-}
-
 bool DarpEngine::still_connected() {
   // Near convergence a handful of cells change hands per iteration. Replay the changes one by
   // one from the previous division, in which every region was connected: a region stays
@@ -195,7 +178,7 @@ bool DarpEngine::still_connected() {
   bool ok = true;
   for (std::size_t k = 0; k < changed_.size(); ++k) {
     const int c = changed_[k];
-    ok = ok && simple_point(c, owner_[c]);
+    ok = ok && simple_point(space_.graph, owner_, c, owner_[c]);
     owner_[c] = gained_by_[k];
     if (ok) {
       bool touches = false;

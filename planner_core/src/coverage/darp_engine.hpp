@@ -75,7 +75,6 @@ class DarpEngine {
   void finish_assignment(bool first);
   void evaluate();
   bool still_connected();
-  bool simple_point(int c, int r) const;
   // The metric update followed by the assignment of every cell to its cheapest robot (the two
   // are one pass over each robot's metric).
   void update();

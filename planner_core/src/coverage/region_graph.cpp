@@ -70,6 +70,23 @@ std::vector<int> components(const RegionGraph& graph, int& count) {
   return label;
 }
 
+bool simple_point(const RegionGraph& graph, const std::vector<int>& owner, int c, int r) {
+  // r's 4-neighbours of c, in order around it (+x, +y, -x, -y); two consecutive ones are joined
+  // when the corner cell between them is r's too. Removing c keeps r's cells around it together
+  // exactly when that leaves one group.
+  const auto& nb = graph.next[c];  // RegionGraph order: +x, -x, +y, -y
+  const int ring[4] = {nb[0], nb[2], nb[1], nb[3]};
+  constexpr int kTowardsNext[4] = {2, 1, 3, 0};  // the direction of ring[k + 1] as seen from c
+  auto mine = [&](int cell) { return cell >= 0 && owner[cell] == r; };
+  int present = 0, joined = 0;
+  for (int k = 0; k < 4; ++k) {
+    if (!mine(ring[k])) continue;
+    ++present;
+    if (mine(ring[(k + 1) % 4]) && mine(graph.next[ring[k]][kTowardsNext[k]])) ++joined;
+  }
+  return present > 0 && (joined == 4 || present - joined == 1);
+}
+
 OccupancyGrid region_grid(const OccupancyGrid& map, const std::vector<std::uint8_t>& mask) {
   assert(mask.empty() || mask.size() == map.size());
   OccupancyGrid out(map.width(), map.height(), map.resolution(), map.origin_x(), map.origin_y(),

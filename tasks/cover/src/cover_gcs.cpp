@@ -131,6 +131,7 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
     }
   }
   std::vector<std::vector<Cell>> routes;
+  nlohmann::json within_groups = nlohmann::json::array();
   if (robots != nullptr) {
     // Every robot's route: from the division itself (flat), or from dividing each group's share
     // among its robots as its leader would (hierarchical).
@@ -159,6 +160,10 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
         const planner::CoverRoutes sub = planner::divide_and_route(
             known_, share[static_cast<std::size_t>(g)], member_at, std::vector<double>(members.size(), 1.0), group_cfg, stop);
         for (std::size_t k = 0; k < members.size(); ++k) take(members[k], sub.routes[k], sub.region_cells[k]);
+        nlohmann::json entry = tasks::division_json(sub);
+        entry["group"] = g;
+        entry["robots"] = members;
+        within_groups.push_back(std::move(entry));
       }
     }
     nothing_to_drive_ = goals == 0 && !tracker_.complete();
@@ -188,17 +193,16 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
     for (std::uint8_t v : share[static_cast<std::size_t>(g)]) n += v;
     cells_per_group.push_back(n);
   }
-  divisions_.push_back({{"tick", ctx.tick()},
-                        {"why", why},
-                        {"agents", flat ? "robots" : "leaders"},
-                        {"darp_status", planner::to_string(plan.darp.status)},
-                        {"darp_iterations", plan.darp.iterations},
-                        {"darp_seconds", plan.seconds_division},
-                        {"alpha0", plan.darp.alpha0},
-                        {"route_seconds", plan.seconds_routes},
-                        {"cells_per_group", cells_per_group}});
-  std::fprintf(stderr, "gcs: cover division (%s) at tick %u: %s after %d iterations, %.3f s\n", why, ctx.tick(),
-               planner::to_string(plan.darp.status), plan.darp.iterations, plan.seconds_division);
+  nlohmann::json entry = tasks::division_json(plan);
+  entry["tick"] = ctx.tick();
+  entry["why"] = why;
+  entry["agents"] = flat ? "robots" : "leaders";
+  entry["cells_per_group"] = cells_per_group;
+  if (!within_groups.empty()) entry["within_groups"] = std::move(within_groups);
+  divisions_.push_back(std::move(entry));
+  std::fprintf(stderr, "gcs: cover division (%s) at tick %u: %s (by %s) after %d iterations, %.3f s\n", why,
+               ctx.tick(), planner::to_string(plan.darp.status), plan.darp.finished_by.c_str(), plan.darp.iterations,
+               plan.seconds_division);
   return routes;
 }
 

@@ -81,16 +81,14 @@ void CoverGroupTask::divide(GroupContext& ctx, const char* why) {
     lengths.push_back(plan.routes[k].size() - 1);
     turns.push_back(plan.turns[k]);
   }
-  divisions_.push_back({{"tick", ctx.clock.tick},
-                        {"why", why},
-                        {"robots", living.size()},
-                        {"darp_status", planner::to_string(plan.darp.status)},
-                        {"darp_iterations", plan.darp.iterations},
-                        {"darp_seconds", plan.seconds_division},
-                        {"route_seconds", plan.seconds_routes},
-                        {"cells", cells},
-                        {"path_length", lengths},
-                        {"turns", turns}});
+  nlohmann::json entry = tasks::division_json(plan);
+  entry["tick"] = ctx.clock.tick;
+  entry["why"] = why;
+  entry["robots"] = living.size();
+  entry["cells"] = cells;
+  entry["path_length"] = lengths;
+  entry["turns"] = turns;
+  divisions_.push_back(std::move(entry));
 }
 
 void CoverGroupTask::on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) {

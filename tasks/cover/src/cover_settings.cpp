@@ -1,5 +1,7 @@
 #include "swarm/tasks/cover/cover_settings.hpp"
 
+#include <cmath>
+
 #include "swarm/planner/grid/rng.hpp"
 
 namespace swarm::tasks {
@@ -23,6 +25,23 @@ planner::CoverRoutesConfig cover_routes_config(const swarm::scenario::Cover& c, 
     default: out.order = planner::CoverOrder::Stc; break;
   }
   return out;
+}
+
+nlohmann::json division_json(const planner::CoverRoutes& plan) {
+  const planner::DarpResult& d = plan.darp;
+  nlohmann::json j = {{"darp_status", planner::to_string(d.status)},
+                      {"finished_by", d.finished_by},
+                      {"darp_iterations", d.iterations},
+                      {"repair_moves", d.repair_moves},
+                      {"darp_seconds", plan.seconds_division},
+                      {"route_seconds", plan.seconds_routes},
+                      {"cells", d.cells},
+                      {"shares", d.shares},
+                      {"final_imbalance", std::isfinite(d.final_imbalance) ? nlohmann::json(d.final_imbalance)
+                                                                           : nlohmann::json()},
+                      {"alpha0", std::isfinite(d.alpha0) ? nlohmann::json(d.alpha0) : nlohmann::json()}};
+  if (!d.message.empty()) j["message"] = d.message;
+  return j;
 }
 
 }  // namespace swarm::tasks

@@ -21,7 +21,8 @@ namespace swarm::planner {
 // A division must: mark cells outside the region (blocked, or not in request.region) -1, region
 // cells no robot can reach -2, every other region cell with one robot; agree with result.cells,
 // result.unreachable_cells and result.split_regions; give every robot its start cell (the robot's
-// own cell with DarpInit::Given); and, when converged, have every region 4-connected and within
+// own cell when `given_starts`: DarpInit::Given with DivisionMethod::Darp); when converged or
+// impossible, have every region 4-connected; and, when converged, every region within
 // `tolerance_cells` of result.shares, the shares adding up to the cells divided.
 [[nodiscard]] std::vector<std::string> check_division(const OccupancyGrid& map, const DarpRequest& request,
                                                       const DarpResult& result, bool given_starts,

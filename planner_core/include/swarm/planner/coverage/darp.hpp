@@ -64,6 +64,17 @@
 // informational and not counted); alpha_reinit holds the alpha of the first division from each
 // new set of starts.
 //
+// Methods (DivisionMethod). Darp: DARP alone, as above (it may end Failed with regions split or
+// unbalanced). Auto, the default: DARP first, for at most auto_darp_iterations updates (fewer
+// when max_iterations is smaller); if it has not converged by then, its best division is
+// repaired (division_repair.hpp: split regions reconnected, then cells handed along chains of
+// neighbouring regions until every region is within tolerance; a region may give up its start
+// and grow from the cell nearest its robot instead). Auto ends Converged whenever it finds such
+// a division; Impossible when it can prove none exists (a cut cell that no regions of the right
+// sizes fit around; message says which), with the most balanced connected division it found;
+// Failed only when it found none and proved nothing. `finished_by` says which method produced
+// the division returned.
+//
 // Bad input (a value, never a throw): no robot, a robot outside the map or not on a Free cell of
 // the region, two robots on one cell, a non-positive or non-finite weight, weights of the wrong
 // length, a region mask of the wrong size. (Robots stand on distinct cells, so there are never
@@ -99,21 +110,29 @@ namespace swarm::planner {
 
 enum class DarpDistance : std::uint8_t { Euclidean, Geodesic };
 enum class DarpInit : std::uint8_t { Given, Random, KMeans, BfsKMeans };
+enum class DivisionMethod : std::uint8_t { Darp, Auto };
 enum class DarpStatus : std::uint8_t {
-  Converged,  // every region connected, holding its start, within tolerance of its share
-  Failed,     // max_iterations updates without converging; the best division seen is returned
-  Stopped,    // should_stop() said so; the best division seen is returned
-  BadInput,   // see message; nothing else is filled in
+  Converged,   // every region connected, holding its start, within tolerance of its share
+  Failed,      // no such division found; the best division seen is returned
+  Stopped,     // should_stop() said so (Darp); the best division seen is returned
+  BadInput,    // see message; nothing else is filled in
+  Impossible,  // Auto: no such division exists (message: why); the most balanced one found
 };
 
 [[nodiscard]] const char* to_string(DarpStatus status);
 [[nodiscard]] const char* to_string(DarpDistance distance);
 [[nodiscard]] const char* to_string(DarpInit init);
+[[nodiscard]] const char* to_string(DivisionMethod method);
 // "euclidean" / "geodesic", "given" / "random" / "kmeans" / "bfs-kmeans"; nullopt otherwise.
 [[nodiscard]] std::optional<DarpDistance> parse_darp_distance(const std::string& text);
 [[nodiscard]] std::optional<DarpInit> parse_darp_init(const std::string& text);
+// "darp" / "auto"; nullopt otherwise.
+[[nodiscard]] std::optional<DivisionMethod> parse_division_method(const std::string& text);
 
 struct DarpConfig {
+  DivisionMethod method = DivisionMethod::Auto;
+  int auto_darp_iterations = 100;        // Auto: DARP's updates before the repair takes over
+  int repair_restarts = 8;               // Auto: fresh first divisions the repair may try after DARP's
   int max_iterations = 10000;            // I_max (paper); metric updates, probes included
   DarpDistance distance = DarpDistance::Euclidean;
   DarpInit init = DarpInit::Given;
@@ -151,6 +170,10 @@ struct DarpResult {
   double max_deviation = 0;             // max_r |k_r - s_r|
   int split_regions = 0;                // regions not 4-connected (0 when converged)
   int unreachable_cells = 0;            // region cells marked kUnreachable
+  std::string finished_by = "darp";     // "darp", or "repair" when Auto repaired DARP's best
+  int repair_moves = 0;                 // cells the repair handed to another region
+  bool starts_moved = false;            // the repair grew some region from another cell than DARP's start
+  double seconds = 0;                   // wall time of the whole division
 };
 
 // Divides the region (request.region, or every Free cell of `map`) among request.robots.

@@ -52,6 +52,11 @@ struct RegionGraph {
 // cell); `count` receives the number of components.
 [[nodiscard]] std::vector<int> components(const RegionGraph& graph, int& count);
 
+// Whether `owner`'s cells around c (owner[c] == r, c a cell of graph) stay 4-connected to each
+// other once c is taken away, judged from c's 3 x 3 neighbourhood alone: true is certain (r's
+// region stays connected, provided it was), false may be a false alarm (a loop elsewhere).
+[[nodiscard]] bool simple_point(const RegionGraph& graph, const std::vector<int>& owner, int c, int r);
+
 // A grid of the same size and geometry as `map` whose Free cells are the cells with mask[i] != 0
 // that are Free in `map` (an empty mask = every Free cell); everything else is Occupied.
 [[nodiscard]] OccupancyGrid region_grid(const OccupancyGrid& map, const std::vector<std::uint8_t>& mask);

@@ -4,6 +4,8 @@
 
 #include <cstdint>
 
+#include <nlohmann/json.hpp>
+
 #include "swarm/planner/coverage/cover_routes.hpp"
 #include "swarm/proto/scenario.pb.h"
 
@@ -13,5 +15,10 @@ namespace swarm::tasks {
 // GCS's and each leader's divisions draw different numbers).
 [[nodiscard]] planner::CoverRoutesConfig cover_routes_config(const swarm::scenario::Cover& cover, std::uint64_t seed,
                                                              std::uint64_t salt);
+
+// What metrics.json keeps of one division: its status (and why, when not converged), the method
+// that finished it, DARP's iterations, the cells the repair moved, seconds, and the cells per
+// robot with their shares and imbalance (1 - Jain).
+[[nodiscard]] nlohmann::json division_json(const planner::CoverRoutes& plan);
 
 }  // namespace swarm::tasks
