@@ -112,11 +112,13 @@ void MemberNode::step(const msgs::Clock& clock) {
   }
   const RobotAgent::Step s = robot_.step(clock.tick());
   publish_motion(motion_, agent_.self(), s);
-  // Progress and what the robot holds go to the leader when they change, and all again to a new
-  // leader (a standby that took the group over knows nothing of this robot yet).
+  // Progress and what the robot holds go to the leader when they change, all again to a new
+  // leader (a standby that took the group over knows nothing of this robot yet), and again every
+  // kProgressRefreshTicks (a lost report of a robot's last step would leave its leader waiting).
   const planner::RouteProgress p = robot_.following();
   const comm::AgentId leader = comm::leader_in(clock, agent_.topology(), group_);
-  if (p.id != 0 && (!(p == reported_) || robot_.carrying() != reported_carrying_ || leader != reported_to_)) {
+  const bool refresh = clock.tick() % kProgressRefreshTicks == 0;
+  if (p.id != 0 && (refresh || !(p == reported_) || robot_.carrying() != reported_carrying_ || leader != reported_to_)) {
     msgs::RouteProgress m;
     m.robot(agent_.self());
     m.route_id(p.id);

@@ -307,6 +307,9 @@ void MapfGroupTask::step(GroupContext& ctx) {
     if (have_plan_ && (!timed_ || holding_)) stop_own_robots(ctx);
   }
   if (!have_plan_) return;
+  // Reports, and the GCS's relays of them to the other leaders, can be lost (a lossy link): every
+  // kRefreshTicks the whole state goes again, so no robot waits for ever on a lost one.
+  if (ctx.clock.tick % kRefreshTicks == 0) gcs_back(ctx);
   if (!stopping_.empty()) {  // a robot lost before its stop was confirmed stands still anyway
     std::erase_if(stopping_, [&](int k) { return !ctx.alive[static_cast<std::size_t>(index_of_[static_cast<std::size_t>(k)])]; });
     stopped_all_ = stopping_.empty();

@@ -35,6 +35,8 @@ class MemberNode {
   void follow();  // a member again
   std::string report_json() const;
 
+  static constexpr std::uint32_t kProgressRefreshTicks = 16;  // progress sent again, this often
+
  private:
   comm::LockstepAgent& agent_;
   int group_;

@@ -50,6 +50,8 @@ class MapfGroupTask : public GroupTask {
   void gcs_back(GroupContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
 
+  static constexpr std::uint32_t kRefreshTicks = 16;  // the whole report again, this often
+
  private:
   void take_plan(const task::Order& order, GroupContext& ctx);
   // Appends a continuing window (Work with kContinues) to the plan; false if it does not fit it.
