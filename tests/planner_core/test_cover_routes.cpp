@@ -42,6 +42,37 @@ void expect_covers(const OccupancyGrid& map, const std::vector<std::uint8_t>& se
   EXPECT_EQ(missed, 0);
 }
 
+// A robot whose nearest cell of the set lies in a sliver of it (two cells cut off from the rest,
+// as an orphan piece another division gave its group) starts in the large piece instead: it
+// would get nothing else. The sliver goes to the nearest robot, and the routes cover everything.
+TEST(CoverRoutes, ARobotDoesNotStartInASliverOfTheSet) {
+  const auto art = swarm::test::ascii_map({
+      "..........",
+      "..........",
+      "..........",
+      "#########.",
+      "S..A.....B",
+  });
+  std::vector<std::uint8_t> set = free_cells(art.grid);
+  for (int x = 2; x < 10; ++x) set[static_cast<std::size_t>(art.grid.index({x, 0}))] = 0;  // the corridor: not to cover
+  const std::vector<Cell> robots = {art.at.at('A'), art.at.at('B')};
+  // The corridor (not in the set) joins S's sliver, (0, 0) and (1, 0), to the room: A is 2 steps
+  // from the sliver and 7 from the room.
+  const CoverRoutes r = divide_and_route(art.grid, set, robots, {}, CoverRoutesConfig{});
+  EXPECT_GT(r.region_cells[0], 10) << "robot A started in the sliver";
+  EXPECT_GT(r.region_cells[1], 10);
+  // Each route covers the piece its region grew from (not the sliver, which is nearer to A);
+  // cover_leftovers takes the sliver.
+  std::vector<std::uint8_t> sliver(set.size(), 0);
+  sliver[static_cast<std::size_t>(art.grid.index({0, 0}))] = sliver[static_cast<std::size_t>(art.grid.index({1, 0}))] = 1;
+  std::vector<std::uint8_t> room = set;
+  for (std::size_t i = 0; i < set.size(); ++i) room[i] = set[i] && !sliver[i];
+  expect_covers(art.grid, room, robots, r.routes);
+  std::vector<Cell> ends;
+  for (const auto& route : r.routes) ends.push_back(route.back());
+  expect_covers(art.grid, sliver, ends, cover_leftovers(art.grid, sliver, ends));
+}
+
 TEST(CoverRoutes, TwoRobotsOnAnOpenRoomSplitItEquallyAndCoverEveryCell) {
   const OccupancyGrid map(10, 6, 0.2, 0.0, 0.0, CellState::Free);
   const std::vector<Cell> robots = {{0, 0}, {9, 5}};

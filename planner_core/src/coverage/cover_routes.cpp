@@ -66,6 +66,36 @@ void append(std::vector<Cell>& route, const std::vector<Cell>& tail) {
 
 }  // namespace
 
+namespace {
+
+// The set's cells that lie in a piece (4-connected, through set cells) of at least `least`
+// cells: a robot that starts in a sliver of the set (an orphan piece another division gave its
+// group) would get nothing else.
+std::vector<std::uint8_t> in_large_pieces(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells,
+                                          std::size_t least) {
+  std::vector<std::uint8_t> out(map.size(), 0);
+  std::vector<std::uint8_t> seen(map.size(), 0);
+  const MotionModel four = MotionModel::four();
+  for (std::size_t i = 0; i < map.size(); ++i) {
+    if (!cells[i] || seen[i] || map.at(static_cast<int>(i)) != CellState::Free) continue;
+    std::vector<int> piece{static_cast<int>(i)};
+    seen[i] = 1;
+    for (std::size_t h = 0; h < piece.size(); ++h) {
+      four.for_each_neighbour(map, map.cell_of(piece[h]), [&](Cell c, double) {
+        const int j = map.index(c);
+        if (!cells[j] || seen[j]) return;
+        seen[j] = 1;
+        piece.push_back(j);
+      });
+    }
+    if (piece.size() < least) continue;
+    for (int j : piece) out[j] = 1;
+  }
+  return out;
+}
+
+}  // namespace
+
 CoverRoutes divide_and_route(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells,
                              const std::vector<Cell>& robots, const std::vector<double>& weights,
                              const CoverRoutesConfig& config, const std::function<bool()>& stop) {
@@ -74,15 +104,21 @@ CoverRoutes divide_and_route(const OccupancyGrid& map, const std::vector<std::ui
   const std::size_t n = robots.size();
   out.starts.assign(n, Cell{-1, -1});
   // Each robot's start: its nearest cell of the set that no robot has taken yet, robots in id
-  // order (a robot on a set cell keeps it).
+  // order (a robot on a set cell keeps it), in a piece of the set of at least half a share when
+  // it can reach one.
+  const std::size_t total = static_cast<std::size_t>(std::count_if(cells.begin(), cells.end(), [](std::uint8_t v) { return v != 0; }));
+  const std::vector<std::uint8_t> large = in_large_pieces(map, cells, std::max<std::size_t>(1, total / (2 * std::max<std::size_t>(1, n))));
   std::vector<std::uint8_t> taken(map.size(), 0);
   std::vector<std::size_t> placed;
   for (std::size_t r = 0; r < n; ++r) {
     const Bfs b = bfs(map, {robots[r]});
     int best = -1;
-    for (std::size_t i = 0; i < map.size(); ++i) {
-      if (!cells[i] || taken[i] || b.steps[i] < 0) continue;
-      if (best < 0 || b.steps[i] < b.steps[best]) best = static_cast<int>(i);
+    for (const bool anywhere : {false, true}) {
+      for (std::size_t i = 0; i < map.size(); ++i) {
+        if (!cells[i] || taken[i] || b.steps[i] < 0 || (!anywhere && !large[i])) continue;
+        if (best < 0 || b.steps[i] < b.steps[best]) best = static_cast<int>(i);
+      }
+      if (best >= 0) break;
     }
     if (best < 0) continue;  // it can reach nothing of the set
     taken[best] = 1;

@@ -24,14 +24,32 @@ OccupancyGrid region_of(const OccupancyGrid& map, const std::vector<int>& assign
   return out;
 }
 
+namespace {
+
+// The 4-connected piece of `region`'s Free cells that holds `at`, as a region of its own.
+OccupancyGrid piece_of(const OccupancyGrid& region, Cell at) {
+  OccupancyGrid out(region.width(), region.height(), region.resolution(), region.origin_x(), region.origin_y(),
+                    CellState::Occupied);
+  const RegionGraph g = RegionGraph::build(region);
+  std::vector<int> order;
+  static_cast<void>(bfs_steps(g, {g.index_of(at)}, &order));
+  for (int c : order) out.set(g.cells[c], CellState::Free);
+  return out;
+}
+
+}  // namespace
+
 std::vector<CoveragePlan> plan_coverage(const OccupancyGrid& map, const DarpResult& division,
                                         const std::vector<Cell>& robots, const StcConfig& config) {
   std::vector<CoveragePlan> out(robots.size());
   std::unique_ptr<RegionGraph> free_cells;  // built only if some robot stands outside its region
   for (std::size_t r = 0; r < robots.size(); ++r) {
-    const OccupancyGrid region = region_of(map, division.assignment, static_cast<int>(r));
+    OccupancyGrid region = region_of(map, division.assignment, static_cast<int>(r));
     Cell from = robots[r];
     if (!region.is_free(from)) {
+      // Drive to the piece of the region its start is in: other pieces (cells given on after the
+      // division) may be nearer, but are only a part of it.
+      if (r < division.starts.size() && region.is_free(division.starts[r])) region = piece_of(region, division.starts[r]);
       if (!free_cells) free_cells = std::make_unique<RegionGraph>(RegionGraph::build(map));
       const RegionGraph& g = *free_cells;
       // BFS from the robot to the first cell of its region; parents give the way back.

@@ -6,9 +6,10 @@
 //
 // Robots may stand anywhere on Free cells of the map, not only in the set: DARP grows the regions
 // from each robot's nearest cell of the set (distinct cells, by BFS through Free cells; a robot
-// that can reach no cell of the set gets none), and the robot first drives there. Pieces of the
-// set that hold no start are given to the nearest robot (assign_orphans); its route covers the
-// piece it starts in, the rest is left to cover_leftovers.
+// that can reach no cell of the set gets none; a piece of the set smaller than half a share is
+// not started in while a larger one can be reached), and the robot first drives there. Pieces of
+// the set that hold no start are given to the nearest robot (assign_orphans); its route covers
+// the piece it starts in, the rest is left to cover_leftovers.
 //
 //   CoverRoutes r = divide_and_route(map, cells, robot_cells, weights, config, stop);
 //   r.routes[i]   // robot i's route: robot_cells[i] first, every cell of its region visited

@@ -69,7 +69,9 @@
 // when max_iterations is smaller); if it has not converged by then, its best division is
 // repaired (division_repair.hpp: split regions reconnected, then cells handed along chains of
 // neighbouring regions until every region is within tolerance; a region may give up its start
-// and grow from the cell nearest its robot instead). Auto ends Converged whenever it finds such
+// and grow from the cell nearest its robot instead; should that get stuck, up to repair_restarts
+// fresh first divisions, from K-Means and then random starts, are repaired too and the best kept;
+// docs/division.md). Auto ends Converged whenever it finds such
 // a division; Impossible when it can prove none exists (a cut cell that no regions of the right
 // sizes fit around; message says which), with the most balanced connected division it found;
 // Failed only when it found none and proved nothing. `finished_by` says which method produced
