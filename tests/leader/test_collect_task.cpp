@@ -182,12 +182,17 @@ TEST(CollectTask, ThroughTheTrafficLayerUnderLossOnTheMemberLinkEveryObjectIsDel
 // would leave robots waiting on it for ever; members and leaders send their whole state again
 // every 16 ticks. Before, this run stalled in collect at 13 of 15 delivered, a leader one report
 // short of its robot's last step.
-TEST(CollectTask, ThroughTheTrafficLayerALostLastReportIsSentAgain) {
+// The whole chain on open, 3 x 3 robots, 5 % loss on every link.
+nlohmann::json chain_under_loss(int seed) {
   swarm::test::FakeSwarm s(swarm::test::setup_from_text(
-      "map: 'open' groups: 3 robots_per_group: 3 max_ticks: 12000 seed: 5 links { sim_robot { loss: 0.05 } "
-      "member_leader { loss: 0.05 } leader_gcs { loss: 0.05 } } "
+      "map: 'open' groups: 3 robots_per_group: 3 max_ticks: 12000 seed: " + std::to_string(seed) +
+      " links { sim_robot { loss: 0.05 } member_leader { loss: 0.05 } leader_gcs { loss: 0.05 } } "
       "mission { phase { explore {} } phase { cover {} } phase { mapf {} } phase { collect {} } }"));
-  const auto m = s.run_to_end();
+  return s.run_to_end();
+}
+
+TEST(CollectTask, ThroughTheTrafficLayerALostLastReportIsSentAgain) {
+  const auto m = chain_under_loss(5);
   EXPECT_TRUE(m["complete"].get<bool>());
   expect_all_delivered_without_a_conflict(m);
 }
@@ -197,11 +202,7 @@ TEST(CollectTask, ThroughTheTrafficLayerALostLastReportIsSentAgain) {
 // announcement reached it after a leader's own robot had set off diagonally, the move was refused
 // as a wall stop and the robot never moved again: open, seed 2).
 TEST(CollectTask, ThroughTheTrafficLayerAfterTheOtherPhasesUnderLossOnEveryLink) {
-  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
-      "map: 'open' groups: 3 robots_per_group: 3 max_ticks: 12000 seed: 2 links { sim_robot { loss: 0.05 } "
-      "member_leader { loss: 0.05 } leader_gcs { loss: 0.05 } } "
-      "mission { phase { explore {} } phase { cover {} } phase { mapf {} } phase { collect {} } }"));
-  const auto m = s.run_to_end();
+  const auto m = chain_under_loss(2);
   expect_all_delivered_without_a_conflict(m);
   for (const auto& p : m["phases"]) {
     swarm::test::expect_no_conflict(p);

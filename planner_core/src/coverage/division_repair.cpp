@@ -470,8 +470,8 @@ RepairOutcome repair_division(const DarpSpace& space, std::vector<int>& owner, s
   const std::vector<int> original = starts;
   Repair repair(space, owner, starts, tolerance);
   repair.connect();
-  // A chain fully carried out lowers the surplus by 2, a branch move by at least 1 (or shifts it,
-  // a bounded number of times); one cut short leaves it; allow plenty.
+  // A chain lowers the surplus by 2 or more, a branch move by at least 1 (or shifts it, a
+  // bounded number of times); allow plenty.
   repair.balance(4 * repair.surplus() + 16 * space.robots() + 64);
   RepairOutcome out;
   out.moves = repair.moves();
@@ -480,9 +480,8 @@ RepairOutcome repair_division(const DarpSpace& space, std::vector<int>& owner, s
   const RegionGraph& g = space.graph;
   for (int r = 0; r < space.robots(); ++r) {
     if (starts[r] == original[r]) continue;
-    out.starts_released = true;
     std::vector<int> order;
-    const std::vector<int> steps = bfs_steps(g, {robots[r]}, &order);
+    static_cast<void>(bfs_steps(g, {robots[r]}, &order));
     for (int c : order) {
       if (owner[c] == r) {
         starts[r] = c;

@@ -51,7 +51,6 @@ namespace swarm::planner::detail {
 struct RepairOutcome {
   int moves = 0;              // cells that changed hands
   bool goal = false;          // every region connected, holding its start, within tolerance
-  bool starts_released = false;  // some region grows from another cell than its first start
 };
 
 // `owner` (per compact cell: its robot) and `starts` (per robot: a compact cell it owns) are
