@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -15,19 +18,25 @@ using swarm::test::slurp;
 using swarm::test::TempDir;
 using swarm::tools::DarpExperimentOptions;
 
-TEST(ExperimentDarp, WritesTableCsvJsonAndPlots) {
-  TempDir dir;
+// A tiny grid: the rectangle, spread starts, 3 robots, one seed, one job, into `dir`.
+DarpExperimentOptions tiny(const TempDir& dir, std::vector<std::string> methods) {
   DarpExperimentOptions o;
   o.maps = {"rectangle"};
   o.conditions = {"far"};
-  o.methods = {"standalone", "kmeans"};
+  o.methods = std::move(methods);
   o.robots = {3};
-  o.max_iterations = 300;  // close-together starts may not converge: bound the test's time
   o.seeds = 1;
-  o.sweep_max = 2;
-  o.sweep_seeds = 1;
   o.jobs = 1;
   o.out_dir = dir.str();
+  return o;
+}
+
+TEST(ExperimentDarp, WritesTableCsvJsonAndPlots) {
+  TempDir dir;
+  DarpExperimentOptions o = tiny(dir, {"standalone", "kmeans"});
+  o.max_iterations = 300;  // close-together starts may not converge: bound the test's time
+  o.sweep_max = 2;
+  o.sweep_seeds = 1;
   std::ostringstream out, err;
   ASSERT_EQ(swarm::tools::experiment_darp_command(o, out, err), 0) << err.str();
   for (const char* f : {"table.txt", "results.csv", "results.json", "darp_boxplot.png", "darp_sweep.png",
@@ -53,16 +62,9 @@ TEST(ExperimentDarp, WritesTableCsvJsonAndPlots) {
 // --division darp: DARP alone, its iterations against the paper's; no repair.
 TEST(ExperimentDarp, DarpAloneForThePapersFigures) {
   TempDir dir;
-  DarpExperimentOptions o;
-  o.maps = {"rectangle"};
-  o.conditions = {"far"};
-  o.methods = {"standalone", "bfs-kmeans"};
-  o.robots = {3};
-  o.seeds = 1;
+  DarpExperimentOptions o = tiny(dir, {"standalone", "bfs-kmeans"});
   o.sweep_max = 0;
-  o.jobs = 1;
   o.division = "darp";
-  o.out_dir = dir.str();
   std::ostringstream out, err;
   ASSERT_EQ(swarm::tools::experiment_darp_command(o, out, err), 0) << err.str();
   EXPECT_NE(out.str().find("check: BFS + K-Means (always)"), std::string::npos) << out.str();

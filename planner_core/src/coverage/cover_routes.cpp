@@ -68,13 +68,11 @@ void append(std::vector<Cell>& route, const std::vector<Cell>& tail) {
 
 namespace {
 
-// The set's cells that lie in a piece (4-connected, through set cells) of at least `least`
-// cells: a robot that starts in a sliver of the set (an orphan piece another division gave its
-// group) would get nothing else.
-std::vector<std::uint8_t> in_large_pieces(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells,
-                                          std::size_t least) {
-  std::vector<std::uint8_t> out(map.size(), 0);
+// The pieces of the set (4-connected through Free set cells), each a list of grid indices, in
+// the order of their lowest cell.
+std::vector<std::vector<int>> pieces_of(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells) {
   std::vector<std::uint8_t> seen(map.size(), 0);
+  std::vector<std::vector<int>> pieces;
   const MotionModel four = MotionModel::four();
   for (std::size_t i = 0; i < map.size(); ++i) {
     if (!cells[i] || seen[i] || map.at(static_cast<int>(i)) != CellState::Free) continue;
@@ -88,8 +86,19 @@ std::vector<std::uint8_t> in_large_pieces(const OccupancyGrid& map, const std::v
         piece.push_back(j);
       });
     }
+    pieces.push_back(std::move(piece));
+  }
+  return pieces;
+}
+
+// The set's cells that lie in a piece of at least `least` cells: a robot that starts in a sliver
+// of the set (an orphan piece another division gave its group) would get nothing else.
+std::vector<std::uint8_t> in_large_pieces(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells,
+                                          std::size_t least) {
+  std::vector<std::uint8_t> out(map.size(), 0);
+  for (const std::vector<int>& piece : pieces_of(map, cells)) {
     if (piece.size() < least) continue;
-    for (int j : piece) out[j] = 1;
+    for (int j : piece) out[static_cast<std::size_t>(j)] = 1;
   }
   return out;
 }
@@ -199,23 +208,7 @@ std::vector<std::vector<Cell>> cover_leftovers(const OccupancyGrid& map, const s
   std::vector<std::vector<Cell>> routes(from.size());
   for (std::size_t r = 0; r < from.size(); ++r) routes[r] = {from[r]};
   // The pieces of the set, largest first (ties: the piece with the lowest cell index).
-  std::vector<int> piece(map.size(), -1);
-  std::vector<std::vector<int>> pieces;
-  const MotionModel four = MotionModel::four();
-  for (std::size_t i = 0; i < map.size(); ++i) {
-    if (!cells[i] || piece[i] >= 0 || map.at(static_cast<int>(i)) != CellState::Free) continue;
-    std::vector<int> members{static_cast<int>(i)};
-    piece[i] = static_cast<int>(pieces.size());
-    for (std::size_t h = 0; h < members.size(); ++h) {
-      four.for_each_neighbour(map, map.cell_of(members[h]), [&](Cell c, double) {
-        const int j = map.index(c);
-        if (!cells[j] || piece[j] >= 0) return;
-        piece[j] = static_cast<int>(pieces.size());
-        members.push_back(j);
-      });
-    }
-    pieces.push_back(std::move(members));
-  }
+  const std::vector<std::vector<int>> pieces = pieces_of(map, cells);
   std::vector<std::size_t> order(pieces.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return pieces[a].size() > pieces[b].size(); });
