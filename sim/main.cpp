@@ -4,6 +4,7 @@
 
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/app/role.hpp"
+#include "swarm/app/stop_signal.hpp"
 #include "swarm/sim/sim_node.hpp"
 #include "swarm/tasks/registry.hpp"
 
@@ -13,9 +14,11 @@ int main(int argc, char** argv) {
   CLI::App app{"swarm-sim: the simulator (ground truth, motion, LiDAR) and clock of a swarm run"};
   app::add_role_flags(app, options, app::RoleKind::Sim);
   return app::run_role(app, argc, argv, "sim", [&]() -> int {
+    app::StopOnSignal stop;  // before DDS starts its threads
     const app::RoleSetup setup = tasks::load_role(options, app::RoleKind::Sim);
     comm::Participant participant(setup.dds);
     comm::LockstepClock clock(participant, setup.topology, setup.links);
+    stop.start([&clock] { clock.request_stop(); });
     sim::SimNode node(clock, setup, tasks::sim_part);
     const auto t0 = std::chrono::steady_clock::now();
     const std::uint32_t last = node.run();

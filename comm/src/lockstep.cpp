@@ -565,9 +565,23 @@ void LockstepClock::wait_ready() {
       if (missing.empty()) missing = "clock readers";
       lock.lock();
     }
+    if (stop_requested_) throw std::runtime_error("sim: asked to stop before the run started; waiting for " + missing);
     wait.check("start-up", missing);
     arrived_.wait_for(lock, std::chrono::milliseconds(5));
   }
+}
+
+void LockstepClock::request_stop() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_requested_ = true;
+  }
+  arrived_.notify_all();
+}
+
+bool LockstepClock::stop_requested() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return stop_requested_;
 }
 
 void LockstepClock::begin_tick(std::uint32_t k) {
@@ -650,7 +664,7 @@ bool LockstepClock::wait_done(std::uint32_t k) {
     }
     return true;
   };
-  if (!arrived_.wait_for(lock, stall_timeout(), all_done)) {
+  if (!arrived_.wait_for(lock, stall_timeout(), [&] { return stop_requested_ || all_done(); })) {
     std::string missing;
     auto it = done_.find(k);
     for (int a = 0; a < topology_.agents(); ++a) {

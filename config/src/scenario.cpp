@@ -1,7 +1,9 @@
 // Scenario text files: parsing with positioned errors, validation, printing, mode names.
 #include "swarm/config/scenario.hpp"
+#include "swarm/config/numbers.hpp"
 #include "swarm/config/problems.hpp"
 #include "swarm/config/task_config.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 
 #include <google/protobuf/descriptor.h>
 #include <google/protobuf/io/tokenizer.h>
@@ -14,9 +16,11 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <regex>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -70,11 +74,33 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
+// The enum type of the field named `name` anywhere in a scenario (nullptr when the name is
+// not an enum field, or names fields of different enum types).
+const pb::EnumDescriptor* enum_of_field(const std::string& name) {
+  const pb::EnumDescriptor* found = nullptr;
+  std::vector<const pb::Descriptor*> todo{Scenario::descriptor()};
+  std::vector<const pb::Descriptor*> seen;
+  while (!todo.empty()) {
+    const pb::Descriptor* d = todo.back();
+    todo.pop_back();
+    if (std::find(seen.begin(), seen.end(), d) != seen.end()) continue;
+    seen.push_back(d);
+    for (int i = 0; i < d->field_count(); ++i) {
+      const pb::FieldDescriptor* f = d->field(i);
+      if (f->message_type() != nullptr) todo.push_back(f->message_type());
+      if (f->enum_type() == nullptr || f->name() != name) continue;
+      if (found != nullptr && found != f->enum_type()) return nullptr;
+      found = f->enum_type();
+    }
+  }
+  return found;
+}
+
 // Adds the fix to protobuf's messages where it can: the nearest field name, the enum's values.
 std::string explain(const std::string& message) {
   static const std::regex kNoField(
       R"re(Message type "([^"]+)" has no field named "([^"]+)")re");
-  static const std::regex kNoEnum(R"re(Unknown enumeration value of "[^"]*" for field)re");
+  static const std::regex kNoEnum(R"re(Unknown enumeration value of "[^"]*" for field "([^"]+)")re");
   std::smatch m;
   const pb::DescriptorPool* pool = pb::DescriptorPool::generated_pool();
   if (std::regex_search(message, m, kNoField)) {
@@ -97,11 +123,11 @@ std::string explain(const std::string& message) {
     return out + " (" + type->name() + " fields: " + names + ")";
   }
   if (std::regex_search(message, m, kNoEnum)) {
-    // The field name alone is enough: every enum field of the schema is of type Mode.
-    const pb::EnumDescriptor* mode = swarm::scenario::Mode_descriptor();
+    const pb::EnumDescriptor* type = enum_of_field(m[1].str());
+    if (type == nullptr) return message;
     std::string names;
-    for (int i = 0; i < mode->value_count(); ++i) {
-      names += (i ? ", " : "") + mode->value(i)->name();
+    for (int i = 0; i < type->value_count(); ++i) {
+      names += (i ? ", " : "") + type->value(i)->name();
     }
     return message + " (expected one of " + names + ")";
   }
@@ -110,6 +136,7 @@ std::string explain(const std::string& message) {
 
 // More robots than this is no run this runtime can host (and keeps robot ids far from overflow).
 constexpr std::uint64_t kMaxRobots = 10000;
+constexpr std::uint64_t kMaxFootprintRadius = 64;
 
 void validate_link(Problems& p, const std::string& name, const swarm::scenario::Link& link) {
   p.probability("links." + name + ".loss", link.loss());
@@ -195,6 +222,30 @@ void validate_fault(Problems& p, const Scenario& s, int index) {
     if (!f.has_cut_from_tick() || !f.has_cut_to_tick() || f.cut_from_tick() >= f.cut_to_tick()) {
       p.add(field, "give cut_from_tick < cut_to_tick",
             std::to_string(f.cut_from_tick()) + " .. " + std::to_string(f.cut_to_tick()));
+    }
+  }
+}
+
+// A fault the run never reaches, or a robot killed twice (the last kill would silently win).
+void validate_fault_times(Problems& p, const Scenario& s) {
+  std::map<std::string, int> killed;  // agent -> the fault that kills it first
+  for (int i = 0; i < s.faults_size(); ++i) {
+    const auto& f = s.faults(i);
+    const std::string field = "faults[" + std::to_string(i) + "]";
+    const auto never = [&](const char* name, std::uint32_t tick) {
+      if (tick >= s.max_ticks()) {
+        p.add(field + "." + name, "be below max_ticks (" + std::to_string(s.max_ticks()) + "), or the run ends first",
+              std::to_string(tick));
+      }
+    };
+    if (f.has_kill_at_tick()) never("kill_at_tick", f.kill_at_tick());
+    if (f.has_cut_from_tick()) never("cut_from_tick", f.cut_from_tick());
+    if (f.has_freeze_at_tick()) never("freeze_at_tick", f.freeze_at_tick());
+    if (!f.has_kill_at_tick() || f.agent() == "gcs") continue;  // the GCS is killed to be restarted
+    const auto [first, fresh] = killed.emplace(f.agent(), i);
+    if (!fresh) {
+      p.add(field + ".agent", "be killed once: faults[" + std::to_string(first->second) + "] already kills it",
+            "\"" + f.agent() + "\"");
     }
   }
 }
@@ -317,6 +368,11 @@ Scenario parse_scenario_text(const std::string& text, const std::string& source_
 }
 
 Scenario load_scenario(const std::string& path) {
+  // A directory opens as a stream that reads nothing, which would parse as the default scenario.
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw ConfigError(path + ": is a directory, not a scenario file (see scenarios/ for examples)");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw ConfigError(path + ": cannot open the scenario file (see scenarios/ for examples)");
@@ -370,7 +426,11 @@ void validate(const Scenario& s, const std::string& source) {
   p.in_range("lidar_beams", 4, 4096, s.lidar_beams());
   p.at_least("max_ticks", 1, s.max_ticks());
   p.positive("tick_seconds", s.tick_seconds());
-  p.positive("map_resolution_m", s.map_resolution_m());
+  p.number("map_resolution_m", s.map_resolution_m(),
+           NumberRule{planner::kMinResolutionM, planner::kMaxResolutionM});
+  // A robot sweeps a disc of this radius; past a map's side it is every cell, and the disc's
+  // offsets are listed once per robot and tick.
+  p.in_range("footprint_radius", 0, kMaxFootprintRadius, s.footprint_radius());
   p.at_least("tick_ms", 1, s.tick_ms());
 
   const auto& e = s.explore();
@@ -391,6 +451,7 @@ void validate(const Scenario& s, const std::string& source) {
   validate_link(p, "leader_gcs", s.links().leader_gcs());
 
   for (int i = 0; i < s.faults_size(); ++i) validate_fault(p, s, i);
+  validate_fault_times(p, s);
 
   // A phase's own settings are its task's to check (its registry row's `check`,
   // tasks::check_mission), once the map is known.
@@ -400,6 +461,7 @@ void validate(const Scenario& s, const std::string& source) {
     }
   }
 
+  check_numbers(s, p);
   p.throw_if_any();
 }
 

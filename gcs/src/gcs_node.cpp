@@ -291,6 +291,8 @@ bool GcsNode::step(const msgs::Clock& clock) {
     progress_.update(clock.tick(), phases_.size() > 1 ? task + " " + line.label : line.label, line.fraction,
                      line.detail, note);
   }
+  // Per tick: a run stopped by a signal or a failed process keeps a record readable to here.
+  record_.flush();
   return complete_tick_.has_value() || gave_up_.has_value();
 }
 
@@ -394,6 +396,15 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
   m.robots = s.groups() * s.robots_per_group();
   m.complete = complete_tick_.has_value();
   m.ticks_run = last_tick_ + 1;
+  if (m.complete) {
+    m.ended = "complete";
+  } else if (gave_up_) {
+    m.ended = "given up: " + *gave_up_;
+  } else if (m.ticks_run >= s.max_ticks()) {
+    m.ended = "max_ticks (" + std::to_string(s.max_ticks()) + ") reached";
+  } else {
+    m.ended = "stopped at tick " + std::to_string(last_tick_) + " by the launcher (an interrupt, a timeout or a failed process)";
+  }
   m.steps = m.complete ? *complete_tick_ : m.ticks_run;
   m.steps_to_99 = sim.steps_to_99;
   m.planning_rounds = static_cast<std::uint32_t>(round_ticks_.size());

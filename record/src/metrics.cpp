@@ -226,6 +226,7 @@ json to_json(const RunMetrics& m) {
           {"planning_rounds", m.planning_rounds},
           {"explored_fraction", m.explored_fraction},
           {"complete", m.complete},
+          {"ended", m.ended},
           {"ticks_run", m.ticks_run},
           {"wall_seconds", m.wall_seconds},
           {"ticks_per_second", m.ticks_per_second},
@@ -263,6 +264,10 @@ RunMetrics metrics_from_json(const json& j, const std::string& source) {
                        ", but this swarm reads version " + std::to_string(kMetricsSchemaVersion) +
                        " only; re-run it, or use the swarm that wrote it");
   }
+  if (j.value("partial", false)) {
+    throw MetricsError(source + ": the run ended early (" + j.value("ended", std::string("no reason given")) +
+                       ") before the GCS wrote its metrics; only ticks_run and the phases begun are known (partial)");
+  }
   m.scenario = f.get<std::string>("scenario");
   m.map = f.get<std::string>("map");
   m.mode = f.get<std::string>("mode");
@@ -275,6 +280,7 @@ RunMetrics metrics_from_json(const json& j, const std::string& source) {
   m.planning_rounds = f.get<std::uint32_t>("planning_rounds");
   m.explored_fraction = f.number("explored_fraction");
   m.complete = f.get<bool>("complete");
+  m.ended = f.get<std::string>("ended");
   m.ticks_run = f.get<std::uint32_t>("ticks_run");
   m.wall_seconds = f.number("wall_seconds");
   m.ticks_per_second = f.number("ticks_per_second");

@@ -94,6 +94,12 @@ void RecordWriter::close() {
 }
 
 std::vector<Frame> read_record(const std::string& path_in) {
+  RecordPrefix r = read_record_prefix(path_in);
+  if (!r.cut.empty()) throw std::runtime_error(r.cut);
+  return std::move(r.frames);
+}
+
+RecordPrefix read_record_prefix(const std::string& path_in) {
   const std::string path = resolve_record_path(path_in);
   std::ifstream in(path, std::ios::binary);
   if (!in) {
@@ -130,8 +136,8 @@ std::vector<Frame> read_record(const std::string& path_in) {
     }
     if (!done) {
       if (p >= total && shift < 35) {
-        throw fail(frames.size(), pos,
-                   "truncated inside the size prefix (was the run interrupted?)");
+        std::string cut = fail(frames.size(), pos, "truncated inside the size prefix (was the run interrupted?)").what();
+        return {std::move(frames), std::move(cut)};
       }
       throw fail(frames.size(), pos, "corrupt size prefix (not a swarm run record, or damaged)");
     }
@@ -139,10 +145,11 @@ std::vector<Frame> read_record(const std::string& path_in) {
       throw fail(frames.size(), pos, "corrupt size prefix (not a swarm run record, or damaged)");
     }
     if (size > total - p) {
-      throw fail(frames.size(), pos,
-                 "truncated: the frame declares " + std::to_string(size) + " bytes but only " +
-                     std::to_string(total - p) +
-                     " remain (was the run interrupted, or is the file damaged?)");
+      std::string cut = fail(frames.size(), pos,
+                             "truncated: the frame declares " + std::to_string(size) + " bytes but only " +
+                                 std::to_string(total - p) + " remain (was the run interrupted, or is the file damaged?)")
+                            .what();
+      return {std::move(frames), std::move(cut)};
     }
     Frame frame;
     if (!frame.ParseFromArray(data + p, static_cast<int>(size))) {
@@ -157,7 +164,7 @@ std::vector<Frame> read_record(const std::string& path_in) {
     frames.push_back(std::move(frame));
     pos = p + static_cast<std::size_t>(size);
   }
-  return frames;
+  return {std::move(frames), ""};
 }
 
 }  // namespace swarm::record

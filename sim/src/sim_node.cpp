@@ -154,7 +154,9 @@ bool SimNode::end_tick(std::uint32_t k) {
     std::this_thread::sleep_for(pace_while_gcs_lost_);
   }
   last_tick_ = k;
-  if (!complete_ && k + 1 < max_ticks_) return false;
+  // The launcher asked the run to stop (an interrupt, a timeout, a failed process): it ends
+  // here as at max_ticks, judged and reported up to this tick.
+  if (!complete_ && k + 1 < max_ticks_ && !clock_.stop_requested()) return false;
   curve_.emplace_back(k, world_.explored_fraction());
   phases_.back().judge_part->last_tick(world_, k);
   judge_phase();

@@ -127,6 +127,23 @@ TEST_F(ScenarioFile, UnknownModeListsTheModes) {
   EXPECT_NE(e.find("GROUP_FRONTIER, BASELINE, IDEAL"), std::string::npos) << e;
 }
 
+TEST_F(ScenarioFile, EveryUnknownEnumValueListsItsOwnEnumsValues) {
+  const std::string encoding = write("encoding.pbtxt", "map_encoding: SUPER_ZIP\n");
+  std::string e = error_of([&] { (void)cfg::load_scenario(encoding); });
+  EXPECT_EQ(e.rfind(encoding + ":1:15: ", 0), 0u) << e;
+  EXPECT_NE(e.find("expected one of RAW_CELLS, RUN_LENGTH, ZSTD_RUN_LENGTH"), std::string::npos) << e;
+  EXPECT_EQ(e.find("GROUP_FRONTIER"), std::string::npos) << e;
+  const std::string solver = write("solver.pbtxt", "mission {\n  phase { mapf { solver: MAPF_MAGIC } }\n}\n");
+  e = error_of([&] { (void)cfg::load_scenario(solver); });
+  EXPECT_NE(e.find("expected one of MAPF_ECBS, MAPF_CBS, MAPF_LACAM"), std::string::npos) << e;
+}
+
+TEST_F(ScenarioFile, ADirectoryIsNoScenario) {
+  // It would read as an empty file: the default scenario.
+  const std::string e = error_of([&] { (void)cfg::load_scenario(dir_.string()); });
+  EXPECT_EQ(e, dir_.string() + ": is a directory, not a scenario file (see scenarios/ for examples)");
+}
+
 TEST_F(ScenarioFile, NegativeCountIsAParseError) {
   const std::string path = write("bad.pbtxt", "groups: -1\n");
   EXPECT_EQ(error_of([&] { (void)cfg::load_scenario(path); }).rfind(path + ":1:9: ", 0), 0u)

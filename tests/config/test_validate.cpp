@@ -119,7 +119,24 @@ INSTANTIATE_TEST_SUITE_P(
                    "DDS participant lease) (got 30)"},
         Impossible{"faults { agent: \"member-0-2\" freeze_at_tick: 9 }",
                    "t.pbtxt: field faults[0].freeze_seconds: must be more than 0 and less than 30 (the "
-                   "DDS participant lease) (got 0)"}));
+                   "DDS participant lease) (got 0)"},
+        // The same robot killed twice: the last kill would silently win.
+        Impossible{"faults { agent: \"member-0-1\" kill_at_tick: 5 } faults { agent: \"member-0-1\" kill_at_tick: 8 }",
+                   "t.pbtxt: field faults[1].agent: must be killed once: faults[0] already kills it (got "
+                   "\"member-0-1\")"},
+        // A fault after the last tick never happens.
+        Impossible{"max_ticks: 20 faults { agent: \"member-0-1\" kill_at_tick: 100000 }",
+                   "t.pbtxt: field faults[0].kill_at_tick: must be below max_ticks (20), or the run ends first "
+                   "(got 100000)"},
+        // A footprint past any map's side would list its disc's offsets for ever; one past int acted as 0.
+        Impossible{"footprint_radius: 4000000000",
+                   "t.pbtxt: field footprint_radius: must be in [0, 64] (got 4000000000)"},
+        Impossible{"map_resolution_m: 1e308",
+                   "t.pbtxt: field map_resolution_m: must be a number in [0.001, 1000] (got 1e+308)"},
+        Impossible{"map_resolution_m: 1e-300",
+                   "t.pbtxt: field map_resolution_m: must be a number in [0.001, 1000] (got 1e-300)"},
+        Impossible{"links { leader_gcs { delay_ms: nan } }",
+                   "t.pbtxt: field links.leader_gcs.delay_ms: must be a finite number >= 0 (got nan)"}));
 
 TEST(Validate, ListsEveryProblemOnItsOwnLine) {
   EXPECT_EQ(validate_error("groups: 0 explore { replan_threshold_steps: 0 }"),

@@ -99,6 +99,125 @@ TEST_F(BadInputs, FreezePastTheParticipantLease) {
   expect_rejected("--freeze leader-1@80+45", {"freeze_seconds", "less than 30", "45"});
 }
 
+// The holes a probe of ~290 hostile inputs found: each is refused with exit 2 and the flag or
+// field named.
+TEST_F(BadInputs, SeedsOutOfRangeAreRefusedNotWrapped) {
+  expect_rejected("--seed -1", {"--seed", "must be a whole number in [0, 18446744073709551615]", "got -1"});
+  expect_rejected("--seed 99999999999999999999", {"--seed", "got 99999999999999999999"});
+}
+TEST_F(BadInputs, AScenarioThatIsADirectory) {
+  expect_rejected("--scenario " + dir_, {dir_, "is a directory, not a scenario file"});
+}
+TEST_F(BadInputs, ExtremeMapResolutions) {
+  write(dir_ + "/huge.yaml", "image: pocket.pgm\nresolution: 1e308\norigin: [0.0, 0.0, 0.0]\n");
+  write(dir_ + "/tiny.yaml", "image: pocket.pgm\nresolution: 1e-300\norigin: [0.0, 0.0, 0.0]\n");
+  expect_rejected("--map " + dir_ + "/huge.yaml", {"huge.yaml:2", "resolution must be a number of metres per cell in [0.001, 1000]"});
+  expect_rejected("--map " + dir_ + "/tiny.yaml", {"tiny.yaml:2", "[0.001, 1000]"});
+  write(dir_ + "/five.map", "type octile\nheight 2\nwidth 3\nmap\n...\n...\n");
+  expect_rejected("--map " + dir_ + "/five.map --map-resolution 1e308", {"--map-resolution", "[0.001, 1000]"});
+}
+TEST_F(BadInputs, MapFilesWithMoreDataThanTheirHeaderSays) {
+  std::string rows;
+  for (int r = 0; r < 10; ++r) rows += "..........\n";
+  write(dir_ + "/tall.map", "type octile\nheight 5\nwidth 10\nmap\n" + rows);
+  expect_rejected("--map " + dir_ + "/tall.map", {"tall.map:10", "past the 5 rows"});
+  write(dir_ + "/long.pgm", "P5\n2 2\n255\n" + std::string(6, '\xfe'));
+  write(dir_ + "/long.yaml", "image: long.pgm\nresolution: 0.2\norigin: [0.0, 0.0, 0.0]\n");
+  expect_rejected("--map " + dir_ + "/long.yaml", {"long.pgm", "expected 4 bytes", "found 6"});
+}
+TEST_F(BadInputs, ARobotKilledTwiceOrAfterTheLastTick) {
+  expect_rejected("--kill member-0-1@5 --kill member-0-1@8", {"faults[1].agent", "killed once"});
+  expect_rejected("--kill member-0-1@100000 --max-ticks 20", {"faults[0].kill_at_tick", "below max_ticks (20)"});
+}
+TEST_F(BadInputs, ABadStartIsTheFlagsNotTheDefaultScenarios) {
+  expect_rejected("--map " + dir_ + "/pocket.yaml --start 50,50", {"with --start 50,50", "outside the map"});
+}
+TEST_F(BadInputs, FootprintAndTimeLimitsInAScenario) {
+  write(dir_ + "/footprint.pbtxt", "footprint_radius: 4000000000\n");
+  expect_rejected("--scenario " + dir_ + "/footprint.pbtxt", {"footprint_radius", "[0, 64]"});
+  write(dir_ + "/w.pbtxt", "mission { phase { mapf { w: nan } } }\n");
+  expect_rejected("--scenario " + dir_ + "/w.pbtxt", {"mission.phase[0].mapf.w", "got nan"});
+}
+
+TEST(BadCommands, AnUnknownCommandIsNamed) {
+  CommandResult r = run_swarm("frobnicate");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("swarm: unknown command 'frobnicate' (expected one of run, render"), std::string::npos) << r.output;
+  r = run_swarm("experiment frobnicate");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("swarm experiment: unknown command 'frobnicate'"), std::string::npos) << r.output;
+}
+
+TEST(BadCommands, RangesReadAsNumbersAPersonWrites) {
+  // Not CLI11's "Value 0 not in range 0.000000 to <309 digits>".
+  const CommandResult r = run_swarm("render . --scale 0");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--scale: must be a number in [1, 64] (got 0)"), std::string::npos) << r.output;
+  EXPECT_LT(r.output.size(), 300u) << r.output;
+}
+
+TEST(BadCommands, OfflineToolsRefuseNaNAndTakeAnyTimeLimit) {
+  const std::string dir = fresh_dir("offline_numbers");
+  CommandResult r = run_swarm("mapf --map small --random 2 --solver ecbs --w nan --out " + dir + "/w");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--w: must be a finite number >= 1"), std::string::npos) << r.output;
+  r = run_swarm("darp --map small --count 2 --seed 99999999999999999999 --out " + dir + "/s");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--seed: must be a whole number"), std::string::npos) << r.output;
+  // A limit past the clock's range is no limit, never "timed out after 0 s".
+  for (const char* limit : {"1e10", "inf", "1e300"}) {
+    r = run_swarm(std::string("mapf --map small --random 2 --time-limit ") + limit + " --out " + dir + "/m");
+    EXPECT_EQ(r.exit_code, 0) << limit << ": " << r.output;
+    EXPECT_EQ(r.output.find("timeout"), std::string::npos) << limit << ": " << r.output;
+  }
+  r = run_swarm("darp --map small --count 3 --method darp --time-limit inf --out " + dir + "/d");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(read_json(dir + "/d/result.json").at("status"), "converged") << r.output;
+}
+
+// A run stopped early still ends with metrics.json: what it did up to the stop, and why.
+TEST(RunStoppedEarly, ATimeoutEndsTheRunWithItsMetrics) {
+  const std::string dir = fresh_dir("stopped_by_timeout") + "/run";
+  const CommandResult r = run_swarm("run --scenario " + source_path("scenarios/small.pbtxt") +
+                                    " --realtime --tick-ms 250 --max-ticks 2000 --timeout 6 --out " + dir);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  const nlohmann::json m = read_json(dir + "/metrics.json");
+  EXPECT_EQ(m.at("complete"), false) << m.dump();
+  EXPECT_EQ(m.at("ended").get<std::string>().rfind("timed out after 6 s", 0), 0u) << m.at("ended");
+  EXPECT_GT(m.at("ticks_run").get<int>(), 5) << m.dump();
+  EXPECT_FALSE(m.contains("partial")) << "the GCS's own metrics, up to the stop";
+}
+
+TEST(RunStoppedEarly, AnInterruptEndsTheRunWithItsMetrics) {
+  const std::string dir = fresh_dir("stopped_by_sigint") + "/run";
+  // `timeout -s INT` interrupts swarm run as a Ctrl-C would.
+  const std::string cmd = "timeout --preserve-status -s INT 6 " + std::string(SWARM_BIN_DIR) + "/swarm run --scenario " +
+                          source_path("scenarios/small.pbtxt") + " --realtime --tick-ms 250 --max-ticks 2000 --out " +
+                          dir + " > /dev/null 2>&1";
+  const int status = std::system(cmd.c_str());
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  const nlohmann::json m = read_json(dir + "/metrics.json");
+  EXPECT_EQ(m.at("complete"), false) << m.dump();
+  EXPECT_EQ(m.at("ended").get<std::string>().rfind("interrupted", 0), 0u) << m.at("ended");
+  EXPECT_GT(m.at("ticks_run").get<int>(), 5) << m.dump();
+}
+
+TEST(RunStoppedEarly, AMemberKilledMidRunLeavesTheGcsMetricsSayingSo) {
+  const std::string dir = fresh_dir("stopped_by_a_crash") + "/run";
+  // kill -9 of a member's process while the run goes on (not a planned fault).
+  const std::string cmd = "sh -c '" + std::string(SWARM_BIN_DIR) + "/swarm run --scenario " +
+                          source_path("scenarios/small.pbtxt") + " --realtime --tick-ms 250 --max-ticks 2000 --out " + dir +
+                          " > /dev/null 2>&1 & p=$!; sleep 5; pkill -9 -f \"[s]warm-member .*" + dir +
+                          "\"; wait $p; exit $?'";
+  const int status = std::system(cmd.c_str());
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  const nlohmann::json m = read_json(dir + "/metrics.json");
+  EXPECT_EQ(m.at("complete"), false) << m.dump();
+  EXPECT_NE(m.at("ended").get<std::string>().find("was killed by signal 9"), std::string::npos) << m.at("ended");
+  EXPECT_FALSE(m.contains("partial")) << "the simulator ended the run, and the GCS wrote what it knew";
+  EXPECT_GT(m.at("ticks_run").get<int>(), 5) << m.dump();
+}
+
 // Every role fails at start-up (its DDS profile does not exist): swarm run names a failed process
 // and its log, exits 1, and leaves no process of the run behind.
 TEST(RunFailure, AFailingProcessStopsTheRunAndIsNamed) {
@@ -127,6 +246,10 @@ TEST(RunFailure, AProcessDyingByASignalAfterItsWorkFailsTheRun) {
   EXPECT_EQ(f.exit_code, 1) << f.output;
   EXPECT_NE(f.output.find("member-0-1"), std::string::npos) << f.output;
   EXPECT_NE(f.output.find("signal 6"), std::string::npos) << f.output;
+  // Its metrics say the run did not end cleanly, and why.
+  const nlohmann::json m = read_json(dir + "/metrics.json");
+  EXPECT_EQ(m.at("complete"), false);
+  EXPECT_NE(m.at("ended").get<std::string>().find("member-0-1 was killed by signal 6"), std::string::npos) << m.at("ended");
 }
 
 }  // namespace

@@ -143,7 +143,7 @@ TEST_F(MapIo, YamlErrorsNameFileLineAndExpectation) {
   EXPECT_EQ(yaml_error("image: ok.pgm\norigin: [0, 0, 0]\nresolution: abc\n"),
             f + ":3: resolution must be a positive number (got \"abc\")");
   EXPECT_EQ(yaml_error("image: ok.pgm\nresolution: -0.5\norigin: [0, 0, 0]\n"),
-            f + ":2: resolution must be a positive number (got \"-0.5\")");
+            f + ":2: resolution must be a number of metres per cell in [0.001, 1000] (got \"-0.5\")");
   EXPECT_EQ(yaml_error("image: ok.pgm\norigin: [0, 0, 0]\n"),
             f + ":1: missing key 'resolution' (expected a positive number, metres per cell)");
   EXPECT_EQ(yaml_error("resolution: 1\norigin: [0, 0, 0]\n"),

@@ -35,8 +35,8 @@ TEST(TaskChecks, EachTaskChecksItsOwnSettings) {
   EXPECT_EQ(check_error("mission { phase { cover { traffic: true traffic_window_steps: 0 } } }"),
             "t.pbtxt: field mission.phase[0].cover.traffic_window_steps: must be >= 1 (got 0)");
   EXPECT_EQ(check_error("mission { phase { explore {} } phase { mapf { w: 0.5 time_limit_s: 0 } } }"),
-            "t.pbtxt: field mission.phase[1].mapf.w: must be at least 1 (got 0.5)\n"
-            "t.pbtxt: field mission.phase[1].mapf.time_limit_s: must be a finite number > 0 (got 0)");
+            "t.pbtxt: field mission.phase[1].mapf.w: must be a finite number >= 1 (got 0.5)\n"
+            "t.pbtxt: field mission.phase[1].mapf.time_limit_s: must be a number > 0, or inf for no limit (got 0)");
   EXPECT_EQ(check_error("mission { phase { collect { types: 2 objects { at { x: 0.3 y: 0.3 } type: 2 } } } }"),
             "t.pbtxt: field mission.phase[0].collect.objects[0].type: must be below collect.types (2) (got 2)");
   EXPECT_EQ(check_error("mission { phase { explore {} } phase { cover {} } phase { mapf {} } phase { collect {} } }"),
@@ -48,7 +48,7 @@ TEST(TaskChecks, ARendezvousPointLiesOnTheMap) {
             "t.pbtxt: field mission.phase[0].rendezvous.point: must lie inside the map, which spans x [0.00, 2.40) m "
             "and y [0.00, 1.20) m (got (9, 0.5))");
   EXPECT_EQ(check_error("mission { phase { rendezvous { point { x: 1 } home: true w: 0.5 } } }"),
-            "t.pbtxt: field mission.phase[0].rendezvous.w: must be at least 1 (got 0.5)\n"
+            "t.pbtxt: field mission.phase[0].rendezvous.w: must be a finite number >= 1 (got 0.5)\n"
             "t.pbtxt: field mission.phase[0].rendezvous: must give point or home: true, not both (got both)\n"
             "t.pbtxt: field mission.phase[0].rendezvous.point: must give both x and y in metres (got only x)");
   EXPECT_EQ(check_error("mission { phase { rendezvous { point { x: 1.1 y: 0.5 } } } phase { rendezvous {} } }"),

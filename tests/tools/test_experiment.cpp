@@ -218,6 +218,43 @@ TEST(ReportCommand, ReproducesTheExperimentOutputsByteForByte) {
   EXPECT_TRUE(fs::exists(dir.file("plain/results.csv")));
 }
 
+TEST(ReportCommand, ADirectoryGivenTwiceCountsOnce) {
+  TempDir dir;
+  const std::string exp = dir.file("exp");
+  (void)fake_explore(exp);
+  std::ostringstream out, err;
+  ReportOptions r;
+  // The folder, one of its runs again, and the folder once more by another spelling.
+  r.dirs = {exp + "/runs", exp + "/runs/open-group-frontier-s1", exp + "/runs/../runs"};
+  r.out_dir = dir.file("report");
+  EXPECT_EQ(report_command(r, out, err), 0) << err.str();
+  EXPECT_TRUE(contains(out.str(), "7 runs: 7 ok (7 complete), 0 failed")) << out.str();
+}
+
+TEST(ReportCommand, EachMissionKindGetsItsOwnTable) {
+  TempDir dir;
+  const std::string exp = dir.file("exp");
+  (void)fake_explore(exp);
+  // Two chained runs beside the exploration runs: never pooled into the exploration table.
+  for (int seed : {1, 2}) {
+    swarm::record::RunMetrics m = swarm::test::run_metrics("small", "group-frontier", static_cast<std::uint64_t>(seed), 300, 5);
+    m.phases.push_back({"cover", 100, std::optional<std::uint32_t>(250 + seed), true, {}, {}});
+    m.phases.back().motion.vertex_conflict_events = static_cast<std::uint64_t>(seed);
+    m.phases.back().motion.total.longest_blocked_ticks = 4;
+    spit(exp + "/runs/chain-s" + std::to_string(seed) + "/metrics.json", swarm::record::to_json(m).dump(2));
+  }
+  std::ostringstream out, err;
+  ReportOptions r;
+  r.dirs = {exp + "/runs"};
+  r.out_dir = dir.file("report");
+  EXPECT_EQ(report_command(r, out, err), 0) << err.str();
+  EXPECT_TRUE(contains(out.str(), "7 runs: 7 ok (7 complete), 0 failed")) << out.str();
+  EXPECT_TRUE(contains(out.str(), "Mission explore,cover (2 runs)")) << out.str();
+  const std::string csv = slurp(dir.file("report/mission-explore-cover.csv"));
+  EXPECT_TRUE(contains(csv, ",cover,100,252,152,true,2,0,0,4\n")) << csv;
+  EXPECT_TRUE(fs::exists(dir.file("report/mission-explore-cover.txt")));
+}
+
 TEST(ReportCommand, BadInputExits2SayingWhatIsAccepted) {
   TempDir dir;
   std::ostringstream out, err;

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "swarm_test/files.hpp"
 #include "swarm_test/metrics_fixture.hpp"
 #include "commands.hpp"
@@ -46,7 +48,7 @@ using swarm::test::contains;
 // copies a prepared run record and metrics file into --run-dir; `leader_script` is the body of
 // every leader.
 std::string fake_bin(const TempDir& dir, const std::string& leader_script = "exit 0",
-                     const std::string& sim_script = "exit 0") {
+                     const std::string& sim_script = "exit 0", const std::string& gcs_script = "") {
   const std::string bin = dir.file("bin");
   const std::string fixtures = dir.file("fixtures");
   fs::create_directories(bin);
@@ -59,6 +61,12 @@ std::string fake_bin(const TempDir& dir, const std::string& leader_script = "exi
     f.mutable_header()->set_groups(1);
     f.mutable_header()->set_robots_per_group(2);
     w.append(f);
+    for (std::uint32_t t = 0; t < 10; ++t) {  // two robots standing for ticks 0..9
+      swarm::record::Frame p;
+      p.mutable_poses()->set_tick(t);
+      for (int xy : {1, 1, 2, 1}) p.mutable_poses()->add_xy(xy);
+      w.append(p);
+    }
     swarm::record::Frame s;
     s.mutable_summary()->set_steps(368);
     s.mutable_summary()->set_planning_rounds(17);
@@ -76,8 +84,9 @@ std::string fake_bin(const TempDir& dir, const std::string& leader_script = "exi
   script("swarm-sim", sim_script);
   script("swarm-member", "exit 0");
   script("swarm-leader", leader_script);
-  script("swarm-gcs", run_dir + "cp " + fixtures + "/run.pb \"$RUN/run.pb\"\ncp " + fixtures +
-                          "/metrics.json \"$RUN/metrics.json\"\nprintf 'progress 100%%\\n'");
+  script("swarm-gcs", run_dir + (gcs_script.empty() ? "cp " + fixtures + "/run.pb \"$RUN/run.pb\"\ncp " + fixtures +
+                                                          "/metrics.json \"$RUN/metrics.json\"\nprintf 'progress 100%%\\n'"
+                                                    : gcs_script));
   return bin;
 }
 
@@ -397,6 +406,101 @@ TEST(RunCommand, MissingRoleBinaryExits1BeforeCreatingAnything) {
   EXPECT_EQ(run_command(o, out, err), 1);
   EXPECT_TRUE(contains(err.str(), "swarm-sim")) << err.str();
   EXPECT_FALSE(fs::exists(o.out_dir));
+}
+
+TEST(RunCommand, AFailedRunStillEndsWithMetricsSayingWhy) {
+  // The GCS wrote its metrics (the run ended itself), then a leader failed: incomplete, and why.
+  TempDir dir;
+  const RunOptions o = small_run(dir, fake_bin(dir, "sleep 1; exit 3"));
+  std::ostringstream out, err;
+  EXPECT_EQ(run_command(o, out, err), 1);
+  EXPECT_TRUE(contains(err.str(), "what the run did up to the stop, and why it stopped: " + o.out_dir + "/metrics.json"))
+      << err.str();
+  const auto m = swarm::record::read_metrics(o.out_dir + "/metrics.json");
+  EXPECT_FALSE(m.complete);
+  EXPECT_EQ(m.ended, "process leader-0 failed (exit code 3) (the GCS: complete)");
+}
+
+TEST(RunCommand, WithoutTheGcsMetricsTheRecordSaysWhatIsKnown) {
+  // The GCS died with its metrics: the launcher writes what the record holds up to its last
+  // whole frame, marked partial, which read_metrics refuses by name.
+  TempDir dir;
+  const std::string fixtures = dir.file("fixtures");
+  const std::string bin = fake_bin(dir, "exit 0", "exit 0",
+                                   "head -c 40 " + fixtures + "/run.pb > \"$RUN/run.pb\"; kill -9 $$");
+  const RunOptions o = small_run(dir, bin);
+  std::ostringstream out, err;
+  EXPECT_EQ(run_command(o, out, err), 1);
+  const auto j = nlohmann::json::parse(slurp(o.out_dir + "/metrics.json"));
+  EXPECT_EQ(j.at("partial"), true);
+  EXPECT_EQ(j.at("complete"), false);
+  EXPECT_EQ(j.at("ended"), "process gcs was killed by signal 9 (Killed)");
+  EXPECT_TRUE(j.at("ticks_run").is_number()) << j.dump();
+  EXPECT_TRUE(contains(j.at("record").get<std::string>(), "truncated")) << j.dump();
+  try {
+    (void)swarm::record::read_metrics(o.out_dir + "/metrics.json");
+    ADD_FAILURE() << "a partial metrics.json was read as whole";
+  } catch (const swarm::record::MetricsError& e) {
+    EXPECT_TRUE(contains(e.what(), "the run ended early (process gcs was killed")) << e.what();
+  }
+}
+
+TEST(RunCommand, CheckResolvesTheRunAndStartsNothing) {
+  TempDir dir;
+  RunOptions o = small_run(dir, fake_bin(dir));
+  std::ostringstream out, err;
+  EXPECT_EQ(check_run_command(o, out, err), 0) << err.str();
+  EXPECT_TRUE(contains(out.str(), "would run small")) << out.str();
+  EXPECT_TRUE(contains(out.str(), "1 x 2 robots, mission explore")) << out.str();
+  EXPECT_FALSE(fs::exists(o.out_dir));
+  o.overrides.groups = 0;
+  std::ostringstream out2, err2;
+  EXPECT_EQ(check_run_command(o, out2, err2), 2);
+  EXPECT_TRUE(contains(err2.str(), "field groups: must be >= 1")) << err2.str();
+}
+
+TEST(RunProcesses, ARunDirectoryTakesOneRunAtATime) {
+  TempDir dir;
+  RunOptions o;
+  o.overrides.map = "small";
+  o.discovery = RunOptions::Discovery::Simple;
+  o.out_dir = dir.file("run");
+  const PreparedRun a = prepare_run(o);
+  try {
+    (void)prepare_run(o);
+    ADD_FAILURE() << "two runs were let into one directory";
+  } catch (const cfg::ConfigError& e) {
+    EXPECT_TRUE(contains(e.what(), "--out " + o.out_dir + ": another swarm run is writing to this directory"))
+        << e.what();
+  }
+}
+
+TEST(RenderCommand, ATickPastTheRunIsRefused) {
+  TempDir dir;
+  const RunOptions o = small_run(dir, fake_bin(dir));
+  std::ostringstream out, err;
+  ASSERT_EQ(run_command(o, out, err), 0) << err.str();
+  RenderOptions r;
+  r.run_dir = o.out_dir;
+  r.tick = 99999;
+  std::ostringstream rout, rerr;
+  EXPECT_EQ(render_command(r, rout, rerr), 2);
+  EXPECT_TRUE(contains(rerr.str(), "--tick 99999: " + o.out_dir + "/run.pb holds ticks 0..9")) << rerr.str();
+  EXPECT_FALSE(fs::exists(o.out_dir + "/frontiers-99999.png"));
+}
+
+TEST(RenderCommand, ATruncatedRecordIsDrawnUpToItsLastWholeFrame) {
+  TempDir dir;
+  const RunOptions o = small_run(dir, fake_bin(dir));
+  std::ostringstream out, err;
+  ASSERT_EQ(run_command(o, out, err), 0) << err.str();
+  std::ofstream(o.out_dir + "/run.pb", std::ios::app | std::ios::binary) << "\x40half a frame";
+  RenderOptions r;
+  r.run_dir = o.out_dir;
+  std::ostringstream rout, rerr;
+  EXPECT_EQ(render_command(r, rout, rerr), 0) << rerr.str();
+  EXPECT_TRUE(contains(rerr.str(), "truncated")) << rerr.str();
+  EXPECT_TRUE(contains(rerr.str(), "(up to tick 9)")) << rerr.str();
 }
 
 TEST(RenderCommand, MissingOrDamagedRunDirExits2) {

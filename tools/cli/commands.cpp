@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 
 #include "swarm/record/record.hpp"
 #include "swarm/record/render.hpp"
@@ -30,8 +31,28 @@ int render_command(const RenderOptions& o, std::ostream& out, std::ostream& err)
     return 2;
   }
   std::string png = o.out_path;
+  swarm::record::RecordPrefix read;
   try {
-    const auto frames = swarm::record::read_record(record);
+    read = swarm::record::read_record_prefix(record);
+  } catch (const std::exception& e) {
+    err << "swarm render: " << e.what() << "\n";
+    return 2;
+  }
+  const auto& frames = read.frames;
+  std::optional<std::uint32_t> last_tick;
+  for (const auto& f : frames) {
+    if (f.has_poses()) last_tick = std::max(last_tick.value_or(0), f.poses().tick());
+  }
+  if (!read.cut.empty()) {
+    err << "swarm render: " << read.cut << "; drawing the " << frames.size() << " whole frames before it"
+        << (last_tick ? " (up to tick " + std::to_string(*last_tick) + ")" : std::string()) << "\n";
+  }
+  if (o.tick && (!last_tick || *o.tick > *last_tick)) {
+    err << "swarm render: --tick " << *o.tick << ": " << record << " "
+        << (last_tick ? "holds ticks 0.." + std::to_string(*last_tick) : std::string("holds no tick")) << "\n";
+    return 2;
+  }
+  try {
     if (o.tick) {
       if (png.empty()) {
         png = (fs::path(o.run_dir) / ("frontiers-" + std::to_string(*o.tick) + ".png")).string();
@@ -42,7 +63,7 @@ int render_command(const RenderOptions& o, std::ostream& out, std::ostream& err)
       swarm::record::render_map_png(frames, png, o.scale);
     }
   } catch (const std::exception& e) {
-    err << "swarm render: " << e.what() << "\n";
+    err << "swarm render: " << record << ": " << e.what() << "\n";
     return 2;
   }
   out << png << "\n";

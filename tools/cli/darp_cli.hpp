@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli_numbers.hpp"
 #include "darp_command.hpp"
 #include "experiment_darp.hpp"
 
@@ -25,7 +26,9 @@ inline CLI::App* add_darp_flags(CLI::App& app, DarpOptions& o) {
   c->add_option("--reinit", o.reinit, "bfs-kmeans: selective (paper) | always (paper's tables)")->capture_default_str();
   c->add_option("--distance", o.distance, "euclidean (paper) | geodesic")->capture_default_str();
   c->add_option("--max-iterations", o.max_iterations, "DARP iterations at most")->capture_default_str();
-  c->add_option("--time-limit", o.time_limit_s, "Stop DARP after S seconds (0 = none)")->capture_default_str();
+  c->add_option("--time-limit", o.time_limit_s, "Stop DARP after S seconds (0 or inf = none)")
+      ->capture_default_str()
+      ->check(seconds_or_zero());
   c->add_option("--out", o.out_dir, "Output directory; default runs/darp-<time>");
   return c;
 }

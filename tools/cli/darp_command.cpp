@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "swarm/planner/grid/deadline.hpp"
 #include "swarm/planner/coverage/placement.hpp"
 #include "experiment.hpp"
 #include "swarm/config/scenario.hpp"
@@ -271,7 +272,7 @@ int darp_command(const DarpOptions& o, std::ostream& out, std::ostream& err) {
   const Clock::time_point t0 = Clock::now();
   Clock::time_point next_note = t0 + std::chrono::seconds(1);
   long polls = 0;
-  const auto deadline = t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.time_limit_s));
+  const auto deadline = planner::deadline_after(o.time_limit_s, t0);
   auto should_stop = [&] {
     ++polls;
     const Clock::time_point now = Clock::now();

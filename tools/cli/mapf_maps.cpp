@@ -47,7 +47,10 @@ pm::Instance make_random_instance(const MapfMap& map, int agents, std::uint64_t 
     return in;
   }
   auto in = pm::random_instance(map.grid, agents, seed);
-  if (!in) throw std::runtime_error("--random: " + map.name + " has too few free cells for " + std::to_string(agents) + " agents");
+  if (!in) {
+    throw std::runtime_error("--random: " + (map.file.empty() ? map.name : map.file) + " has too few free cells for " +
+                             std::to_string(agents) + " agents");
+  }
   return *in;
 }
 

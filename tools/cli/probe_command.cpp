@@ -9,6 +9,7 @@
 #include <memory>
 #include <thread>
 
+#include "cli_numbers.hpp"
 #include "command.hpp"
 #include "swarm/comm/endpoint.hpp"
 #include "swarm/comm/participant.hpp"
@@ -24,9 +25,9 @@ Command add_probe(CLI::App& app) {
       "probe",
       "Can a swarm be seen from here? Listen to its clock topic for S seconds as a plain DDS participant "
       "and say how many samples arrived (exit 0: some, 1: none)");
-  c->add_option("--domain", o.domain, "DDS domain id of the swarm")->capture_default_str()->check(CLI::Range(0, 232));
+  c->add_option("--domain", o.domain, "DDS domain id of the swarm")->capture_default_str()->check(number({0, 232}));
   c->add_option("--partition", o.partition, "DDS partition of the swarm")->capture_default_str();
-  c->add_option("--seconds", o.seconds, "How long to listen")->capture_default_str()->check(CLI::Range(0.1, 3600.0));
+  c->add_option("--seconds", o.seconds, "How long to listen")->capture_default_str()->check(number({0.1, 3600.0}));
   c->add_option("--discovery-server", o.discovery_server,
                 "HOST:PORT of the swarm's Fast DDS discovery server (default: $SWARM_DISCOVERY_SERVER, else "
                 "simple discovery)");
@@ -40,7 +41,7 @@ Command add_probe(CLI::App& app) {
   c->add_option("--participant-id", o.participant_id,
                 "RTPS participant id (fixes the ports; -1 = Fast DDS picks)")
       ->capture_default_str()
-      ->check(CLI::Range(-1, 239));
+      ->check(number({-1, 239}));
   return {c, [options](std::ostream& out, std::ostream& err) { return probe_command(*options, out, err); }};
 }
 

@@ -5,10 +5,12 @@
 #include <map>
 #include <memory>
 
+#include "cli_numbers.hpp"
 #include "command.hpp"
 #include "commands.hpp"
 #include "experiment_command.hpp"
 #include "run_command.hpp"
+#include "swarm/planner/grid/map_io.hpp"
 
 namespace swarm::tools {
 
@@ -22,6 +24,7 @@ Command add_run(CLI::App& app) {
     std::uint64_t seed = 0;
     long timeout_s = 600;
     bool realtime = false;
+    bool check = false;
     int domain = -1;
     CLI::Option *map_opt, *map_resolution_opt, *start_opt, *groups_opt, *robots_opt, *mode_opt, *seed_opt, *ticks_opt, *realtime_opt,
         *tick_ms_opt, *domain_opt;
@@ -40,7 +43,8 @@ Command add_run(CLI::App& app) {
       "Built-in map (open, maze1, maze2, small, warehouse-5x8, ...), a map_server YAML file or a MovingAI .map file");
   f->map_resolution_opt = run_cmd->add_option("--map-resolution", f->map_resolution,
                                               "Metres per cell of a MovingAI .map (default: the scenario's "
-                                              "map_resolution_m, 0.2)");
+                                              "map_resolution_m, 0.2)")
+                              ->check(number({planner::kMinResolutionM, planner::kMaxResolutionM}));
   f->start_opt = run_cmd->add_option("--start", f->start, "Start point X,Y in metres (map frame)");
   f->groups_opt = run_cmd->add_option("--groups", f->groups, "Number of groups");
   f->robots_opt = run_cmd->add_option("--robots-per-group", f->robots, "Robots per group, leader included");
@@ -61,11 +65,14 @@ Command add_run(CLI::App& app) {
   run_cmd->add_option("--freeze", o.freezes,
                       "Stop a robot's process at a tick for S seconds (a real DDS outage), e.g. leader-1@80+10 "
                       "(repeatable)");
+  run_cmd->add_flag("--check", f->check,
+                    "Check the scenario and flags and resolve the world (map, start, robots, goals) as a run "
+                    "would, say what would run, and stop: nothing is created or started");
   run_cmd->add_option("--out", run.out_dir,
                       "Run directory; default runs/<time>-<map>-<mode>-s<seed>");
   run_cmd->add_option("--timeout", f->timeout_s, "Wall-clock limit in seconds (0 = none)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(wall_seconds());
   run_cmd
       ->add_option("--discovery", run.discovery,
                    "How the processes find each other: server (a Fast DDS discovery server of the run's own, "
@@ -79,13 +86,13 @@ Command add_run(CLI::App& app) {
                     "authenticates and encrypts, so a participant without a certificate sees nothing (simple discovery)");
   run_cmd->add_option("--partition", run.partition, "DDS partition of the run (default: unique to the run)");
   f->domain_opt = run_cmd->add_option("--domain", f->domain, "DDS domain id of the run (default: from the process id)")
-                      ->check(CLI::Range(1, kMaxDomainId));
+                      ->check(number({1, kMaxDomainId}));
   run_cmd
       ->add_option("--agents-per-process", run.agents_per_process,
                    "Member robots of one group per process (each still has its own DDS endpoints); 1 = a process "
                    "per robot")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(number(config::kPositive));
   return {run_cmd, [f](std::ostream& out, std::ostream& err) {
             RunOptions run = f->run;
             RunOverrides& o = run.overrides;
@@ -101,7 +108,7 @@ Command add_run(CLI::App& app) {
             if (f->tick_ms_opt->count()) o.tick_ms = f->tick_ms;
             if (f->domain_opt->count()) run.domain_id = f->domain;
             run.timeout = std::chrono::seconds(f->timeout_s);
-            return run_command(run, out, err);
+            return f->check ? check_run_command(run, out, err) : run_command(run, out, err);
           }};
 }
 
@@ -119,7 +126,7 @@ Command add_render(CLI::App& app) {
                          "PNG to write; default RUN_DIR/map.png or RUN_DIR/frontiers-<T>.png");
   render_cmd->add_option("--scale", f->render.scale, "Pixels per cell")
       ->capture_default_str()
-      ->check(CLI::Range(1, 64));
+      ->check(number({1, 64}));
   return {render_cmd, [f](std::ostream& out, std::ostream& err) {
             RenderOptions render = f->render;
             if (f->tick_opt->count()) render.tick = f->tick;

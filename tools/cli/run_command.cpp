@@ -1,5 +1,7 @@
 #include "run_command.hpp"
 
+#include "run_end.hpp"
+
 #include "format.hpp"
 
 #include <fcntl.h>
@@ -118,6 +120,22 @@ std::string summarize_metrics(const std::string& path) {
   return o.str();
 }
 
+int check_run_command(const RunOptions& options, std::ostream& out, std::ostream& err) {
+  try {
+    const cfg::World w = resolve_run(options);
+    const auto& s = w.scenario;
+    std::string mission;
+    for (const auto& ph : cfg::mission_phases(s)) mission += (mission.empty() ? "" : ",") + cfg::task_name(ph);
+    out << "swarm run --check: would run " << map_label(s.map()) << " (" << w.truth.width() << " x "
+        << w.truth.height() << " cells), " << s.groups() << " x " << s.robots_per_group() << " robots, mission "
+        << mission << ", max_ticks " << s.max_ticks() << ", seed " << s.seed() << "; nothing was started\n";
+    return 0;
+  } catch (const cfg::ConfigError& e) {
+    err << "swarm run: " << e.what() << "\n";
+    return 2;
+  }
+}
+
 int run_command(const RunOptions& options, std::ostream& out, std::ostream& err) {
   // Before anything is created: can the roles be started at all?
   const std::string bin_dir = options.bin_dir.empty() ? executable_dir() : options.bin_dir;
@@ -144,13 +162,20 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err)
 
   const SupervisorResult r = run_processes(procs, options.timeout);
   const std::string logs = (std::filesystem::path(l.run_dir) / "logs").string();
+  if (!r.ok) {
+    // What the run did up to its stop, and why it stopped, in metrics.json.
+    const std::string not_written = record_early_end(l.run_dir, run.world.scenario, early_end_reason(r));
+    if (!not_written.empty()) err << "swarm run: no metrics.json: " << not_written << "\n";
+  }
+  const std::string metrics_note =
+      "swarm run: what the run did up to the stop, and why it stopped: " + l.run_dir + "/metrics.json\n";
   if (r.interrupted) {
-    err << "swarm run: interrupted; every process was stopped (logs: " << logs << ")\n";
+    err << "swarm run: interrupted; every process was stopped (logs: " << logs << ")\n" << metrics_note;
     return 130;
   }
   if (r.timed_out) {
     err << "swarm run: " << r.message << " (--timeout " << options.timeout.count()
-        << "); every process was stopped (logs: " << logs << ")\n";
+        << "); every process was stopped (logs: " << logs << ")\n" << metrics_note;
     return 1;
   }
   if (!r.ok) {
@@ -161,6 +186,7 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err)
     } else {
       err << "\n";
     }
+    err << metrics_note;
     return 1;
   }
 

@@ -31,4 +31,9 @@ inline constexpr int kExitIncomplete = 3;
 // The whole `swarm run`: returns the process exit status; messages go to `out` and `err`.
 int run_command(const RunOptions& options, std::ostream& out, std::ostream& err);
 
+// `swarm run --check`: the scenario and flags checked and the world resolved (map, start, robots'
+// cells, the mission's goals and objects) as a run would, then one line of what would run.
+// Nothing is created or started. 0 when it would run, 2 when not (the message says why).
+int check_run_command(const RunOptions& options, std::ostream& out, std::ostream& err);
+
 }  // namespace swarm::tools

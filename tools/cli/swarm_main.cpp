@@ -4,9 +4,39 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <string>
 #include <vector>
 
+#include "cli_numbers.hpp"
 #include "command.hpp"
+
+namespace {
+
+// "" when the words before the first flag name commands; otherwise the message for the first
+// that does not ("swarm frobnicate" would only get CLI11's "A subcommand is required").
+std::string unknown_command(CLI::App& app, int argc, char** argv) {
+  CLI::App* at = &app;
+  std::string path = "swarm";
+  for (int i = 1; i < argc && at->get_require_subcommand_min() > 0; ++i) {
+    const std::string word = argv[i];
+    if (word.empty() || word[0] == '-') return "";
+    CLI::App* sub = nullptr;
+    try {
+      sub = at->get_subcommand(word);
+    } catch (const CLI::OptionNotFound&) {
+      std::string names;
+      for (const CLI::App* c : at->get_subcommands([](CLI::App*) { return true; })) {
+        names += (names.empty() ? "" : ", ") + c->get_name();
+      }
+      return path + ": unknown command '" + word + "' (expected one of " + names + "; " + path + " --help)";
+    }
+    path += " " + word;
+    at = sub;
+  }
+  return "";
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace swarm::tools;
@@ -36,7 +66,12 @@ int main(int argc, char** argv) {
                                          "ECBS vs LaCAM (swarm runs)"));
   commands.push_back(add_experiment_mission(*experiment));
   commands.push_back(add_probe(app));
+  check_number_options(app);
 
+  if (const std::string unknown = unknown_command(app, argc, argv); !unknown.empty()) {
+    std::cerr << unknown << "\n";
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -135,15 +135,6 @@ std::string setting_tag(const RunSetting& s) {
   return tag;
 }
 
-std::string csv_escape(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
-}
 
 std::vector<std::string> setting_columns(ExperimentKind kind) {
   switch (kind) {
@@ -245,6 +236,19 @@ json runs_json(const ExperimentPlan& plan, const std::vector<RunRow>& rows) {
   return runs;
 }
 
+
+}  // namespace
+
+std::string csv_escape(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
 void write_file(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << text;
@@ -253,8 +257,6 @@ void write_file(const fs::path& path, const std::string& text) {
     throw std::runtime_error("cannot write " + path.string() + " (" + std::strerror(errno) + ")");
   }
 }
-
-}  // namespace
 
 // ---- kinds, settings, defaults --------------------------------------------------------------
 

@@ -27,6 +27,7 @@
 #include <cstdint>
 #include <ctime>
 #include <optional>
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -173,6 +174,11 @@ struct ExperimentOutputs {
 
 [[nodiscard]] ExperimentOutputs analyze_experiment(const ExperimentPlan& plan,
                                                    const std::vector<RunRow>& rows);
+
+// A CSV field: as is, or quoted when it holds a comma, a quote or a newline.
+[[nodiscard]] std::string csv_escape(const std::string& s);
+// Writes `text` to `path` (truncating); throws std::runtime_error naming the file.
+void write_file(const std::filesystem::path& path, const std::string& text);
 
 // Writes table.txt, results.csv, results.json and the figures into `dir`; returns the paths
 // written. Throws std::runtime_error naming a file that cannot be written.

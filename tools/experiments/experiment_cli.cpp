@@ -4,6 +4,7 @@
 #include <array>
 #include <memory>
 
+#include "cli_numbers.hpp"
 #include "command.hpp"
 #include "darp_cli.hpp"
 #include "experiment.hpp"
@@ -59,7 +60,7 @@ std::vector<Command> add_swarm_experiments(CLI::App& experiment) {
     c->add_option("--timeout", f->timeout_s,
                   "Wall-clock limit per run in seconds (0 = none); a stuck run fails")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+        ->check(wall_seconds());
     out.push_back({c, [f](std::ostream& o, std::ostream& err) {
                      ExperimentOptions e = f->options;
                      if (f->seeds_opt->count()) e.seeds = f->seeds;
@@ -116,7 +117,7 @@ Command add_task_experiment(CLI::App& experiment, const char* task, const char* 
   c->add_option("--map", o->map, "Built-in map or map_server YAML")->capture_default_str();
   c->add_option("--seeds", o->seeds, "Seeds 1..N per point and variant")->capture_default_str();
   c->add_option("--jobs", o->jobs, "Runs at once")->capture_default_str();
-  c->add_option("--timeout", o->timeout_s, "Wall-clock limit per run in seconds")->capture_default_str();
+  c->add_option("--timeout", o->timeout_s, "Wall-clock limit per run in seconds")->capture_default_str()->check(wall_seconds());
   c->add_option("--out", o->out_dir, std::string("Experiment directory; default runs/experiment-") + task + "-<time>");
   c->add_flag("--quick", o->quick, "Only the first two points of the first sweep (a smoke test)");
   return {c, [o](std::ostream& out, std::ostream& err) { return task_experiment(*o, out, err); }};
@@ -136,7 +137,7 @@ Command add_experiment_mission(CLI::App& experiment) {
   c->add_option("--robots", o->robots, "Teams, GROUPSxROBOTS_PER_GROUP")->delimiter(',')->capture_default_str();
   c->add_option("--seeds", o->seeds, "Seeds 1..N per map, setting and team")->capture_default_str();
   c->add_option("--jobs", o->jobs, "Runs at once")->capture_default_str();
-  c->add_option("--timeout", o->timeout_s, "Wall-clock limit per run in seconds")->capture_default_str();
+  c->add_option("--timeout", o->timeout_s, "Wall-clock limit per run in seconds")->capture_default_str()->check(wall_seconds());
   c->add_option("--out", o->out_dir, "Experiment directory; default runs/experiment-mission-<time>");
   c->add_flag("--quick", o->quick, "small, seed 1, exact links only (a smoke test)");
   return {c, [o](std::ostream& out, std::ostream& err) { return mission_experiment(*o, out, err); }};

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "run_end.hpp"
 #include "swarm/record/record.hpp"
 #include "swarm/record/metrics.hpp"
 #include "swarm/record/render.hpp"
@@ -54,6 +55,7 @@ RunOutcome run_one(const RunJob& job, int domain) {
   const SupervisorResult r = run_processes(procs, options.timeout);
   o.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!r.ok) (void)record_early_end(o.run_dir, run.world.scenario, early_end_reason(r));
   if (r.interrupted) {
     o.interrupted = true;
     o.message = "interrupted";
@@ -61,9 +63,7 @@ RunOutcome run_one(const RunJob& job, int domain) {
   }
   if (!r.ok) {
     o.message = r.message;  // names the process, and the timeout when it was one
-    if (fs::exists(fs::path(o.run_dir) / "metrics.json")) {
-      o.message += ", after the GCS had written metrics.json (not counted: a run must end cleanly)";
-    }
+    o.message += " (not counted: a run must end cleanly; metrics.json says what it did up to the stop)";
     o.log_path = r.log_path;
     return o;
   }

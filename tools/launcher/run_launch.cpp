@@ -53,10 +53,11 @@ std::optional<std::pair<double, double>> parse_xy(const std::string& text) {
 
 // The lock file of DDS domain `d` held (flock, exclusive) by this process, or nullptr when another
 // run holds it. O_CLOEXEC: the role processes do not inherit it.
-std::shared_ptr<const void> try_lock_domain(int d) {
-  const fs::path path = fs::temp_directory_path() / ("swarm-dds-domain-" + std::to_string(d) + ".lock");
+// An exclusive flock on `path` (created if missing), held while the returned pointer lives; null
+// when another process holds it.
+std::shared_ptr<const void> try_lock_file(const fs::path& path, const char* what) {
   const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
-  if (fd < 0) throw std::runtime_error("cannot open the domain lock " + path.string() + ": " + std::strerror(errno));
+  if (fd < 0) throw std::runtime_error(std::string("cannot open the ") + what + " " + path.string() + ": " + std::strerror(errno));
   if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
     ::close(fd);
     return nullptr;
@@ -67,6 +68,10 @@ std::shared_ptr<const void> try_lock_domain(int d) {
     ::close(*held);
     delete held;
   });
+}
+
+std::shared_ptr<const void> try_lock_domain(int d) {
+  return try_lock_file(fs::temp_directory_path() / ("swarm-dds-domain-" + std::to_string(d) + ".lock"), "domain lock");
 }
 
 // The executable `name` on $PATH (execv does not search it); "" when there is none.
@@ -188,7 +193,7 @@ void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o) {
              });
 }
 
-PreparedRun prepare_run(const RunOptions& options) {
+cfg::World resolve_run(const RunOptions& options) {
   const std::string scenario_path =
       options.scenario_path.empty()
           ? (fs::path(cfg::data_dir()) / "scenarios" / "default.pbtxt").string()
@@ -199,8 +204,16 @@ PreparedRun prepare_run(const RunOptions& options) {
   if (options.customize) options.customize(s);
   cfg::validate(s, scenario_path + " (with the command-line flags)");
 
-  PreparedRun run{cfg::resolve_world(s, scenario_dir, scenario_path), {}};
-  swarm::tasks::resolve_mission(run.world, scenario_path);
+  // A start from the command line is the flag's to answer for, not the scenario file's alone.
+  const std::string start_source =
+      options.overrides.start ? scenario_path + " with --start " + *options.overrides.start : scenario_path;
+  cfg::World world = cfg::resolve_world(s, scenario_dir, start_source);
+  swarm::tasks::resolve_mission(world, scenario_path);
+  return world;
+}
+
+PreparedRun prepare_run(const RunOptions& options) {
+  PreparedRun run{resolve_run(options), {}, {}, {}};
   swarm::scenario::Scenario& used = run.world.scenario;
   // The roles read RUN_DIR/scenario.pbtxt, whose folder is the run directory: a map file must
   // be named absolutely there.
@@ -216,6 +229,10 @@ PreparedRun prepare_run(const RunOptions& options) {
   if (ec) {
     throw cfg::ConfigError("cannot create the run directory " + l.run_dir + " (" + ec.message() +
                            "); choose another with --out DIR");
+  }
+  run.run_dir_lock = try_lock_file(fs::path(l.run_dir) / ".lock", "run directory lock");
+  if (!run.run_dir_lock) {
+    throw cfg::ConfigError("--out " + l.run_dir + ": another swarm run is writing to this directory; choose another --out");
   }
   l.scenario_path = (fs::path(l.run_dir) / "scenario.pbtxt").string();
   write_text_file(l.scenario_path, cfg::to_text(used));
@@ -322,6 +339,7 @@ std::vector<ProcessSpec> build_run_processes(const RunLaunch& l,
     common.push_back(l.security_dir);
   }
   procs.push_back(spec("sim", "swarm-sim", {}));
+  procs.back().ends_run = true;  // a stop asked of the run reaches the simulator first
   ProcessSpec gcs = spec("gcs", "swarm-gcs", {});
   gcs.argv.push_back("--progress");
   gcs.argv.push_back(l.progress_bar ? "bar" : "plain");

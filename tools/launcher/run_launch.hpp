@@ -104,6 +104,9 @@ struct PreparedRun {
   // participant id is its agent id, so two runs in one domain would bind the same ports. Released
   // when the last copy of this PreparedRun goes (or by the kernel if swarm dies).
   std::shared_ptr<const void> domain_lock;
+  // The run's hold on its directory (an flock on RUN_DIR/.lock), taken before anything is written
+  // there: a second run into the same --out would write over the first's record as it writes.
+  std::shared_ptr<const void> run_dir_lock;
 };
 
 // Applies `o` to `s`. A --map that differs from the scenario's map clears its start unless
@@ -111,8 +114,11 @@ struct PreparedRun {
 // (e.g. --start "3;4"); range checks are validate()'s.
 void apply_overrides(swarm::scenario::Scenario& s, const RunOverrides& o);
 
-// Loads the scenario, applies the flags and options.customize, validates, resolves the world,
-// creates the run directory (and RUN_DIR/logs) and writes RUN_DIR/scenario.pbtxt. A map given by
+// Loads the scenario, applies the flags and options.customize, validates and resolves the world
+// and the mission; creates nothing (`swarm run --check`). Throws config::ConfigError.
+[[nodiscard]] config::World resolve_run(const RunOptions& options);
+
+// resolve_run, then creates the run directory (and RUN_DIR/logs) and writes RUN_DIR/scenario.pbtxt. A map given by
 // a relative path is written as an absolute path, so the roles can read it from any folder.
 // Throws config::ConfigError for every problem the user can fix (exit status 2), including a
 // domain id out of range.

@@ -308,6 +308,19 @@ class Supervisor {
   void begin_stop() {
     if (stopping_) return;
     stopping_ = true;
+    for (const Child& c : children_) {
+      if (c.running && c.spec->ends_run) {
+        winding_down_ = true;
+        wind_down_until_ = Clock::now() + kWindDown;
+        ::kill(-c.pid, SIGTERM);
+        return;
+      }
+    }
+    stop_all();
+  }
+
+  void stop_all() {
+    winding_down_ = false;
     kill_at_ = Clock::now() + grace_;
     signal_running(SIGTERM);
   }
@@ -413,7 +426,9 @@ class Supervisor {
           start_child(c);
         }
       }
-      if (stopping_ && !killed_ && now >= kill_at_) {
+      // The run ended itself (or did not in time): the rest, services included, are stopped.
+      if (winding_down_ && (now >= wind_down_until_ || only_services_running())) stop_all();
+      if (stopping_ && !winding_down_ && !killed_ && now >= kill_at_) {
         signal_running(SIGKILL);
         killed_ = true;
       }
@@ -438,7 +453,8 @@ class Supervisor {
       for (const Child& c : children_) {
         if (c.restart_at) until(*c.restart_at);
       }
-      if (stopping_ && !killed_) until(kill_at_);
+      if (winding_down_) until(wind_down_until_);
+      if (stopping_ && !winding_down_ && !killed_) until(kill_at_);
       if (retiring_ && !killed_) until(retire_kill_at_);
 
       std::vector<pollfd> fds{{wake.fd(), POLLIN, 0}};
@@ -478,6 +494,8 @@ class Supervisor {
   pid_t parent_pid_ = 0;
   int devnull_ = -1;
   bool stopping_ = false;
+  bool winding_down_ = false;  // the run's ender was asked to end it; the others are left to finish
+  Clock::time_point wind_down_until_{};
   bool killed_ = false;
   bool echo_ok_ = true;
   bool retiring_ = false;  // the work is done; the services are being stopped

@@ -10,8 +10,9 @@
 //
 // Ending: all children exit 0 => ok (services, see ProcessSpec::service, are stopped when the rest
 // are done). The first child that exits non-zero or by a signal is the
-// failure; every other child's process group gets SIGTERM, then SIGKILL after a grace period
-// (3 s), and every child is reaped before returning. SIGINT/SIGTERM to the supervisor's process do
+// failure; the child that ends the run (ProcessSpec::ends_run) gets SIGTERM and up to
+// kWindDown to end it, then every other child's process group gets SIGTERM, then SIGKILL after a
+// grace period (3 s), and every child is reaped before returning. SIGINT/SIGTERM to the supervisor's process do
 // the same (interrupted = true; a second signal skips the grace period), and so does the timeout
 // (timed_out = true). On return no child, and no process in a child's group, is left running.
 //
@@ -49,6 +50,10 @@ struct ProcessSpec {
   // other child has exited it gets SIGTERM (SIGKILL after the grace period), and how it ends then
   // does not count; ending before that fails the run like any child.
   bool service = false;
+  // The child that ends the run for all (the simulator): when the run must stop early it alone
+  // gets SIGTERM first and up to `wind_down` to end the run, so that the others finish their
+  // reports and metrics.json is written; then the rest get SIGTERM and SIGKILL as above.
+  bool ends_run = false;
 };
 
 struct SupervisorResult {
@@ -64,6 +69,9 @@ struct SupervisorResult {
 };
 
 inline constexpr std::chrono::seconds kDefaultGracePeriod{3};
+// How long a run may take to end itself when asked to stop: the GCS waits up to 15 s for the
+// reports of robots that may be dead (gcs_node.hpp, finish).
+inline constexpr std::chrono::seconds kWindDown{25};
 
 // Runs every spec until all have exited (see the file comment). `timeout` <= 0 means none.
 // Problems the caller can fix (a log that cannot be created, an executable that cannot be run)

@@ -143,6 +143,12 @@ class PgmReader {
                  std::to_string(img.width) + " x " + std::to_string(img.height) +
                  ") after the header, found " + std::to_string(s_.size() - pos_));
       }
+      if (s_.size() - pos_ > n) {
+        fail(file_, 0,
+             "PGM pixel data: expected " + std::to_string(n) + " bytes (" + std::to_string(img.width) + " x " +
+                 std::to_string(img.height) + ") after the header, found " + std::to_string(s_.size() - pos_) +
+                 " (more than one image, or a header that does not match the picture)");
+      }
       for (std::size_t i = 0; i < n; ++i) {
         img.pixels[i] = static_cast<std::uint8_t>(s_[pos_ + i]);
         if (img.pixels[i] > img.maxval) bad_pixel(img, i, std::to_string(img.pixels[i]));
@@ -155,6 +161,12 @@ class PgmReader {
           bad_pixel(img, i, t.empty() ? "end of file" : in_quotes(t));
         }
         img.pixels[i] = static_cast<std::uint8_t>(*v);
+      }
+      if (const std::string extra = token(); !extra.empty()) {
+        fail(file_, 0,
+             "PGM pixel data: expected " + std::to_string(n) + " values (" + std::to_string(img.width) + " x " +
+                 std::to_string(img.height) + "), found more (" + in_quotes(extra) +
+                 " after the last); the header does not match the picture");
       }
     }
     return img;
@@ -204,6 +216,8 @@ class PgmReader {
 };
 
 std::optional<std::string> read_file(const std::string& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) return std::nullopt;  // it would read as an empty file
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
@@ -278,9 +292,10 @@ OccupancyGrid load_map_yaml(const std::string& yaml_path) {
   const YAML::Node res_node = require("resolution", "a positive number, metres per cell");
   const double resolution =
       number_or_fail(res_node, yaml_path, "resolution must be a positive number");
-  if (!(resolution > 0.0)) {
+  if (!(resolution >= kMinResolutionM && resolution <= kMaxResolutionM)) {
     fail(yaml_path, line_of(res_node),
-         "resolution must be a positive number (got " + shown(res_node) + ")");
+         "resolution must be a number of metres per cell in [" + format_double(kMinResolutionM) + ", " +
+             format_double(kMaxResolutionM) + "] (got " + shown(res_node) + ")");
   }
 
   const YAML::Node origin = require("origin", "a list [x, y, yaw] in metres and radians");
@@ -293,6 +308,10 @@ OccupancyGrid load_map_yaml(const std::string& yaml_path) {
   for (std::size_t i = 0; i < 3; ++i) {
     origin_v[i] = number_or_fail(origin[i], yaml_path,
                                  std::string("origin ") + origin_names[i] + " must be a number");
+    if (std::abs(origin_v[i]) > kMaxOriginM) {
+      fail(yaml_path, line_of(origin), std::string("origin ") + origin_names[i] + " must be within +-" +
+                                           format_double(kMaxOriginM) + " (got " + shown(origin[i]) + ")");
+    }
   }
 
   bool negate = false;
@@ -395,8 +414,9 @@ void save_map_yaml(const std::string& yaml_path, const OccupancyGrid& map) {
 }
 
 OccupancyGrid load_movingai_map(const std::string& path, double resolution_m) {
+  std::error_code ec;
   std::ifstream in(path);
-  if (!in) fail(path, 0, "cannot open the MovingAI map file (check the path)");
+  if (!in || fs::is_directory(path, ec)) fail(path, 0, "cannot open the MovingAI map file (check the path)");
   int line_no = 0;
   std::string line;
   const auto next_line = [&]() -> bool {
@@ -441,6 +461,10 @@ OccupancyGrid load_movingai_map(const std::string& path, double resolution_m) {
     fail(path, line_no, "expected \"map\" before the rows (got " + in_quotes(line) + ")");
   }
 
+  if (!(resolution_m >= kMinResolutionM && resolution_m <= kMaxResolutionM)) {
+    fail(path, 0, "resolution must be a number of metres per cell in [" + format_double(kMinResolutionM) + ", " +
+                      format_double(kMaxResolutionM) + "] (got " + format_double(resolution_m) + ")");
+  }
   OccupancyGrid grid(width, height, resolution_m);
   for (int r = 0; r < height; ++r) {
     if (!next_line()) {
@@ -457,6 +481,13 @@ OccupancyGrid load_movingai_map(const std::string& path, double resolution_m) {
       const char c = line[static_cast<std::size_t>(x)];
       const bool passable = c == '.' || c == 'G' || c == 'S';
       grid.set(Cell{x, y}, passable ? CellState::Free : CellState::Occupied);
+    }
+  }
+  while (next_line()) {
+    if (!line.empty()) {
+      fail(path, line_no,
+           "a map row past the " + std::to_string(height) + " rows the header gives (height " + std::to_string(height) +
+               "): fix height, or remove the extra rows (got " + in_quotes(line.substr(0, 40)) + ")");
     }
   }
   return grid;

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "swarm/config/task_config.hpp"
+#include "swarm/planner/grid/deadline.hpp"
 #include "swarm/tasks/cover/cover_settings.hpp"
 #include "swarm/planner/explore/frontier.hpp"
 
@@ -68,8 +69,7 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
                                                     const char* why, const std::vector<int>* robots) {
   const comm::Topology& t = ctx.setup.topology;
   const auto t0 = std::chrono::steady_clock::now();
-  const auto deadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                 std::chrono::duration<double>(config_.darp_time_limit_s()));
+  const auto deadline = planner::deadline_after(config_.darp_time_limit_s(), t0);
   const auto stop = [deadline] { return std::chrono::steady_clock::now() > deadline; };
   const std::vector<int> groups = living_groups(ctx);
   std::fill(group_alive_.begin(), group_alive_.end(), false);

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "swarm/config/task_config.hpp"
+#include "swarm/planner/grid/deadline.hpp"
 #include "swarm/tasks/cover/cover_settings.hpp"
 
 namespace swarm::leader {
@@ -64,8 +65,7 @@ void CoverGroupTask::on_order(const task::Order& o, GroupContext& ctx) {
 
 void CoverGroupTask::divide(GroupContext& ctx, const char* why) {
   const auto t0 = std::chrono::steady_clock::now();
-  const auto deadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                 std::chrono::duration<double>(config_.darp_time_limit_s()));
+  const auto deadline = planner::deadline_after(config_.darp_time_limit_s(), t0);
   const std::vector<int> living = ctx.living();
   std::vector<Cell> at;
   for (int i : living) at.push_back(ctx.cell_of(i));

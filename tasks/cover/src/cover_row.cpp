@@ -60,7 +60,7 @@ TaskRow cover_row() {
   row.judge = [](const Phase&, const app::RoleSetup&, std::uint32_t) { return std::make_unique<CoverJudge>(); };
   row.check = [](const Phase& phase, const config::World&, const std::string& field, config::Problems& p) {
     p.at_least(field + ".darp_max_iterations", 1, phase.cover().darp_max_iterations());
-    p.positive(field + ".darp_time_limit_s", phase.cover().darp_time_limit_s());
+    p.time_limit(field + ".darp_time_limit_s", phase.cover().darp_time_limit_s());
     p.at_least(field + ".stall_ticks", 1, phase.cover().stall_ticks());
     p.at_least(field + ".traffic_window_steps", 1, phase.cover().traffic_window_steps());
   };

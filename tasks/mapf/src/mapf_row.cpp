@@ -1,5 +1,6 @@
 #include "swarm/tasks/mapf/mapf_row.hpp"
 
+#include "swarm/config/numbers.hpp"
 #include "swarm/config/task_config.hpp"
 #include "swarm/tasks/mapf/mapf_settings.hpp"
 #include "swarm/tasks/mapf/mapf_gcs.hpp"
@@ -45,8 +46,8 @@ class MapfJudge : public sim::PhaseJudge {
 
 void check_mapf_paths(const swarm::scenario::Mapf& m, const swarm::scenario::Scenario& scenario, const std::string& field,
                       config::Problems& p) {
-  if (m.w() < 1.0) p.add(field + ".w", "be at least 1", config::num(m.w()));
-  p.positive(field + ".time_limit_s", m.time_limit_s());
+  p.number(field + ".w", m.w(), config::NumberRule{1.0});
+  p.time_limit(field + ".time_limit_s", m.time_limit_s());
   if (m.execution() == swarm::scenario::MAPF_EXECUTE_TIMED && !config::delivery_ticks_bounded(scenario)) {
     // A lost and re-sent (or queued) route would set off after its start tick, behind the
     // others: robots meet and stay stuck (measured: 586 conflict events, 4 of 6 robots stuck).

@@ -35,6 +35,7 @@ inline record::RunMetrics run_metrics(const std::string& map, const std::string&
   m.planning_rounds = rounds;
   m.explored_fraction = explored;
   m.complete = complete;
+  m.ended = complete ? "complete" : "max_ticks (" + std::to_string(steps + 1) + ") reached";
   m.ticks_run = steps + 1;
   m.wall_seconds = 2.5;
   m.ticks_per_second = m.ticks_run / m.wall_seconds;

@@ -403,6 +403,11 @@ class LockstepClock : public Mailbox {
   // its Done messages come back (see losses()). Throws, naming the agents it waited for, after
   // stall_timeout().
   bool wait_done(std::uint32_t k);
+  // Ends the run early (the simulator's process was asked to stop, app/stop_signal.hpp): from
+  // any thread. wait_done returns at once, and wait_ready throws, so that the simulator publishes
+  // the stop and every agent reports what it has up to this tick.
+  void request_stop();
+  [[nodiscard]] bool stop_requested() const;
   std::vector<AgentLoss> losses() const;
   bool is_lost(AgentId a) const;
   // Ticks whose Done markers are held (at most the ones not finished yet: for tests).
@@ -437,6 +442,7 @@ class LockstepClock : public Mailbox {
   std::vector<std::uint32_t> counted_from_;
   std::vector<std::uint64_t> base_;
   bool started_ = false;  // the first clock is out
+  bool stop_requested_ = false;
 };
 
 }  // namespace swarm::comm

@@ -14,6 +14,8 @@
 
 namespace swarm::config {
 
+struct NumberRule;
+
 class Problems {
  public:
   explicit Problems(std::string source) : source_(std::move(source)) {}
@@ -21,18 +23,23 @@ class Problems {
   void add(const std::string& field, const std::string& expected, const std::string& got);
   void at_least(const std::string& field, std::uint64_t min, std::uint64_t v);
   void in_range(const std::string& field, std::uint64_t min, std::uint64_t max, std::uint64_t v);
+  // Numbers by the rules every input shares (numbers.hpp).
+  void number(const std::string& field, double v, const NumberRule& rule);
   void positive(const std::string& field, double v);
   void non_negative(const std::string& field, double v);
   void finite(const std::string& field, double v);
   void probability(const std::string& field, double v);
+  void time_limit(const std::string& field, double v);  // > 0 seconds; inf: no limit
 
   [[nodiscard]] bool empty() const { return lines_.empty(); }
+  [[nodiscard]] bool has(const std::string& field) const;  // a problem of this field is listed
   // Throws ConfigError with every line, one per line; nothing when there is no problem.
   void throw_if_any() const;
 
  private:
   std::string source_;
   std::vector<std::string> lines_;
+  std::vector<std::string> fields_;
 };
 
 // Shortest text that reads back as the same double ("0.2", "1e-09", "nan").

@@ -31,7 +31,7 @@
 
 namespace swarm::record {
 
-inline constexpr int kMetricsSchemaVersion = 5;  // 5: phases' ground truth verdicts; 4: longest_blocked_ticks; 3: leader hand-overs
+inline constexpr int kMetricsSchemaVersion = 6;  // 6: ended; 5: phases' ground truth verdicts; 4: longest_blocked_ticks; 3: leader hand-overs
 
 class MetricsError : public std::runtime_error {
  public:
@@ -162,6 +162,10 @@ struct RunMetrics {
   std::uint32_t planning_rounds = 0;
   double explored_fraction = 0;
   bool complete = false;
+  // Why the run ended, for a person: "complete", "given up: ...", "max_ticks (3000) reached", or
+  // how it was stopped early ("interrupted: ...", "timed out: ...", "process member-0-1 failed
+  // ...", which the launcher writes in, tools/launcher/run_end.hpp).
+  std::string ended;
   std::uint32_t ticks_run = 0;
   double wall_seconds = 0;
   double ticks_per_second = 0;

@@ -67,4 +67,13 @@ class RecordWriter {
 // missing, truncated (ends inside a frame, e.g. the run was killed) or corrupt.
 std::vector<Frame> read_record(const std::string& path);
 
+// The frames of a record up to its last whole one: a run stopped by a signal or a failed process
+// leaves a record that ends inside a frame. `cut` says where and why ("" when the record is
+// whole); a corrupt frame or a missing file still throws, as read_record does.
+struct RecordPrefix {
+  std::vector<Frame> frames;
+  std::string cut;
+};
+RecordPrefix read_record_prefix(const std::string& path);
+
 }  // namespace swarm::record

@@ -44,6 +44,13 @@ class MapFileError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Metres per cell a map may have: a millimetre to a kilometre. Past these a map's extent in
+// metres (cells x resolution) loses its precision or overflows to inf.
+inline constexpr double kMinResolutionM = 1e-3;
+inline constexpr double kMaxResolutionM = 1e3;
+// How far from (0, 0) a map's origin may lie, in metres.
+inline constexpr double kMaxOriginM = 1e9;
+
 // Reads a map_server YAML file and the image it names. Throws MapFileError.
 [[nodiscard]] OccupancyGrid load_map_yaml(const std::string& yaml_path);
 
@@ -54,7 +61,7 @@ class MapFileError : public std::runtime_error {
 void save_map_yaml(const std::string& yaml_path, const OccupancyGrid& map);
 
 // Reads a MovingAI `.map` file; each character is one cell of `resolution_m` metres, origin (0, 0).
-// Throws MapFileError.
+// Throws MapFileError (also for rows past `height`, and a resolution outside the range above).
 [[nodiscard]] OccupancyGrid load_movingai_map(const std::string& path, double resolution_m = 0.2);
 
 // Writes a MovingAI `.map` (`type octile`, height, width, `map`, rows from the top): Free cells

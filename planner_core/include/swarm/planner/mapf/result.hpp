@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "swarm/planner/grid/deadline.hpp"
 #include "swarm/planner/mapf/instance.hpp"
 
 namespace swarm::planner::mapf {
@@ -49,8 +50,7 @@ struct StopCondition {
 
   static StopCondition after(double seconds) {
     StopCondition s;
-    s.deadline = std::chrono::steady_clock::now() +
-                 std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
+    s.deadline = deadline_after(seconds);
     return s;
   }
   static StopCondition never() { return {}; }
