@@ -137,20 +137,20 @@ TEST(GcsNode, AnUnreadableSimulatorReportIsAnErrorNamingIt) {
   }
 }
 
-// A phase whose progress stops is given up, named stalled, long before max_ticks: the classic
-// collect drive on warehouse-5x8 after the other tasks gets two robots stuck head-on in an aisle
-// with 14 of 15 objects delivered (docs/traffic.md).
+// A phase whose progress stops is given up, named stalled, long before max_ticks: a member cut off
+// from tick 30 to the end holds cells of its share that no one else is given (it is not lost: its
+// robot answers the simulator), so coverage stops short of them.
 TEST(GcsNode, APhaseWhoseProgressStopsIsGivenUpAsStalled) {
   swarm::test::FakeSwarm s(swarm::test::setup_from_text(
-      "map: 'warehouse-5x8' max_ticks: 3000 stall_ticks: 300 mission { phase { explore {} } phase { cover { traffic: "
-      "false } } phase { mapf {} } phase { collect { traffic: false } } }"));
+      "map: 'small' groups: 2 robots_per_group: 2 max_ticks: 3000 stall_ticks: 200 faults { agent: 'member-0-1' "
+      "cut_from_tick: 30 cut_to_tick: 2999 } mission { phase { cover {} } }"));
   const auto m = s.run_to_end();
   EXPECT_FALSE(m["complete"].get<bool>());
-  const auto& collect = swarm::test::phase_named(m, "collect");
-  ASSERT_TRUE(collect.contains("gave_up")) << collect.dump(1);
-  EXPECT_EQ(collect["gave_up"].get<std::string>().rfind("stalled: delivered at 93.3 %", 0), 0u) << collect["gave_up"];
-  // Ended 300 ticks after the last delivery, not at max_ticks.
-  EXPECT_LT(m["ticks_run"].get<int>(), 1000);
+  const auto& cover = swarm::test::phase_named(m, "cover");
+  ASSERT_TRUE(cover.contains("gave_up")) << cover.dump(1);
+  EXPECT_EQ(cover["gave_up"].get<std::string>().rfind("stalled: covered at ", 0), 0u) << cover["gave_up"];
+  // Ended stall_ticks after the last progress, not at max_ticks.
+  EXPECT_LT(m["ticks_run"].get<int>(), 1500);
 }
 
 // Between two phases the robots must all be known to stand still before the next starts. A member

@@ -1,7 +1,7 @@
 // The collect task end to end on the FakeBus (the real GCS, leaders, members and simulator, in
 // one thread): every object reaches its type's destination, as the simulator judges from ground
-// truth, none is dropped elsewhere, and when a member is lost midway its objects (what it carried
-// included, put down beside it) are taken on by the others.
+// truth, none is dropped elsewhere, and when a robot is lost midway its objects (what it carried
+// included, put down beside it) are taken on by the others; all through the traffic layer.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -31,65 +31,14 @@ TEST(CollectTask, EveryObjectReachesItsDestination) {
             << p["motion"]["turn_eighths"] << " conflicts " << p["motion"]["vertex_conflict_events"] << "\n";
 }
 
-TEST(CollectTask, ALostMembersObjectsAreTakenOnByTheOthers) {
-  auto setup = swarm::test::setup_from_text(
-      "map: 'small' groups: 1 robots_per_group: 3 max_ticks: 4000 mission { phase { collect { scatter: 4 traffic: false } } }");
-  swarm::test::FakeSwarm s(setup);
-  // Lost at tick 25, carrying objects. (Lost at tick 40 it stops on the drop point of type 1, and
-  // no robot can deliver there any more: the phase does not end. A known limit, see README.)
-  const auto m = s.run_to_end([&](std::uint32_t tick) {
-    if (tick == 25) s.disconnect(setup.topology.robot(0, 2));
-  });
-  ASSERT_TRUE(m["complete"].get<bool>());
-  const auto& p = phase_named(m, "collect");
-  EXPECT_EQ(p["task"]["delivered"], p["task"]["objects"]);
-  EXPECT_EQ(p["task"]["wrong_drops"], 0);
-  EXPECT_GT(m["agents"]["leader-0"]["phases"][0]["numbers"]["reassigned"].get<int>(), 0);
-}
-
-// leader-1 is lost midway, carrying objects: member-1-1, its standby, takes the group over. The
-// GCS sends it the group's objects as leader-1 last reported them, the members tell it what they
-// hold, and it resumes: what the lost leader held lies where the simulator put it down, what was
-// delivered stays delivered. Every object reaches its destination, as the simulator judges, and
-// none is dropped elsewhere. With member<->leader and leader<->GCS delay too. (Lost at tick 45 the
-// dead robot narrows a passage for good, and two robots of group 0 that meet head-on there back
-// off in turn for ever: group 0 never delivers its last objects. The collect task's known limit
-// with lost robots as obstacles, README "Missions"; not the take-over's.)
-TEST(CollectTask, ALostLeadersGroupIsResumedByItsStandbyAndEveryObjectIsDelivered) {
-  for (const std::string links : {"", "links { member_leader { delay_ticks: 2 jitter_ticks: 1 } leader_gcs { delay_ticks: 1 } } "}) {
-    for (const std::uint32_t at : {20u, 30u}) {
-      SCOPED_TRACE(links + "lost at " + std::to_string(at));
-      auto setup = swarm::test::setup_from_text("map: 'small' groups: 2 robots_per_group: 3 max_ticks: 4000 " + links +
-                                                "mission { phase { collect { traffic: false } } }");
-      swarm::test::FakeSwarm s(setup);
-      const auto m = s.run_to_end([&](std::uint32_t tick) {
-        if (tick == at) s.disconnect(setup.topology.leader(1));
-      });
-      const auto& p = phase_named(m, "collect");
-      ASSERT_TRUE(m["complete"].get<bool>()) << p["task"];
-      EXPECT_EQ(p["task"]["delivered"], p["task"]["objects"]);
-      EXPECT_EQ(p["task"]["wrong_drops"], 0);
-      EXPECT_EQ(p["task"]["resumes"], 1);
-      EXPECT_EQ(p["task"]["reported_delivered"], p["task"]["objects"]);
-      const auto& h = m["faults"]["leader_handovers"];
-      ASSERT_EQ(h.size(), 1u) << h;
-      EXPECT_EQ(h[0]["to"], "member-1-1");
-      EXPECT_EQ(m["agents"]["member-1-1"]["phases"][0]["numbers"]["resumes"], 1);
-    }
-  }
-}
-
 // A member lost in the very tick it picks up an object, after exploration (3 x 3 robots on
-// small; both phases in their classic drives, so that the traffic layer's timing does not move the
-// test into the classic collect's known head-on gridlock): its last report does not say so, but its true cell in the clock shows how far along its
-// route it got, so the leader knows it carried the object, which the simulator put down beside it
+// small): its last report does not say so, but its true cell in the clock shows how far along its
+// route it got, so the GCS knows it carried the object, which the simulator put down beside it
 // with the other it held. Both lie on one cell, and a robot picks up everything on the cell it
-// picks at: they go to one robot. Before, one of them was looked for where it had been picked up,
-// another robot drove to an empty cell, and the group never finished (15 of 15 delivered as the
-// simulator judged, 14 as the GCS knew, run to max_ticks).
+// picks at: they go to one robot.
 TEST(CollectTask, AMemberLostAsItPicksUpStillHasItsLoadCollected) {
   auto setup = swarm::test::setup_from_text(
-      "map: 'small' max_ticks: 1500 mission { phase { explore { traffic: false } } phase { collect { traffic: false } } }");
+      "map: 'small' max_ticks: 1500 mission { phase { explore {} } phase { collect {} } }");
   const comm::AgentId robot = setup.topology.robot(0, 2);
   // The tick it first picks up (runs are deterministic): found by a run without the loss, so the
   // test stays on that moment whatever exploration takes before.
@@ -109,10 +58,10 @@ TEST(CollectTask, AMemberLostAsItPicksUpStillHasItsLoadCollected) {
   EXPECT_EQ(p["task"]["delivered"], p["task"]["objects"]);
   EXPECT_EQ(p["task"]["reported_delivered"], p["task"]["objects"]);
   EXPECT_EQ(p["task"]["wrong_drops"], 0);
-  EXPECT_EQ(m["agents"]["leader-0"]["phases"][1]["numbers"]["delivered_known"], 5);
+  swarm::test::expect_no_conflict(p);
 }
 
-// ---- Through the traffic layer (collect.traffic, docs/traffic.md) -------------------------------
+// ---- Through the traffic layer (docs/traffic.md), in detail -------------------------------------
 
 // The phase as the simulator judged it: every object delivered, none dropped elsewhere, no
 // conflict, and the GCS knows each delivered (its belief and the ground truth agree).

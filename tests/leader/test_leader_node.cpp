@@ -206,15 +206,15 @@ TEST(LeaderNode, AStandbyTakesOverALostLeaderAndTheMissionCompletes) {
 }
 
 // Bytes that do not decode: a global map of the wrong size in a RoundStart (decoded in the
-// handler) and a cover order whose cell set is garbage (decoded by the task): each is logged and
-// dropped, and the leader goes on with its work; a good order after them is followed.
+// handler) and an order whose cell set is garbage (decoded as it arrives): each is logged and
+// dropped, and the leader goes on with its work; a good window after them is driven.
 TEST(LeaderNode, DropsMalformedMessagesAndGoesOn) {
   const planner::OccupancyGrid truth = hall();
   swarm::scenario::Scenario sc;
   sc.set_groups(1);
   sc.set_robots_per_group(2);
   sc.set_max_ticks(40);
-  sc.mutable_mission()->add_phase()->mutable_cover()->set_traffic(false);  // a leader that divides
+  sc.mutable_mission()->add_phase()->mutable_cover();  // a leader that drives the layer's windows
   auto setup = swarm::test::setup_for(truth, {3, 3}, sc);
   const comm::Topology& t = setup.topology;
   swarm::test::FakeSwarm s(setup, {t.gcs()});
@@ -243,9 +243,16 @@ TEST(LeaderNode, DropsMalformedMessagesAndGoesOn) {
       cover_order(1, {0xff, 0xff, 0xff});
     }
     if (c.tick() == 3) {
-      std::vector<std::uint8_t> all(truth.size(), 0);
-      for (std::size_t i = 0; i < all.size(); ++i) all[i] = truth.is_free(truth.cell_of(static_cast<int>(i)));
-      cover_order(2, app::encode_mask(all, truth.width(), truth.height()));
+      // A good window: one step for the member, from where it stands to a free neighbour.
+      const planner::Cell from = setup.world.robot_cells[static_cast<std::size_t>(t.robot(0, 1))];
+      planner::Cell to{from.x + 1, from.y};
+      if (!truth.is_free(to)) to = {from.x - 1, from.y};
+      msgs::TaskOrder o;
+      o.seq(2);
+      o.route_robots({static_cast<std::uint16_t>(t.robot(0, 1))});
+      o.routes_xy({{static_cast<std::int16_t>(from.x), static_cast<std::int16_t>(from.y), static_cast<std::int16_t>(to.x),
+                    static_cast<std::int16_t>(to.y)}});
+      order.send(o);
     }
   });
   comm::FakeBus spy(s.network());

@@ -60,6 +60,25 @@ TEST(Frontier, ReachableMaskFollowsFreeCellsAndSkipsNonFreeSeeds) {
   EXPECT_EQ(std::count(both.begin(), both.end(), 1), 6 + 5);
 }
 
+TEST(Frontier, StepDistancesCountMovesFromTheNearestSeed) {
+  const OccupancyGrid g = grid_from({
+      ".....",  // y = 2
+      ".###.",  // y = 1
+      "....?",  // y = 0
+  });
+  const std::vector<int> d = step_distances(g, {{0, 0}, {4, 2}}, MotionModel::four());
+  const auto at = [&](int x, int y) { return d[static_cast<std::size_t>(g.index({x, y}))]; };
+  EXPECT_EQ(at(0, 0), 0);
+  EXPECT_EQ(at(3, 0), 3);   // along the bottom from (0, 0)
+  EXPECT_EQ(at(4, 1), 1);   // down from (4, 2)
+  EXPECT_EQ(at(2, 2), 2);   // along the top from (4, 2)
+  EXPECT_EQ(at(1, 1), -1);  // a wall
+  EXPECT_EQ(at(4, 0), -1);  // unknown
+  // The mask is the distances' reach.
+  const std::vector<std::uint8_t> mask = reachable_mask(g, {{0, 0}}, MotionModel::four());
+  for (std::size_t i = 0; i < mask.size(); ++i) EXPECT_EQ(mask[i] == 1, step_distances(g, {{0, 0}}, MotionModel::four())[i] >= 0);
+}
+
 // Regression guard for the motion model: a frontier behind two diagonally touching walls is
 // visible but not drivable.
 TEST(Frontier, ReachableFrontiersExcludeOneReachableOnlyByCuttingACorner) {

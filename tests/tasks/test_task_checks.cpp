@@ -5,6 +5,7 @@
 #include <string>
 
 #include "swarm/config/scenario.hpp"
+#include "swarm/tasks/mapf/mapf_settings.hpp"
 #include "swarm/tasks/registry.hpp"
 #include "swarm_test/ascii_grid.hpp"
 #include "swarm_test/fake_swarm.hpp"
@@ -30,8 +31,12 @@ std::string check_error(const std::string& text) {
 }
 
 TEST(TaskChecks, EachTaskChecksItsOwnSettings) {
-  EXPECT_EQ(check_error("mission { phase { cover { stall_ticks: 0 } } }"),
-            "t.pbtxt: field mission.phase[0].cover.stall_ticks: must be >= 1 (got 0)");
+  EXPECT_EQ(check_error("mission { phase { cover { traffic: false } } }"),
+            std::string("t.pbtxt: field mission.phase[0].cover.traffic: must ") + swarm::tasks::kOnlyTheLayer +
+                " (got false)");
+  EXPECT_EQ(check_error("mission { phase { collect { traffic: false } } }"),
+            std::string("t.pbtxt: field mission.phase[0].collect.traffic: must ") + swarm::tasks::kOnlyTheLayer +
+                " (got false)");
   EXPECT_EQ(check_error("mission { phase { cover { traffic: true traffic_window_steps: 0 } } }"),
             "t.pbtxt: field mission.phase[0].cover.traffic_window_steps: must be >= 1 (got 0)");
   EXPECT_EQ(check_error("mission { phase { explore {} } phase { mapf { w: 0.5 time_limit_s: 0 } } }"),

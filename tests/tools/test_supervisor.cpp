@@ -124,6 +124,24 @@ TEST(Supervisor, OneFailsTheOthersAreStoppedAndItIsNamed) {
   EXPECT_TRUE(gone_soon(grandchild));
 }
 
+// The child that ends the run hears of the stop first and alone: the others finish what the end
+// of a run asks of them (reports, metrics) before anyone else is stopped.
+TEST(Supervisor, TheRunsEnderIsAskedFirstAndTheOthersFinish) {
+  TempDir dir;
+  ProcessSpec ender = sh(dir, "sim", "trap 'echo ending; exit 0' TERM; sleep 30 & wait");
+  ender.ends_run = true;
+  const SupervisorResult r = run_processes(
+      {ender, sh(dir, "gcs", "trap 'echo stopped early; exit 1' TERM; sleep 1.5; echo wrote its metrics"),
+       sh(dir, "member-0-1", "sleep 0.3; exit 3")},
+      30s);
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.failed_name, "member-0-1");
+  EXPECT_NE(slurp(dir.file("sim.log")).find("ending"), std::string::npos);
+  const std::string gcs = slurp(dir.file("gcs.log"));
+  EXPECT_NE(gcs.find("wrote its metrics"), std::string::npos) << gcs;
+  EXPECT_EQ(gcs.find("stopped early"), std::string::npos) << gcs;
+}
+
 TEST(Supervisor, DeathBySignalIsAFailure) {
   TempDir dir;
   const SupervisorResult r =

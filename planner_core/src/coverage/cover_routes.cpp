@@ -103,11 +103,9 @@ std::vector<std::uint8_t> in_large_pieces(const OccupancyGrid& map, const std::v
   return out;
 }
 
-}  // namespace
-
-CoverRoutes divide_and_route(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells,
-                             const std::vector<Cell>& robots, const std::vector<double>& weights,
-                             const CoverRoutesConfig& config, const std::function<bool()>& stop) {
+CoverRoutes divide_once(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells,
+                        const std::vector<Cell>& robots, const std::vector<double>& weights,
+                        const CoverRoutesConfig& config, const std::function<bool()>& stop) {
   const auto t0 = Clock::now();
   CoverRoutes out;
   const std::size_t n = robots.size();
@@ -201,6 +199,57 @@ CoverRoutes divide_and_route(const OccupancyGrid& map, const std::vector<std::ui
   }
   out.seconds_routes = since(t1);
   return out;
+}
+
+std::size_t longest_route(const CoverRoutes& r) {
+  std::size_t most = 0;
+  for (const std::vector<Cell>& route : r.routes) most = std::max(most, route.size());
+  return most;
+}
+
+// Cells of the set the routes stand on, together.
+std::size_t cells_covered(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells, const CoverRoutes& r) {
+  std::vector<std::uint8_t> seen(map.size(), 0);
+  std::size_t n = 0;
+  for (const std::vector<Cell>& route : r.routes) {
+    for (const Cell c : route) {
+      const auto i = static_cast<std::size_t>(map.index(c));
+      if (cells[i] && !seen[i]) seen[i] = 1, ++n;
+    }
+  }
+  return n;
+}
+
+}  // namespace
+
+CoverRoutes divide_and_route(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells,
+                             const std::vector<Cell>& robots, const std::vector<double>& weights,
+                             const CoverRoutesConfig& config, const std::function<bool()>& stop) {
+  CoverRoutes best = divide_once(map, cells, robots, weights, config, stop);
+  if (!config.routes || best.darp.status == DarpStatus::BadInput) return best;
+  double division = best.seconds_division, routes = best.seconds_routes;
+  int tried = 1;
+  for (int k = 1; k < config.candidates && !(stop && stop()); ++k) {
+    CoverRoutesConfig other = config;
+    // Other starts: K-Means once, then the configured start with other random factors.
+    if (k == 1 && config.darp.init != DarpInit::KMeans) other.darp.init = DarpInit::KMeans;
+    other.darp.seed = config.darp.seed + 0x9e3779b97f4a7c15ULL * static_cast<std::uint64_t>(k);
+    CoverRoutes r = divide_once(map, cells, robots, weights, other, stop);
+    ++tried;
+    division += r.seconds_division;
+    routes += r.seconds_routes;
+    // Only a division as good as the first (converged, or as balanced) may replace it.
+    const bool as_good = (r.darp.status == DarpStatus::Converged || best.darp.status != DarpStatus::Converged) &&
+                         cells_covered(map, cells, r) >= cells_covered(map, cells, best);
+    if (as_good && longest_route(r) < longest_route(best)) {
+      best = std::move(r);
+      best.chosen = k;
+    }
+  }
+  best.candidates_tried = tried;
+  best.seconds_division = division;
+  best.seconds_routes = routes;
+  return best;
 }
 
 std::vector<std::vector<Cell>> cover_leftovers(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells,

@@ -24,27 +24,36 @@ std::vector<Cell> find_frontiers(const OccupancyGrid& map) {
   return out;
 }
 
-std::vector<std::uint8_t> reachable_mask(const OccupancyGrid& map, const std::vector<Cell>& from,
-                                         const MotionModel& motion) {
-  std::vector<std::uint8_t> mask(map.size(), 0);
-  // The mask itself marks "queued"; a plain vector used as a FIFO keeps the order deterministic.
+std::vector<int> step_distances(const OccupancyGrid& map, const std::vector<Cell>& from, const MotionModel& motion) {
+  std::vector<int> dist(map.size(), -1);
+  // Breadth first from every seed at once; a plain vector used as a FIFO keeps the order
+  // deterministic.
   std::vector<int> queue;
   queue.reserve(map.size());
   for (const Cell& s : from) {
     if (!map.is_free(s)) continue;
     const int i = map.index(s);
-    if (mask[i]) continue;
-    mask[i] = 1;
+    if (dist[i] >= 0) continue;
+    dist[i] = 0;
     queue.push_back(i);
   }
   for (std::size_t head = 0; head < queue.size(); ++head) {
+    const int d = dist[queue[head]] + 1;
     motion.for_each_neighbour(map, map.cell_of(queue[head]), [&](Cell n, double) {
       const int ni = map.index(n);
-      if (mask[ni]) return;
-      mask[ni] = 1;
+      if (dist[ni] >= 0) return;
+      dist[ni] = d;
       queue.push_back(ni);
     });
   }
+  return dist;
+}
+
+std::vector<std::uint8_t> reachable_mask(const OccupancyGrid& map, const std::vector<Cell>& from,
+                                         const MotionModel& motion) {
+  const std::vector<int> dist = step_distances(map, from, motion);
+  std::vector<std::uint8_t> mask(dist.size(), 0);
+  for (std::size_t i = 0; i < dist.size(); ++i) mask[i] = dist[i] >= 0 ? 1 : 0;
   return mask;
 }
 

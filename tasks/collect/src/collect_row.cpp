@@ -7,7 +7,6 @@
 
 #include "swarm/config/task_config.hpp"
 #include "swarm/tasks/collect/collect_gcs.hpp"
-#include "swarm/tasks/collect/collect_leader.hpp"
 #include "swarm/tasks/collect/collect_world.hpp"
 #include "swarm/tasks/mapf/mapf_leader.hpp"
 #include "swarm/tasks/mapf/mapf_settings.hpp"
@@ -64,11 +63,9 @@ TaskRow collect_row() {
     return std::make_unique<gcs::CollectGcsTask>(phase.collect(), traffic_driving(), index,
                                                  config::map_given(setup.world.scenario, index));
   };
-  row.leader = [](const Phase& phase, const app::RoleSetup& setup, int group,
-                  std::uint32_t index) -> std::unique_ptr<leader::GroupTask> {
-    // Through the traffic layer the leaders drive windows as they drive mapf plans.
-    if (phase.collect().traffic()) return std::make_unique<leader::MapfGroupTask>(traffic_driving(), group);
-    return std::make_unique<leader::CollectGroupTask>(phase.collect(), setup, group, index);
+  row.leader = [](const Phase&, const app::RoleSetup&, int group, std::uint32_t) -> std::unique_ptr<leader::GroupTask> {
+    // The leaders drive the traffic layer's windows as they drive mapf plans.
+    return std::make_unique<leader::MapfGroupTask>(traffic_driving(), group);
   };
   row.judge = [](const Phase&, const app::RoleSetup& setup, std::uint32_t index) {
     return std::make_unique<CollectJudge>(std::any_cast<const CollectWorld&>(setup.world.phase_data.at(index)));
@@ -80,6 +77,7 @@ TaskRow collect_row() {
     const auto& c = phase.collect();
     p.at_least(field + ".types", 1, c.types());
     p.at_least(field + ".traffic_window_steps", 1, c.traffic_window_steps());
+    if (!c.traffic()) p.add(field + ".traffic", kOnlyTheLayer, "false");
     for (int o = 0; o < c.objects_size(); ++o) {
       if (c.objects(o).type() >= c.types()) {
         p.add(field + ".objects[" + std::to_string(o) + "].type", "be below collect.types (" + std::to_string(c.types()) + ")",

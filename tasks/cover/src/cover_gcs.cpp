@@ -12,21 +12,14 @@ namespace swarm::gcs {
 
 using planner::Cell;
 
-namespace {
-// Re-dividing is not repeated faster than this (ticks): orders need time to travel and act.
-constexpr std::uint32_t kRedivideCooldown = 10;
-}  // namespace
-
 CoverGcsTask::CoverGcsTask(const swarm::scenario::Cover& config, const swarm::scenario::Mapf& paths,
                            std::uint32_t phase, bool map_given)
     : config_(config), phase_(phase), map_given_(map_given) {
-  if (config_.traffic()) {
-    MapfGcsTask::Lifelong drive;
-    drive.routes = [this](const GcsContext& ctx, const planner::OccupancyGrid&, const std::vector<int>& robots,
-                          const char* why) { return MapfGcsTask::passing(divide(ctx, tracker_.uncovered(), why, &robots)); };
-    drive.window = static_cast<int>(config_.traffic_window_steps());
-    drive_ = std::make_unique<MapfGcsTask>(paths, phase, map_given, std::move(drive));
-  }
+  MapfGcsTask::Lifelong drive;
+  drive.routes = [this](const GcsContext& ctx, const planner::OccupancyGrid&, const std::vector<int>& robots,
+                        const char* why) { return MapfGcsTask::passing(divide(ctx, tracker_.uncovered(), why, robots)); };
+  drive.window = static_cast<int>(config_.traffic_window_steps());
+  drive_ = std::make_unique<MapfGcsTask>(paths, phase, map_given, std::move(drive));
 }
 
 std::vector<int> CoverGcsTask::living_groups(const GcsContext& ctx) const {
@@ -49,33 +42,22 @@ void CoverGcsTask::start(GcsContext& ctx) {
   tracker_ = planner::CoverageTracker(known_, planner::reachable_mask(known_, robots, planner::MotionModel::four()),
                                       static_cast<int>(ctx.setup.world.scenario.footprint_radius()));
   for (int r = 0; r < t.robots(); ++r) tracker_.visit(ctx.cell_of(r));
-  group_of_cell_.assign(known_.size(), -1);
-  group_alive_.assign(static_cast<std::size_t>(t.groups()), false);
-  group_done_.assign(static_cast<std::size_t>(t.groups()), false);
   started_ = true;
-  if (drive_) {
-    drive_->start(ctx);
-  } else {
-    divide(ctx, tracker_.uncovered(), "start");
-  }
+  drive_->start(ctx);
 }
 
 std::string CoverGcsTask::given_up() const {
   if (nothing_to_drive_) return "cells left uncovered that no robot's route reaches";
-  return drive_ ? drive_->given_up() : std::string();
+  return drive_->given_up();
 }
 
 std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
-                                                    const char* why, const std::vector<int>* robots) {
+                                                    const char* why, const std::vector<int>& robots) {
   const comm::Topology& t = ctx.setup.topology;
   const auto t0 = std::chrono::steady_clock::now();
   const auto deadline = planner::deadline_after(config_.darp_time_limit_s(), t0);
   const auto stop = [deadline] { return std::chrono::steady_clock::now() > deadline; };
   const std::vector<int> groups = living_groups(ctx);
-  std::fill(group_alive_.begin(), group_alive_.end(), false);
-  for (int g : groups) group_alive_[static_cast<std::size_t>(g)] = true;
-  std::fill(group_done_.begin(), group_done_.end(), false);
-  last_division_tick_ = ctx.tick();
   ++seq_;
 
   // The agents DARP divides among: the living leaders, portions by living group size
@@ -83,23 +65,15 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
   std::vector<int> robot_ids;
   std::vector<double> weights;
   const bool flat = !config_.hierarchical();
-  if (robots != nullptr && flat) {
-    robot_ids = *robots;
+  if (flat) {
+    robot_ids = robots;
     weights.assign(robot_ids.size(), 1.0);
-  }
-  for (int g : robots != nullptr && flat ? std::vector<int>{} : groups) {
-    int living = 0;
-    for (int i = 0; i < t.robots_per_group(); ++i) living += ctx.alive(t.robot(g, i)) ? 1 : 0;
-    if (config_.hierarchical()) {
+  } else {
+    for (int g : groups) {
+      int living = 0;
+      for (int i = 0; i < t.robots_per_group(); ++i) living += ctx.alive(t.robot(g, i)) ? 1 : 0;
       robot_ids.push_back(ctx.leader_of(g));
       weights.push_back(living);
-    } else {
-      for (int i = 0; i < t.robots_per_group(); ++i) {
-        if (ctx.alive(t.robot(g, i))) {
-          robot_ids.push_back(t.robot(g, i));
-          weights.push_back(1.0);
-        }
-      }
     }
   }
   std::vector<Cell> at;
@@ -111,7 +85,6 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
   // Each group's share: the cells DARP gave its agents.
   std::vector<std::vector<std::uint8_t>> share(static_cast<std::size_t>(t.groups()),
                                                std::vector<std::uint8_t>(known_.size(), 0));
-  std::fill(group_of_cell_.begin(), group_of_cell_.end(), -1);
   std::vector<int> agent_of_robot(static_cast<std::size_t>(t.robots()), -1);
   {
     int k = 0;
@@ -127,14 +100,13 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
       if (agent_of_robot[static_cast<std::size_t>(robot_ids[a])] != k) continue;
       const int g = t.group_of(static_cast<comm::AgentId>(robot_ids[a]));
       share[static_cast<std::size_t>(g)][i] = 1;
-      group_of_cell_[i] = g;
     }
   }
   std::vector<std::vector<Cell>> routes;
   nlohmann::json within_groups = nlohmann::json::array();
-  if (robots != nullptr) {
+  {
     // Every robot's route: from the division itself (flat), or from dividing each group's share
-    // among its robots as its leader would (hierarchical).
+    // among its robots (hierarchical).
     routes.resize(static_cast<std::size_t>(t.robots()));
     std::size_t goals = 0;
     const auto take = [&](int robot, const std::vector<Cell>& route, int region_cells) {
@@ -148,7 +120,7 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
       for (const int g : groups) {
         std::vector<int> members;
         std::vector<Cell> member_at;
-        for (const int r : *robots) {
+        for (const int r : robots) {
           if (t.group_of(static_cast<comm::AgentId>(r)) != g) continue;
           members.push_back(r);
           member_at.push_back(ctx.cell_of(r));
@@ -167,25 +139,6 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
       }
     }
     nothing_to_drive_ = goals == 0 && !tracker_.complete();
-  }
-  for (int g : robots != nullptr ? std::vector<int>{} : groups) {
-    task::Order o;
-    o.group = static_cast<std::uint16_t>(g);
-    o.seq = seq_;
-    o.known_map = known_;
-    o.cells = share[static_cast<std::size_t>(g)];
-    if (flat) {
-      for (std::size_t a = 0; a < robot_ids.size(); ++a) {
-        if (t.group_of(static_cast<comm::AgentId>(robot_ids[a])) != g) continue;
-        o.routes.push_back({robot_ids[a], plan.routes[a]});
-      }
-    }
-    ctx.out.order(o);
-    for (std::size_t a = 0; a < robot_ids.size() && flat; ++a) {
-      if (t.group_of(static_cast<comm::AgentId>(robot_ids[a])) != g) continue;
-      ctx.record.append(route_frame(ctx.tick(), phase_, robot_ids[a], plan.routes[a],
-                                    static_cast<std::uint32_t>(plan.region_cells[a])));
-    }
   }
   nlohmann::json cells_per_group = nlohmann::json::array();
   for (int g = 0; g < t.groups(); ++g) {
@@ -206,54 +159,23 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
   return routes;
 }
 
-void CoverGcsTask::on_report(const task::Report& r, GcsContext& ctx) {
-  if (drive_) {
-    drive_->on_report(r, ctx);
-    return;
-  }
-  if (r.group < group_done_.size() && r.state == task::GroupState::Done) group_done_[r.group] = true;
-  // Cells a leader knows covered (after a restart of the GCS, which missed the clocks meanwhile).
-  for (const planner::Cell c : r.cells) tracker_.mark(c);
-}
+void CoverGcsTask::on_report(const task::Report& r, GcsContext& ctx) { drive_->on_report(r, ctx); }
 
 void CoverGcsTask::step(GcsContext& ctx) {
   const comm::Topology& t = ctx.setup.topology;
   for (int r = 0; r < t.robots(); ++r) {
     if (ctx.alive(r)) tracker_.visit(ctx.cell_of(r));
   }
-  if (drive_) {
-    if (tracker_.complete()) return;
-    drive_->step(ctx);
-    // Every route driven and cells still uncovered (a footprint that missed, a goal skipped):
-    // those are divided again.
-    if (drive_->complete() && !nothing_to_drive_) drive_->restart(ctx, "every route done, cells left");
-    return;
-  }
-  if (tracker_.complete() || ctx.tick() < last_division_tick_ + kRedivideCooldown) return;
-  // A group that held uncovered cells and lost its leader: what is left goes to the others.
-  const std::vector<std::uint8_t> left = tracker_.uncovered();
-  bool orphaned = false, all_done = true;
-  for (int g = 0; g < t.groups(); ++g) {
-    if (!group_alive_[static_cast<std::size_t>(g)]) continue;
-    if (!ctx.alive(ctx.leader_of(g))) {
-      for (std::size_t i = 0; i < left.size() && !orphaned; ++i) orphaned = left[i] && group_of_cell_[i] == g;
-    } else {
-      all_done = all_done && group_done_[static_cast<std::size_t>(g)];
-    }
-  }
-  if (orphaned) {
-    divide(ctx, left, "a group lost its leader");
-  } else if (all_done && !living_groups(ctx).empty()) {
-    divide(ctx, left, "every group done, cells left");
-  }
+  if (tracker_.complete()) return;
+  drive_->step(ctx);
+  // Every route driven and cells still uncovered (a footprint that missed, a goal skipped):
+  // those are divided again.
+  if (drive_->complete() && !nothing_to_drive_) drive_->restart(ctx, "every route done, cells left");
 }
 
 ProgressLine CoverGcsTask::progress(const GcsContext&) const {
-  int done = 0;
-  for (bool d : group_done_) done += d ? 1 : 0;
   char detail[96];
-  std::snprintf(detail, sizeof detail, "cells %d/%d  groups done %d", tracker_.covered_cells(), tracker_.target_cells(),
-                done);
+  std::snprintf(detail, sizeof detail, "cells %d/%d", tracker_.covered_cells(), tracker_.target_cells());
   return {"covered", tracker_.fraction(), detail};
 }
 
@@ -264,7 +186,7 @@ nlohmann::json CoverGcsTask::numbers() const {
                       {"target_cells_known", tracker_.target_cells()},
                       {"covered_cells_known", tracker_.covered_cells()},
                       {"divisions", divisions_}};
-  if (drive_) j["traffic"] = drive_->numbers();
+  j["traffic"] = drive_->numbers();
   return j;
 }
 

@@ -1,11 +1,12 @@
 #include "swarm/tasks/cover/cover_row.hpp"
 
+#include <algorithm>
 #include <utility>
 #include <vector>
 
 #include "swarm/config/task_config.hpp"
+#include "swarm/planner/explore/frontier.hpp"
 #include "swarm/tasks/cover/cover_gcs.hpp"
-#include "swarm/tasks/cover/cover_leader.hpp"
 #include "swarm/tasks/mapf/mapf_leader.hpp"
 #include "swarm/tasks/mapf/mapf_settings.hpp"
 
@@ -13,12 +14,21 @@ namespace swarm::tasks {
 
 namespace {
 // The simulator's judge: the share of the coverage target the robots' footprints swept, when it
-// was all swept, and the curve of it (every 5 ticks).
+// was all swept, and the curve of it (every 5 ticks). Also a second lower bound on the makespan
+// besides ⌈cells / robots⌉: some robot must reach the target cell farthest from every robot, so
+// no division and no route finishes before that many moves (where robots cover only the cell they
+// stand on; a wider footprint reaches a cell from elsewhere, and the bound is then not given).
 class CoverJudge : public sim::PhaseJudge {
  public:
   void start(sim::World& world, std::uint32_t tick) override {
     world.reset_coverage();
     curve_.emplace_back(tick, world.covered_fraction());
+    reach_bound_.reset();
+    if (world.footprint_radius() == 0) {
+      int farthest = 0;
+      for (int d : planner::step_distances(world.truth(), world.robots(), world.motion())) farthest = std::max(farthest, d);
+      reach_bound_ = farthest;
+    }
   }
   void after_tick(const sim::World& world, std::uint32_t k) override {
     if (!full_tick_ && world.covered_cells() >= world.coverage_target_cells()) full_tick_ = k;
@@ -33,12 +43,14 @@ class CoverJudge : public sim::PhaseJudge {
             {"covered_cells", world.covered_cells()},
             {"target_cells", world.coverage_target_cells()},
             {"makespan_ticks", full_tick_ ? nlohmann::json(*full_tick_ - facts.start_tick) : nlohmann::json(nullptr)},
+            {"reach_bound_moves", reach_bound_ ? nlohmann::json(*reach_bound_) : nlohmann::json(nullptr)},
             {"coverage_curve", curve}};
   }
 
  private:
   std::vector<std::pair<std::uint32_t, double>> curve_;  // (tick, covered fraction)
   std::optional<std::uint32_t> full_tick_;                // every target cell covered
+  std::optional<int> reach_bound_;  // moves to the target cell farthest from every robot
 };
 }  // namespace
 
@@ -51,18 +63,17 @@ TaskRow cover_row() {
     return std::make_unique<gcs::CoverGcsTask>(phase.cover(), traffic_driving(), index,
                                                config::map_given(setup.world.scenario, index));
   };
-  row.leader = [](const Phase& phase, const app::RoleSetup& setup, int group,
-                  std::uint32_t) -> std::unique_ptr<leader::GroupTask> {
-    // Through the traffic layer the leaders drive windows as they drive mapf plans.
-    if (phase.cover().traffic()) return std::make_unique<leader::MapfGroupTask>(traffic_driving(), group);
-    return std::make_unique<leader::CoverGroupTask>(phase.cover(), setup, group);
+  row.leader = [](const Phase&, const app::RoleSetup&, int group, std::uint32_t) -> std::unique_ptr<leader::GroupTask> {
+    // The leaders drive the traffic layer's windows as they drive mapf plans.
+    return std::make_unique<leader::MapfGroupTask>(traffic_driving(), group);
   };
   row.judge = [](const Phase&, const app::RoleSetup&, std::uint32_t) { return std::make_unique<CoverJudge>(); };
   row.check = [](const Phase& phase, const config::World&, const std::string& field, config::Problems& p) {
     p.at_least(field + ".darp_max_iterations", 1, phase.cover().darp_max_iterations());
     p.time_limit(field + ".darp_time_limit_s", phase.cover().darp_time_limit_s());
-    p.at_least(field + ".stall_ticks", 1, phase.cover().stall_ticks());
     p.at_least(field + ".traffic_window_steps", 1, phase.cover().traffic_window_steps());
+    p.in_range(field + ".route_candidates", 1, 16, phase.cover().route_candidates());
+    if (!phase.cover().traffic()) p.add(field + ".traffic", kOnlyTheLayer, "false");
   };
   return row;
 }

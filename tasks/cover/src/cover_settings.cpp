@@ -1,5 +1,6 @@
 #include "swarm/tasks/cover/cover_settings.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "swarm/planner/grid/rng.hpp"
@@ -19,6 +20,7 @@ planner::CoverRoutesConfig cover_routes_config(const swarm::scenario::Cover& c, 
       c.darp_distance() == swarm::scenario::DARP_EUCLIDEAN ? planner::DarpDistance::Euclidean : planner::DarpDistance::Geodesic;
   out.darp.max_iterations = static_cast<int>(c.darp_max_iterations());
   out.darp.seed = planner::mix_seed(seed, salt);
+  out.candidates = static_cast<int>(std::max<std::uint32_t>(1, c.route_candidates()));
   switch (c.order()) {
     case swarm::scenario::ORDER_PLOW: out.order = planner::CoverOrder::Plow; break;
     case swarm::scenario::ORDER_GROUP_K: out.order = planner::CoverOrder::GroupK; break;
@@ -32,6 +34,8 @@ nlohmann::json division_json(const planner::CoverRoutes& plan) {
   nlohmann::json j = {{"darp_status", planner::to_string(d.status)},
                       {"finished_by", d.finished_by},
                       {"darp_iterations", d.iterations},
+                      {"candidates_tried", plan.candidates_tried},
+                      {"chosen", plan.chosen},
                       {"repair_moves", d.repair_moves},
                       {"darp_seconds", plan.seconds_division},
                       {"route_seconds", plan.seconds_routes},

@@ -122,6 +122,7 @@ class World {
   void reset_coverage();
   double covered_fraction() const { return coverage_.fraction(); }
   int coverage_target_cells() const { return coverage_.target_cells(); }
+  int footprint_radius() const { return footprint_radius_; }
   int covered_cells() const { return coverage_.covered_cells(); }
   bool is_covered(planner::Cell c) const { return coverage_.is_covered(c); }
 

@@ -39,10 +39,17 @@ struct CoverRoutesConfig {
   // Cells of the set in a piece that holds no robot's start (DARP leaves them out: -2) go to the
   // robot nearest them (BFS through Free cells): a live task must cover every reachable cell.
   bool assign_orphans = true;
+  // With routes: divisions tried (the first from config.darp; the others from K-Means starts and
+  // then other seeds), and the one whose longest route is shortest is kept. Regions equal in cells
+  // are not equal in work (a one-cell corridor is swept there and back), so the division alone
+  // cannot tell which is best.
+  int candidates = 1;
 };
 
 struct CoverRoutes {
   DarpResult darp;
+  int candidates_tried = 1;                // divisions made (CoverRoutesConfig::candidates)
+  int chosen = 0;                          // the one kept, from 0
   std::vector<Cell> starts;                // where each robot's region grew from (its nearest set cell)
   std::vector<std::vector<Cell>> routes;   // per robot; {its cell} when it has nothing to cover
   std::vector<int> region_cells;           // per robot

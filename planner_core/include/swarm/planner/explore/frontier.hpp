@@ -21,8 +21,11 @@ bool is_frontier(const OccupancyGrid& map, Cell c);
 // Every frontier cell, in row-major order.
 std::vector<Cell> find_frontiers(const OccupancyGrid& map);
 
-// mask[index] = 1 for every Free cell reachable from any of `from` (cells that are not Free are
-// skipped as seeds). Deterministic.
+// dist[index] = the fewest moves under `motion` from the nearest of `from` to that Free cell, -1
+// where none reaches it (cells that are not Free are skipped as seeds). Deterministic.
+std::vector<int> step_distances(const OccupancyGrid& map, const std::vector<Cell>& from, const MotionModel& motion);
+
+// mask[index] = 1 for every Free cell reachable from any of `from` (step_distances >= 0).
 std::vector<std::uint8_t> reachable_mask(const OccupancyGrid& map, const std::vector<Cell>& from,
                                          const MotionModel& motion = MotionModel::eight());
 

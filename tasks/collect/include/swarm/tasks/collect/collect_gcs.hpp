@@ -2,29 +2,17 @@
 // destination. The objects and destinations come from the scenario (tasks::collect_world, the
 // same for the simulator, the GCS and the leaders, so an object is known by its number).
 //
-// The GCS splits the objects among the groups whose leader lives (each object to the nearest
-// group leader with room left: at most ceil(objects / groups) per group) and sends each group its
-// objects' numbers (Order Work, values = [object, ...]); the leader splits them among
-// its members (tasks/collect/collect_leader.hpp). The phase is complete when every group has reported its
-// objects delivered (Report Done, values = [seq]). The simulator judges what was delivered.
-//
-// The leaders report what they know of each object as it changes (Report Working, values =
-// [seq, then per object: object, what, a, b]; collect::kObject*, object_facts.hpp), and the GCS keeps the last
-// word on each. When a group's leader changes (a standby took over, comm/leadership.hpp) and the
-// group is not done, the GCS waits until every report the old leader sent has arrived (the
-// leader<->GCS delay and jitter) and sends the group Resume order with a new seq: its objects not
-// reported delivered, each with what was last reported (values = [object, what, a, b, ...]).
-//
-// Through the traffic layer (Collect.traffic, docs/traffic.md) the GCS plans every robot's tour
-// itself and drives them as cover does: each robot's tour stops (pick-ups and drops) go to a
-// lifelong MapfGcsTask, whose conflict-free windows the leaders drive as mapf plans
+// The GCS plans every robot's tour itself and drives them through the traffic layer
+// (docs/traffic.md) as cover does: each robot's tour stops (pick-ups and drops) go to a lifelong
+// MapfGcsTask, whose conflict-free windows the leaders drive as mapf plans
 // (tasks/mapf/mapf_leader.hpp), each pick-up and drop at the step the robot stands on its cell.
 // The objects go to the living robots of led groups (each to the nearest with room left); what a
 // robot carries stays with it. The GCS follows each object from the stops behind the robots
 // (a pick-up takes every object lying on the cell, a drop leaves all the robot carries there:
 // the simulator's rule), and when a robot is lost, what it carried lies beside it
 // (planner::put_down_cell, as the simulator puts it) and goes to the others with a new tour each.
-// Tours done and objects left (a stop skipped): new tours, as long as the last ones delivered.
+// Tours done and objects left (a stop skipped): new tours, as long as the last ones delivered;
+// otherwise the phase is given up, saying how many objects no tour reaches.
 #pragma once
 
 #include <array>
@@ -43,7 +31,7 @@ namespace swarm::gcs {
 
 class CollectGcsTask : public GcsTask {
  public:
-  // `paths`: how the leaders drive the traffic layer's windows (with Collect.traffic).
+  // `paths`: how the leaders drive the traffic layer's windows.
   CollectGcsTask(const swarm::scenario::Collect& config, const swarm::scenario::Mapf& paths, std::uint32_t phase,
                  bool map_given);
   void start(GcsContext& ctx) override;
@@ -58,24 +46,14 @@ class CollectGcsTask : public GcsTask {
   swarm::scenario::Collect config_;
   std::uint32_t phase_;
   tasks::CollectWorld world_;
-  std::vector<std::uint32_t> seq_;     // per group: its latest order's
-  std::vector<int> objects_of_group_;  // how many each group was given
-  std::vector<int> owner_;             // per object: its group
-  std::vector<std::array<std::int32_t, 3>> known_;  // per object: what, a, b, as last reported
-  std::vector<bool> done_;
-  std::vector<int> leader_;            // per group: the leader its latest order went to
-  std::vector<std::optional<std::uint32_t>> resume_at_;  // per group: when to send a resume order
-  std::uint64_t resumes_ = 0;
+  std::vector<std::array<std::int32_t, 3>> known_;  // per object: what, a, b, as the stops behind the robots say
   bool complete_ = false;
-  void send_resume(int group, GcsContext& ctx);
   [[nodiscard]] int delivered_known() const;
-
-  // Through the traffic layer: the robots' tours as stops, from where they stand (MapfGcsTask's
-  // RoutePicker); and what a stop behind a robot did to the objects (its StopDone).
+  // The robots' tours as stops, from where they stand (MapfGcsTask's RoutePicker); and what a stop
+  // behind a robot did to the objects (its StopDone).
   std::vector<std::vector<MapfGcsTask::Stop>> tours(const GcsContext& ctx, const planner::OccupancyGrid& map,
                                                     const std::vector<int>& robots);
   void stop_done(int robot, const MapfGcsTask::Stop& stop, bool reached);
-  void drive(GcsContext& ctx);
   std::unique_ptr<MapfGcsTask> drive_;
   int delivered_at_tours_ = 0;  // delivered when the current tours were planned
   std::uint64_t tour_plans_ = 0;
