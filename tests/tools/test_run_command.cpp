@@ -459,6 +459,18 @@ TEST(RunCommand, CheckResolvesTheRunAndStartsNothing) {
   EXPECT_TRUE(contains(err2.str(), "field groups: must be >= 1")) << err2.str();
 }
 
+TEST(RunProcesses, AnEarlierRunsResultsAreNotTakenForThisOnes) {
+  TempDir dir;
+  RunOptions o;
+  o.overrides.map = "small";
+  o.discovery = RunOptions::Discovery::Simple;
+  o.out_dir = dir.file("run");
+  fs::create_directories(o.out_dir);
+  for (const char* f : {"metrics.json", "run.pb", "map.png"}) spit(o.out_dir + "/" + f, "an earlier run's");
+  const PreparedRun run = prepare_run(o);
+  for (const char* f : {"metrics.json", "run.pb", "map.png"}) EXPECT_FALSE(fs::exists(o.out_dir + "/" + f)) << f;
+}
+
 TEST(RunProcesses, ARunDirectoryTakesOneRunAtATime) {
   TempDir dir;
   RunOptions o;

@@ -234,6 +234,9 @@ PreparedRun prepare_run(const RunOptions& options) {
   if (!run.run_dir_lock) {
     throw cfg::ConfigError("--out " + l.run_dir + ": another swarm run is writing to this directory; choose another --out");
   }
+  // A run into a directory an earlier run left: its results must not be taken for this run's
+  // (a run that ends early has its metrics.json amended, or written from the record).
+  for (const char* old : {"metrics.json", "run.pb", "map.png"}) fs::remove(fs::path(l.run_dir) / old, ec);
   l.scenario_path = (fs::path(l.run_dir) / "scenario.pbtxt").string();
   write_text_file(l.scenario_path, cfg::to_text(used));
 
