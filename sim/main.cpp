@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
     const app::RoleSetup setup = tasks::load_role(options, app::RoleKind::Sim);
     comm::Participant participant(setup.dds);
     comm::LockstepClock clock(participant, setup.topology, setup.links);
-    stop.start([&clock] { clock.request_stop(); });
+    const auto calling = stop.start([&clock] { clock.request_stop(); });  // goes before `clock`
     sim::SimNode node(clock, setup, tasks::sim_part);
     const auto t0 = std::chrono::steady_clock::now();
     const std::uint32_t last = node.run();

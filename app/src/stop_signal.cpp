@@ -3,6 +3,7 @@
 #include <pthread.h>
 #include <signal.h>
 
+#include <mutex>
 #include <thread>
 
 namespace swarm::app {
@@ -23,15 +24,27 @@ StopOnSignal::StopOnSignal() {
   pthread_sigmask(SIG_BLOCK, &set, nullptr);
 }
 
-void StopOnSignal::start(std::function<void()> on_stop) {
+std::shared_ptr<void> StopOnSignal::start(std::function<void()> on_stop) {
+  struct Call {
+    std::mutex mutex;
+    std::function<void()> on_stop;
+  };
+  auto call = std::make_shared<Call>();
+  call->on_stop = std::move(on_stop);
   // Detached: the process leaves by exit_after_work's _Exit, never by joining its threads.
-  std::thread([on_stop = std::move(on_stop)] {
+  std::thread([call] {
     const sigset_t set = stop_signals();
     int sig = 0;
     while (sigwait(&set, &sig) != 0) {
     }
-    on_stop();
+    std::lock_guard<std::mutex> lock(call->mutex);
+    if (call->on_stop) call->on_stop();
   }).detach();
+  // The handle: when it goes, `on_stop` is never called again.
+  return std::shared_ptr<void>(nullptr, [call](void*) {
+    std::lock_guard<std::mutex> lock(call->mutex);
+    call->on_stop = nullptr;
+  });
 }
 
 }  // namespace swarm::app

@@ -265,7 +265,7 @@ RunMetrics metrics_from_json(const json& j, const std::string& source) {
                        " only; re-run it, or use the swarm that wrote it");
   }
   if (j.value("partial", false)) {
-    throw MetricsError(source + ": the run ended early (" + j.value("ended", std::string("no reason given")) +
+    throw PartialMetricsError(source + ": the run ended early (" + j.value("ended", std::string("no reason given")) +
                        ") before the GCS wrote its metrics; only ticks_run and the phases begun are known (partial)");
   }
   m.scenario = f.get<std::string>("scenario");

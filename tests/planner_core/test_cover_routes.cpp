@@ -1,5 +1,5 @@
 // Routes for the live coverage task: every cell of the set visited by the routes together, each
-// route a legal 4-connected walk from its robot's cell; leftovers and detours.
+// route a legal 4-connected walk from its robot's cell; several divisions, the best kept.
 #include "swarm/planner/coverage/cover_routes.hpp"
 
 #include <gtest/gtest.h>
@@ -64,16 +64,13 @@ TEST(CoverRoutes, ARobotDoesNotStartInASliverOfTheSet) {
   const CoverRoutes r = divide_and_route(art.grid, set, robots, {}, CoverRoutesConfig{});
   EXPECT_GT(r.region_cells[0], 10) << "robot A started in the sliver";
   EXPECT_GT(r.region_cells[1], 10);
-  // Each route covers the piece its region grew from (not the sliver, which is nearer to A);
-  // cover_leftovers takes the sliver.
+  // Each route covers the piece its region grew from (not the sliver, which is nearer to A; the
+  // live task divides what is left again once the routes are driven).
   std::vector<std::uint8_t> sliver(set.size(), 0);
   sliver[static_cast<std::size_t>(art.grid.index({0, 0}))] = sliver[static_cast<std::size_t>(art.grid.index({1, 0}))] = 1;
   std::vector<std::uint8_t> room = set;
   for (std::size_t i = 0; i < set.size(); ++i) room[i] = set[i] && !sliver[i];
   expect_covers(art.grid, room, robots, r.routes);
-  std::vector<Cell> ends;
-  for (const auto& route : r.routes) ends.push_back(route.back());
-  expect_covers(art.grid, sliver, ends, cover_leftovers(art.grid, sliver, ends));
 }
 
 TEST(CoverRoutes, TwoRobotsOnAnOpenRoomSplitItEquallyAndCoverEveryCell) {
@@ -142,9 +139,10 @@ TEST(CoverRoutes, RobotsOutsideTheSetDriveToItsNearestCellsFirst) {
   EXPECT_EQ(r.routes[0][1], (Cell{1, 3}));  // A leaves its room first
 }
 
-TEST(CoverRoutes, APieceWithNoRobotGoesToTheNearestAndLeftoversCoverIt) {
+TEST(CoverRoutes, APieceWithNoRobotGoesToTheNearest) {
   // Two rooms joined by a corridor that is not in the set: DARP cannot reach the right room's
-  // piece from the robot in the left one; it is assigned anyway, and cover_leftovers covers it.
+  // piece from the robot in the left one; it is assigned anyway (the live task divides it again
+  // once the route is driven).
   const auto art = swarm::test::ascii_map({
       "R..#...",
       "......." ,
@@ -155,26 +153,12 @@ TEST(CoverRoutes, APieceWithNoRobotGoesToTheNearestAndLeftoversCoverIt) {
   set[static_cast<std::size_t>(map.index({3, 1}))] = 0;  // the doorway is already covered
   const CoverRoutes r = divide_and_route(map, set, {art.at.at('R')}, {}, CoverRoutesConfig{});
   EXPECT_EQ(r.region_cells[0], 18);  // both pieces are its
-  // The route covers the left piece; the right one comes through cover_leftovers.
+  // The route covers the left piece, the one its robot stands in.
   std::vector<std::uint8_t> left = set;
-  for (const Cell& c : r.routes[0]) left[static_cast<std::size_t>(map.index(c))] = 0;
-  const auto more = cover_leftovers(map, left, {r.routes[0].back()});
-  std::vector<Cell> all = r.routes[0];
-  all.insert(all.end(), more[0].begin() + 1, more[0].end());
-  expect_covers(map, set, {art.at.at('R')}, {all});
-}
-
-TEST(CoverRoutes, ADetourGoesAroundABlockedCellAndRejoinsTheRoute) {
-  const OccupancyGrid map(5, 3, 0.2, 0.0, 0.0, CellState::Free);
-  const std::vector<Cell> route = {{0, 1}, {1, 1}, {2, 1}, {3, 1}, {4, 1}};
-  const std::vector<Cell> d = detour(map, route, 1, {{2, 1}});
-  ASSERT_FALSE(d.empty());
-  EXPECT_EQ(d.front(), (Cell{1, 1}));
-  EXPECT_EQ(d.back(), (Cell{4, 1}));
-  // Around (2, 1): up or down, then back onto (3, 1): 4 steps to (3, 1), 5 cells, then (4, 1).
-  EXPECT_EQ(d.size(), 6u);
-  for (const Cell& c : d) EXPECT_NE(c, (Cell{2, 1}));
-  EXPECT_TRUE(detour(map, route, 1, {{2, 0}, {2, 1}, {2, 2}}).empty());  // walled off
+  for (int x = 4; x < 7; ++x) {
+    for (int y = 0; y < 3; ++y) left[static_cast<std::size_t>(map.index({x, y}))] = 0;
+  }
+  expect_covers(map, left, {art.at.at('R')}, r.routes);
 }
 
 }  // namespace

@@ -255,6 +255,22 @@ TEST(ReportCommand, EachMissionKindGetsItsOwnTable) {
   EXPECT_TRUE(fs::exists(dir.file("report/mission-explore-cover.txt")));
 }
 
+TEST(ReportCommand, ARunThatEndedEarlyIsSkippedSayingSo) {
+  TempDir dir;
+  const std::string exp = dir.file("exp");
+  (void)fake_explore(exp);
+  spit(exp + "/runs/stopped/metrics.json",
+       R"({"schema_version": 6, "partial": true, "complete": false, "ended": "interrupted: SIGINT", "ticks_run": 18})");
+  std::ostringstream out, err;
+  ReportOptions r;
+  r.dirs = {exp + "/runs"};
+  r.out_dir = dir.file("report");
+  EXPECT_EQ(report_command(r, out, err), 0) << err.str();
+  EXPECT_TRUE(contains(err.str(), "skipped " + exp + "/runs/stopped/metrics.json: the run ended early (interrupted: SIGINT)"))
+      << err.str();
+  EXPECT_TRUE(contains(out.str(), "7 runs: 7 ok (7 complete), 0 failed")) << out.str();
+}
+
 TEST(ReportCommand, BadInputExits2SayingWhatIsAccepted) {
   TempDir dir;
   std::ostringstream out, err;

@@ -46,7 +46,8 @@ void check_options_of(CLI::App& app) {
     const bool is_int = type.rfind("INT", 0) == 0;
     const bool is_uint = type.rfind("UINT", 0) == 0;
     if (is_int || is_uint) {
-      opt->check(CLI::Validator(
+      // A transform, not a check: only a transform may rewrite the text CLI11 goes on to read.
+      opt->transform(CLI::Validator(
           [is_int](std::string& text) -> std::string {
             const std::string expected = config::whole_number_problem(text, is_int);
             if (!expected.empty()) return "must " + expected + " (got " + text + ")";

@@ -141,6 +141,10 @@ int report_command(const ReportOptions& o, std::ostream& out, std::ostream& err)
         record::RunMetrics m;
         try {
           m = record::read_metrics((fs::path(r) / "metrics.json").string());
+        } catch (const record::PartialMetricsError& e) {
+          // A run stopped before the GCS wrote its metrics: nothing to table, and said so.
+          err << me << ": skipped " << e.what() << "\n";
+          continue;
         } catch (const record::MetricsError& e) {
           throw swarm::config::ConfigError(r + " is not a usable run directory: " + e.what());
         }
@@ -154,6 +158,10 @@ int report_command(const ReportOptions& o, std::ostream& out, std::ostream& err)
       if (!explore_runs.empty()) {
         plan = plan_from_run_dirs(explore_runs);
         rows = load_rows("", plan);
+      }
+      if (explore_runs.empty() && by_mission.empty()) {
+        err << me << ": no run there has whole metrics (every one ended early); " << kWhatIsAccepted << "\n";
+        return 2;
       }
       if (dir.empty()) dir = "runs/report-" + local_timestamp(std::time(nullptr));
     }

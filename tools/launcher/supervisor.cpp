@@ -389,6 +389,8 @@ class Supervisor {
       if (planned && c.spec->restart_after && !c.restarted && !stopping_) {
         c.restart_at = Clock::now() + *c.spec->restart_after;
       }
+      // The run's ender died instead of ending the run: nobody else will, so stop the rest now.
+      if (winding_down_ && c.spec->ends_run && !(WIFEXITED(status) && WEXITSTATUS(status) == 0)) stop_all();
       if (failed && !stopping_) {
         result_.failed_name = c.spec->name;
         result_.log_path = c.spec->log_path;

@@ -70,7 +70,8 @@ struct SupervisorResult {
 
 inline constexpr std::chrono::seconds kDefaultGracePeriod{3};
 // How long a run may take to end itself when asked to stop: the GCS waits up to 15 s for the
-// reports of robots that may be dead (gcs_node.hpp, finish).
+// reports of robots that may be dead (gcs_node.hpp, finish). A --timeout can therefore be
+// overrun by up to this and the grace period; an ender that dies meanwhile ends the wait at once.
 inline constexpr std::chrono::seconds kWindDown{25};
 
 // Runs every spec until all have exited (see the file comment). `timeout` <= 0 means none.

@@ -227,6 +227,7 @@ CoverRoutes divide_and_route(const OccupancyGrid& map, const std::vector<std::ui
                              const CoverRoutesConfig& config, const std::function<bool()>& stop) {
   CoverRoutes best = divide_once(map, cells, robots, weights, config, stop);
   if (!config.routes || best.darp.status == DarpStatus::BadInput) return best;
+  std::size_t best_covered = cells_covered(map, cells, best);
   double division = best.seconds_division, routes = best.seconds_routes;
   int tried = 1;
   for (int k = 1; k < config.candidates && !(stop && stop()); ++k) {
@@ -239,71 +240,19 @@ CoverRoutes divide_and_route(const OccupancyGrid& map, const std::vector<std::ui
     division += r.seconds_division;
     routes += r.seconds_routes;
     // Only a division as good as the first (converged, or as balanced) may replace it.
+    const std::size_t covered = cells_covered(map, cells, r);
     const bool as_good = (r.darp.status == DarpStatus::Converged || best.darp.status != DarpStatus::Converged) &&
-                         cells_covered(map, cells, r) >= cells_covered(map, cells, best);
+                         covered >= best_covered;
     if (as_good && longest_route(r) < longest_route(best)) {
       best = std::move(r);
       best.chosen = k;
+      best_covered = covered;
     }
   }
   best.candidates_tried = tried;
   best.seconds_division = division;
   best.seconds_routes = routes;
   return best;
-}
-
-std::vector<std::vector<Cell>> cover_leftovers(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells,
-                                               const std::vector<Cell>& from) {
-  std::vector<std::vector<Cell>> routes(from.size());
-  for (std::size_t r = 0; r < from.size(); ++r) routes[r] = {from[r]};
-  // The pieces of the set, largest first (ties: the piece with the lowest cell index).
-  const std::vector<std::vector<int>> pieces = pieces_of(map, cells);
-  std::vector<std::size_t> order(pieces.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return pieces[a].size() > pieces[b].size(); });
-  for (std::size_t p : order) {
-    // The robot whose route currently ends nearest the piece.
-    std::vector<Cell> piece_cells;
-    for (int i : pieces[p]) piece_cells.push_back(map.cell_of(i));
-    const Bfs b = bfs(map, piece_cells);
-    int best = -1;
-    for (std::size_t r = 0; r < routes.size(); ++r) {
-      const int d = b.steps[map.index(routes[r].back())];
-      if (d < 0) continue;
-      const int best_d = best < 0 ? -1 : b.steps[map.index(routes[best].back())];
-      if (best < 0 || d < best_d) best = static_cast<int>(r);
-    }
-    if (best < 0) continue;
-    std::vector<Cell>& route = routes[static_cast<std::size_t>(best)];
-    const Bfs way = bfs(map, {route.back()});
-    Cell entry = piece_cells.front();
-    for (const Cell& c : piece_cells) {
-      if (way.steps[map.index(c)] >= 0 && way.steps[map.index(c)] < way.steps[map.index(entry)]) entry = c;
-    }
-    append(route, path_to(map, way, entry));
-    OccupancyGrid region(map.width(), map.height(), map.resolution(), map.origin_x(), map.origin_y(),
-                         CellState::Occupied);
-    for (const Cell& c : piece_cells) region.set(c, CellState::Free);
-    append(route, spanning_tree_coverage(region, entry).cells);
-  }
-  return routes;
-}
-
-std::vector<Cell> detour(const OccupancyGrid& map, const std::vector<Cell>& route, std::size_t at,
-                         const std::vector<Cell>& blocked) {
-  if (at >= route.size()) return {};
-  std::vector<std::uint8_t> block(map.size(), 0);
-  for (const Cell& c : blocked) {
-    if (map.in_bounds(c) && c != route[at]) block[map.index(c)] = 1;
-  }
-  std::size_t target = at + 1;
-  while (target < route.size() && map.in_bounds(route[target]) && block[map.index(route[target])]) ++target;
-  if (target >= route.size()) return {};
-  const Bfs b = bfs(map, {route[at]}, &block);
-  if (b.steps[map.index(route[target])] < 0) return {};
-  std::vector<Cell> out = path_to(map, b, route[target]);
-  out.insert(out.end(), route.begin() + static_cast<std::ptrdiff_t>(target) + 1, route.end());
-  return out;
 }
 
 }  // namespace swarm::planner

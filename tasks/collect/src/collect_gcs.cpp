@@ -16,11 +16,11 @@ namespace swarm::gcs {
 
 CollectGcsTask::CollectGcsTask(const swarm::scenario::Collect& config, const swarm::scenario::Mapf& paths,
                                std::uint32_t phase, bool map_given)
-    : config_(config), phase_(phase) {
+    : phase_(phase) {
   MapfGcsTask::Lifelong drive;
   drive.routes = [this](const GcsContext& ctx, const planner::OccupancyGrid& map, const std::vector<int>& robots,
                         const char*) { return tours(ctx, map, robots); };
-  drive.window = static_cast<int>(config_.traffic_window_steps());
+  drive.window = static_cast<int>(config.traffic_window_steps());
   drive.motion = planner::MotionModel::eight();  // as the tours, and as the phase's robots move
   drive.done = [this](int robot, const MapfGcsTask::Stop& stop, bool reached) { stop_done(robot, stop, reached); };
   drive_ = std::make_unique<MapfGcsTask>(paths, phase, map_given, std::move(drive));

@@ -104,42 +104,40 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
   }
   std::vector<std::vector<Cell>> routes;
   nlohmann::json within_groups = nlohmann::json::array();
-  {
-    // Every robot's route: from the division itself (flat), or from dividing each group's share
-    // among its robots (hierarchical).
-    routes.resize(static_cast<std::size_t>(t.robots()));
-    std::size_t goals = 0;
-    const auto take = [&](int robot, const std::vector<Cell>& route, int region_cells) {
-      routes[static_cast<std::size_t>(robot)] = route;
-      goals += route.size();
-      ctx.record.append(route_frame(ctx.tick(), phase_, robot, route, static_cast<std::uint32_t>(region_cells)));
-    };
-    if (flat) {
-      for (std::size_t a = 0; a < robot_ids.size(); ++a) take(robot_ids[a], plan.routes[a], plan.region_cells[a]);
-    } else {
-      for (const int g : groups) {
-        std::vector<int> members;
-        std::vector<Cell> member_at;
-        for (const int r : robots) {
-          if (t.group_of(static_cast<comm::AgentId>(r)) != g) continue;
-          members.push_back(r);
-          member_at.push_back(ctx.cell_of(r));
-        }
-        if (members.empty()) continue;
-        planner::CoverRoutesConfig group_cfg = tasks::cover_routes_config(
-            config_, ctx.setup.world.scenario.seed(), (std::uint64_t{seq_} << 8) + static_cast<std::uint64_t>(g) + 1);
-        group_cfg.routes = true;
-        const planner::CoverRoutes sub = planner::divide_and_route(
-            known_, share[static_cast<std::size_t>(g)], member_at, std::vector<double>(members.size(), 1.0), group_cfg, stop);
-        for (std::size_t k = 0; k < members.size(); ++k) take(members[k], sub.routes[k], sub.region_cells[k]);
-        nlohmann::json entry = tasks::division_json(sub);
-        entry["group"] = g;
-        entry["robots"] = members;
-        within_groups.push_back(std::move(entry));
+  // Every robot's route: from the division itself (flat), or from dividing each group's share
+  // among its robots (hierarchical).
+  routes.resize(static_cast<std::size_t>(t.robots()));
+  std::size_t goals = 0;
+  const auto take = [&](int robot, const std::vector<Cell>& route, int region_cells) {
+    routes[static_cast<std::size_t>(robot)] = route;
+    goals += route.size();
+    ctx.record.append(route_frame(ctx.tick(), phase_, robot, route, static_cast<std::uint32_t>(region_cells)));
+  };
+  if (flat) {
+    for (std::size_t a = 0; a < robot_ids.size(); ++a) take(robot_ids[a], plan.routes[a], plan.region_cells[a]);
+  } else {
+    for (const int g : groups) {
+      std::vector<int> members;
+      std::vector<Cell> member_at;
+      for (const int r : robots) {
+        if (t.group_of(static_cast<comm::AgentId>(r)) != g) continue;
+        members.push_back(r);
+        member_at.push_back(ctx.cell_of(r));
       }
+      if (members.empty()) continue;
+      planner::CoverRoutesConfig group_cfg = tasks::cover_routes_config(
+          config_, ctx.setup.world.scenario.seed(), (std::uint64_t{seq_} << 8) + static_cast<std::uint64_t>(g) + 1);
+      group_cfg.routes = true;
+      const planner::CoverRoutes sub = planner::divide_and_route(
+          known_, share[static_cast<std::size_t>(g)], member_at, std::vector<double>(members.size(), 1.0), group_cfg, stop);
+      for (std::size_t k = 0; k < members.size(); ++k) take(members[k], sub.routes[k], sub.region_cells[k]);
+      nlohmann::json entry = tasks::division_json(sub);
+      entry["group"] = g;
+      entry["robots"] = members;
+      within_groups.push_back(std::move(entry));
     }
-    nothing_to_drive_ = goals == 0 && !tracker_.complete();
   }
+  nothing_to_drive_ = goals == 0 && !tracker_.complete();
   nlohmann::json cells_per_group = nlohmann::json::array();
   for (int g = 0; g < t.groups(); ++g) {
     int n = 0;

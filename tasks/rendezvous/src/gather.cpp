@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <limits>
 
+#include "swarm/planner/explore/frontier.hpp"
 #include "swarm/planner/explore/hungarian.hpp"
 #include "swarm/planner/grid/start_cells.hpp"
 
@@ -14,21 +15,7 @@ using planner::MotionModel;
 using planner::OccupancyGrid;
 
 std::vector<int> steps_from(const OccupancyGrid& map, Cell from, const MotionModel& motion) {
-  std::vector<int> steps(map.size(), -1);
-  if (!map.is_free(from)) return steps;
-  std::vector<Cell> queue{from};
-  steps[static_cast<std::size_t>(map.index(from))] = 0;
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const Cell c = queue[head];
-    const int next = steps[static_cast<std::size_t>(map.index(c))] + 1;
-    motion.for_each_neighbour(map, c, [&](Cell n, double) {
-      int& s = steps[static_cast<std::size_t>(map.index(n))];
-      if (s >= 0) return;
-      s = next;
-      queue.push_back(n);
-    });
-  }
-  return steps;
+  return planner::step_distances(map, {from}, motion);
 }
 
 namespace {

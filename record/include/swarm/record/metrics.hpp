@@ -38,6 +38,13 @@ class MetricsError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A partial metrics.json: the run ended early and the launcher wrote only what the run record
+// held (tools/launcher/run_end.hpp). Tables skip such runs, saying so.
+class PartialMetricsError : public MetricsError {
+ public:
+  using MetricsError::MetricsError;
+};
+
 // What the simulator judged robots did, from ground truth (sim/world.hpp).
 struct MotionCounts {
   std::uint64_t moves = 0;

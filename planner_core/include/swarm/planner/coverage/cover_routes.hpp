@@ -1,15 +1,14 @@
 // Routes for the live coverage task (tasks/cover/), free of DDS: divide a set
 // of cells among robots with DARP (darp.hpp) and give each robot a 4-connected route from where it
 // stands that visits every cell of its region (spanning-tree coverage, stc.hpp; or plowing /
-// Group-k, plow.hpp / group_k.hpp), plus the two repairs a live run needs: covering what is left
-// when routes end with cells uncovered, and a detour around a robot in the way.
+// Group-k, plow.hpp / group_k.hpp).
 //
 // Robots may stand anywhere on Free cells of the map, not only in the set: DARP grows the regions
 // from each robot's nearest cell of the set (distinct cells, by BFS through Free cells; a robot
 // that can reach no cell of the set gets none; a piece of the set smaller than half a share is
 // not started in while a larger one can be reached), and the robot first drives there. Pieces of
 // the set that hold no start are given to the nearest robot (assign_orphans); its route covers
-// the piece it starts in, the rest is left to cover_leftovers.
+// the piece it starts in (what is left uncovered is divided again by the live task).
 //
 //   CoverRoutes r = divide_and_route(map, cells, robot_cells, weights, config, stop);
 //   r.routes[i]   // robot i's route: robot_cells[i] first, every cell of its region visited
@@ -61,19 +60,5 @@ struct CoverRoutes {
 [[nodiscard]] CoverRoutes divide_and_route(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells,
                                            const std::vector<Cell>& robots, const std::vector<double>& weights,
                                            const CoverRoutesConfig& config, const std::function<bool()>& stop = {});
-
-// A route for every cell of `cells` that no route covers yet: each connected piece (4-connected)
-// goes, largest first, to the robot whose route ends nearest it (by BFS through Free cells), which
-// drives there and covers it by spanning-tree coverage; a robot may get several pieces in a row.
-// `from[i]` is where robot i's route starts. Pieces no robot can reach are left out.
-[[nodiscard]] std::vector<std::vector<Cell>> cover_leftovers(const OccupancyGrid& map,
-                                                             const std::vector<std::uint8_t>& cells,
-                                                             const std::vector<Cell>& from);
-
-// A way around `blocked` (cells other robots stand on) from route[at] back onto the route: a
-// shortest 4-connected path through Free, unblocked cells to the first later route cell that is
-// not blocked, followed by the rest of the route. Empty when there is none.
-[[nodiscard]] std::vector<Cell> detour(const OccupancyGrid& map, const std::vector<Cell>& route, std::size_t at,
-                                       const std::vector<Cell>& blocked);
 
 }  // namespace swarm::planner

@@ -18,7 +18,6 @@
 #include <array>
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,7 +42,6 @@ class CollectGcsTask : public GcsTask {
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:
-  swarm::scenario::Collect config_;
   std::uint32_t phase_;
   tasks::CollectWorld world_;
   std::vector<std::array<std::int32_t, 3>> known_;  // per object: what, a, b, as the stops behind the robots say

@@ -1,5 +1,5 @@
-// What collect's leaders and GCS tell each other of an object: in a report's and a resume
-// order's values, one (object, what, a, b) set per object, `what` one of these.
+// What the collect GCS knows of each object (CollectGcsTask's known_): `what` one of these, with
+// its (a, b).
 #pragma once
 
 #include <cstdint>
