@@ -148,6 +148,13 @@ TEST(BadCommands, AnUnknownCommandIsNamed) {
   EXPECT_NE(r.output.find("swarm experiment: unknown command 'frobnicate'"), std::string::npos) << r.output;
 }
 
+TEST(BadCommands, AWholeNumberWithALeadingZeroIsDecimal) {
+  // CLI11 reads "010" as octal (8): the check rewrites it first.
+  const CommandResult r = run_swarm("run --check --map small --seed 010");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("seed 10;"), std::string::npos) << r.output;
+}
+
 TEST(BadCommands, RangesReadAsNumbersAPersonWrites) {
   // Not CLI11's "Value 0 not in range 0.000000 to <309 digits>".
   const CommandResult r = run_swarm("render . --scale 0");
