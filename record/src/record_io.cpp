@@ -1,5 +1,7 @@
 #include "swarm/record/record.hpp"
 
+#include <algorithm>
+
 #include <google/protobuf/util/delimited_message_util.h>
 
 #include <cerrno>
@@ -91,6 +93,14 @@ void RecordWriter::close() {
   if (!ok || !out_) {
     throw std::runtime_error("run record " + path_ + ": closing failed (disk full?)");
   }
+}
+
+std::optional<std::uint32_t> last_tick(const std::vector<Frame>& frames) {
+  std::optional<std::uint32_t> last;
+  for (const Frame& f : frames) {
+    if (f.has_poses()) last = std::max(last.value_or(0), f.poses().tick());
+  }
+  return last;
 }
 
 std::vector<Frame> read_record(const std::string& path_in) {

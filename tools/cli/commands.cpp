@@ -39,10 +39,7 @@ int render_command(const RenderOptions& o, std::ostream& out, std::ostream& err)
     return 2;
   }
   const auto& frames = read.frames;
-  std::optional<std::uint32_t> last_tick;
-  for (const auto& f : frames) {
-    if (f.has_poses()) last_tick = std::max(last_tick.value_or(0), f.poses().tick());
-  }
+  const std::optional<std::uint32_t> last_tick = swarm::record::last_tick(frames);
   if (!read.cut.empty()) {
     err << "swarm render: " << read.cut << "; drawing the " << frames.size() << " whole frames before it"
         << (last_tick ? " (up to tick " + std::to_string(*last_tick) + ")" : std::string()) << "\n";

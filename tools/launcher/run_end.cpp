@@ -20,10 +20,9 @@ json from_record(const std::string& run_dir) {
   json out;
   try {
     const record::RecordPrefix r = record::read_record_prefix(record::run_record_path(run_dir));
-    std::optional<std::uint32_t> last;
+    const std::optional<std::uint32_t> last = record::last_tick(r.frames);
     json phases = json::array();
     for (const record::Frame& f : r.frames) {
-      if (f.has_poses()) last = std::max(last.value_or(0), f.poses().tick());
       if (!f.has_phase()) continue;
       const auto& p = f.phase();
       if (!p.ended()) {

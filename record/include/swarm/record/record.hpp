@@ -20,6 +20,7 @@
 
 #include <cstdint>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,5 +76,8 @@ struct RecordPrefix {
   std::string cut;
 };
 RecordPrefix read_record_prefix(const std::string& path);
+
+// The last tick the frames' poses reach; none without a Poses frame.
+std::optional<std::uint32_t> last_tick(const std::vector<Frame>& frames);
 
 }  // namespace swarm::record
