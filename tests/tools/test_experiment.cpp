@@ -60,6 +60,20 @@ ExperimentPlan fake_explore(const std::string& dir) {
   return plan;
 }
 
+// `swarm report DIRS --out OUT`: its exit status, what it printed and what it said was wrong.
+struct Reported {
+  int status;
+  std::string out, err;
+};
+Reported report_of(std::vector<std::string> dirs, const std::string& out_dir) {
+  std::ostringstream out, err;
+  ReportOptions r;
+  r.dirs = std::move(dirs);
+  r.out_dir = out_dir;
+  const int status = report_command(r, out, err);
+  return {status, out.str(), err.str()};
+}
+
 }  // namespace
 
 TEST(ExperimentPlan, ExploreRunsEveryMapMethodAndSeedWithPicturesForSeedOne) {
@@ -208,13 +222,10 @@ TEST(ReportCommand, ReproducesTheExperimentOutputsByteForByte) {
   EXPECT_TRUE(fs::exists(exp + "/table2.png"));
 
   // Plain run directories: grouped by mode and map.
-  std::ostringstream out2, err2;
-  ReportOptions plain;
-  plain.dirs = {exp + "/runs"};
-  plain.out_dir = dir.file("plain");
-  EXPECT_EQ(report_command(plain, out2, err2), 0) << err2.str();
-  EXPECT_TRUE(contains(out2.str(), "7 runs: 7 ok (7 complete), 0 failed")) << out2.str();
-  EXPECT_TRUE(contains(out2.str(), "group-frontier vs baseline")) << out2.str();
+  const Reported plain = report_of({exp + "/runs"}, dir.file("plain"));
+  EXPECT_EQ(plain.status, 0) << plain.err;
+  EXPECT_TRUE(contains(plain.out, "7 runs: 7 ok (7 complete), 0 failed")) << plain.out;
+  EXPECT_TRUE(contains(plain.out, "group-frontier vs baseline")) << plain.out;
   EXPECT_TRUE(fs::exists(dir.file("plain/results.csv")));
 }
 
@@ -222,13 +233,11 @@ TEST(ReportCommand, ADirectoryGivenTwiceCountsOnce) {
   TempDir dir;
   const std::string exp = dir.file("exp");
   (void)fake_explore(exp);
-  std::ostringstream out, err;
-  ReportOptions r;
   // The folder, one of its runs again, and the folder once more by another spelling.
-  r.dirs = {exp + "/runs", exp + "/runs/open-group-frontier-s1", exp + "/runs/../runs"};
-  r.out_dir = dir.file("report");
-  EXPECT_EQ(report_command(r, out, err), 0) << err.str();
-  EXPECT_TRUE(contains(out.str(), "7 runs: 7 ok (7 complete), 0 failed")) << out.str();
+  const Reported r =
+      report_of({exp + "/runs", exp + "/runs/open-group-frontier-s1", exp + "/runs/../runs"}, dir.file("report"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "7 runs: 7 ok (7 complete), 0 failed")) << r.out;
 }
 
 TEST(ReportCommand, EachMissionKindGetsItsOwnTable) {
@@ -243,13 +252,10 @@ TEST(ReportCommand, EachMissionKindGetsItsOwnTable) {
     m.phases.back().motion.total.longest_blocked_ticks = 4;
     spit(exp + "/runs/chain-s" + std::to_string(seed) + "/metrics.json", swarm::record::to_json(m).dump(2));
   }
-  std::ostringstream out, err;
-  ReportOptions r;
-  r.dirs = {exp + "/runs"};
-  r.out_dir = dir.file("report");
-  EXPECT_EQ(report_command(r, out, err), 0) << err.str();
-  EXPECT_TRUE(contains(out.str(), "7 runs: 7 ok (7 complete), 0 failed")) << out.str();
-  EXPECT_TRUE(contains(out.str(), "Mission explore,cover (2 runs)")) << out.str();
+  const Reported r = report_of({exp + "/runs"}, dir.file("report"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "7 runs: 7 ok (7 complete), 0 failed")) << r.out;
+  EXPECT_TRUE(contains(r.out, "Mission explore,cover (2 runs)")) << r.out;
   const std::string csv = slurp(dir.file("report/mission-explore-cover.csv"));
   EXPECT_TRUE(contains(csv, ",cover,100,252,152,true,2,0,0,4\n")) << csv;
   EXPECT_TRUE(fs::exists(dir.file("report/mission-explore-cover.txt")));
@@ -261,14 +267,11 @@ TEST(ReportCommand, ARunThatEndedEarlyIsSkippedSayingSo) {
   (void)fake_explore(exp);
   spit(exp + "/runs/stopped/metrics.json",
        R"({"schema_version": 6, "partial": true, "complete": false, "ended": "interrupted: SIGINT", "ticks_run": 18})");
-  std::ostringstream out, err;
-  ReportOptions r;
-  r.dirs = {exp + "/runs"};
-  r.out_dir = dir.file("report");
-  EXPECT_EQ(report_command(r, out, err), 0) << err.str();
-  EXPECT_TRUE(contains(err.str(), "skipped " + exp + "/runs/stopped/metrics.json: the run ended early (interrupted: SIGINT)"))
-      << err.str();
-  EXPECT_TRUE(contains(out.str(), "7 runs: 7 ok (7 complete), 0 failed")) << out.str();
+  const Reported r = report_of({exp + "/runs"}, dir.file("report"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(contains(r.err, "skipped " + exp + "/runs/stopped/metrics.json: the run ended early (interrupted: SIGINT)"))
+      << r.err;
+  EXPECT_TRUE(contains(r.out, "7 runs: 7 ok (7 complete), 0 failed")) << r.out;
 }
 
 TEST(ReportCommand, BadInputExits2SayingWhatIsAccepted) {

@@ -101,6 +101,15 @@ RunOptions small_run(const TempDir& dir, const std::string& bin) {
   return o;
 }
 
+// A run of `small` into DIR/run, by simple discovery (no discovery server to start).
+RunOptions local_run(const TempDir& dir) {
+  RunOptions o;
+  o.overrides.map = "small";
+  o.discovery = RunOptions::Discovery::Simple;
+  o.out_dir = dir.file("run");
+  return o;
+}
+
 }  // namespace
 
 TEST(RunOverrides, MapChangeClearsTheStartUnlessStartIsGiven) {
@@ -461,10 +470,7 @@ TEST(RunCommand, CheckResolvesTheRunAndStartsNothing) {
 
 TEST(RunProcesses, AnEarlierRunsResultsAreNotTakenForThisOnes) {
   TempDir dir;
-  RunOptions o;
-  o.overrides.map = "small";
-  o.discovery = RunOptions::Discovery::Simple;
-  o.out_dir = dir.file("run");
+  const RunOptions o = local_run(dir);
   fs::create_directories(o.out_dir);
   for (const char* f : {"metrics.json", "run.pb", "map.png"}) spit(o.out_dir + "/" + f, "an earlier run's");
   const PreparedRun run = prepare_run(o);
@@ -473,10 +479,7 @@ TEST(RunProcesses, AnEarlierRunsResultsAreNotTakenForThisOnes) {
 
 TEST(RunProcesses, ARunDirectoryTakesOneRunAtATime) {
   TempDir dir;
-  RunOptions o;
-  o.overrides.map = "small";
-  o.discovery = RunOptions::Discovery::Simple;
-  o.out_dir = dir.file("run");
+  const RunOptions o = local_run(dir);
   const PreparedRun a = prepare_run(o);
   try {
     (void)prepare_run(o);
