@@ -4,7 +4,10 @@
 // and through the traffic layer with no conflict.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "swarm_test/fake_swarm.hpp"
@@ -17,10 +20,9 @@ using swarm::test::expect_no_conflict;
 using swarm::test::phase_named;
 
 TEST(CoverTask, AfterExplorationTheExploredMapIsCovered) {
-  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+  const auto m = swarm::test::run_text(
       "map: 'small' groups: 1 robots_per_group: 3 max_ticks: 3000 "
-      "mission { phase { explore {} } phase { cover {} } }"));
-  const auto m = s.run_to_end();
+      "mission { phase { explore {} } phase { cover {} } }");
   ASSERT_TRUE(m["complete"].get<bool>());
   ASSERT_EQ(m["phases"].size(), 2u);
   const auto& cover = phase_named(m, "cover");
@@ -32,10 +34,9 @@ TEST(CoverTask, AfterExplorationTheExploredMapIsCovered) {
 }
 
 TEST(CoverTask, TheFlatVariantCoversToo) {
-  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+  const auto m = swarm::test::run_text(
       "map: 'small' groups: 2 robots_per_group: 2 max_ticks: 2000 "
-      "mission { phase { cover { hierarchical: false } } }"));
-  const auto m = s.run_to_end();
+      "mission { phase { cover { hierarchical: false } } }");
   ASSERT_TRUE(m["complete"].get<bool>()) << m["phases"].dump(1) << m["agents"].dump(1);
   EXPECT_DOUBLE_EQ(phase_named(m, "cover")["task"]["covered_fraction"].get<double>(), 1.0);
 }
@@ -44,10 +45,9 @@ TEST(CoverTask, TheFlatVariantCoversToo) {
 // reachable cell as spanning-tree coverage does; their curves differ (the run's coverage_curve).
 TEST(CoverTask, PlowAndGroupKOrdersCoverEveryReachableCell) {
   for (const std::string order : {"ORDER_PLOW", "ORDER_GROUP_K"}) {
-    swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+    const auto m = swarm::test::run_text(
         "map: 'small' groups: 2 robots_per_group: 2 max_ticks: 3000 mission { phase { cover { order: " + order +
-        " } } }"));
-    const auto m = s.run_to_end();
+        " } } }");
     ASSERT_TRUE(m["complete"].get<bool>()) << order;
     const auto& cover = phase_named(m, "cover");
     EXPECT_DOUBLE_EQ(cover["task"]["covered_fraction"].get<double>(), 1.0) << order;
@@ -68,9 +68,9 @@ const nlohmann::json& expect_covered_without_a_conflict(const nlohmann::json& m)
 }
 
 TEST(CoverTask, ThroughTheTrafficLayerEveryCellIsCoveredWithoutAConflict) {
-  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
-      "map: 'small' groups: 3 robots_per_group: 3 max_ticks: 3000 mission { phase { cover { traffic: true } } }"));
-  const auto m = s.run_to_end();
+  const auto m = swarm::test::run_text(
+      "map: 'small' groups: 3 robots_per_group: 3 max_ticks: 3000 "
+      "mission { phase { cover { traffic: true flat_candidate: false } } }");
   const auto& cover = expect_covered_without_a_conflict(m);
   EXPECT_GT(cover["task"]["traffic"]["windows"].get<int>(), 1);
   // The second bound: some robot must reach the cell farthest from every robot.
@@ -95,15 +95,42 @@ TEST(CoverTask, ThroughTheTrafficLayerEveryCellIsCoveredWithoutAConflict) {
   }
 }
 
+// After exploration a group's robots stand scattered, and a share grown from the leader's cell
+// sends its members across the map. The division among all robots is made too, and the one cheaper
+// to drive is driven: the shorter longest route, then fewer moves onto other groups' parts, then
+// fewer moves in all. On warehouse-5x8, seed 1, the groups' division's longest route is 22 moves
+// and the robots' 18.
+TEST(CoverTask, AfterExplorationTheDivisionCheaperToDriveIsDriven) {
+  const auto m = swarm::test::run_text(
+      "map: 'warehouse-5x8' groups: 3 robots_per_group: 3 max_ticks: 3000 seed: 1 "
+      "mission { phase { explore {} } phase { cover {} } }");
+  const auto& cover = expect_covered_without_a_conflict(m);
+  const auto& division = cover["task"]["divisions"][0];
+  const auto& compared = division["compared"];
+  ASSERT_TRUE(compared.contains("leaders") && compared.contains("robots")) << division.dump(1);
+  const auto key = [&](const char* agents) {
+    const auto& c = compared[agents];
+    return std::make_tuple(c["longest_route_moves"].get<int>(), c["moves_in_other_groups_parts"].get<int>(),
+                           c["route_moves"].get<int>());
+  };
+  EXPECT_EQ(division["agents"], key("robots") < key("leaders") ? "robots" : "leaders") << division.dump(1);
+  EXPECT_EQ(std::get<0>(key("leaders")), 22);
+  EXPECT_EQ(std::get<0>(key("robots")), 18);
+  EXPECT_EQ(division["agents"], "robots");
+  // Driven without a push aside: the busiest robot made its route's 18 moves.
+  int busiest = 0;
+  for (const auto& [name, r] : cover["motion"]["per_robot"].items()) busiest = std::max(busiest, r["moves"].get<int>());
+  EXPECT_EQ(busiest, 18);
+}
+
 // A time limit past the clock's range is no limit: the divisions run as without one (it used to
 // wrap to a deadline already past, and DARP stopped after 0 iterations: cells [38, 1356]).
 TEST(CoverTask, AHugeDarpTimeLimitIsNoLimit) {
   for (const char* limit : {"1e12", "inf"}) {
-    swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+    const auto m = swarm::test::run_text(
         std::string("map: 'small' groups: 2 robots_per_group: 2 max_ticks: 3000 mission { phase { cover { "
                     "darp_time_limit_s: ") +
-        limit + " } } }"));
-    const auto m = s.run_to_end();
+        limit + " } } }");
     ASSERT_TRUE(m["complete"].get<bool>()) << limit;
     const auto& division = phase_named(m, "cover")["task"]["divisions"][0];
     EXPECT_EQ(division["darp_status"], "converged") << limit << ": " << division.dump(1);
@@ -119,21 +146,19 @@ TEST(CoverTask, AHugeDarpTimeLimitIsNoLimit) {
 TEST(CoverTask, ThroughTheTrafficLayerWindowsThatArriveOutOfOrderWaitForTheirPlan) {
   for (const int seed : {1, 2}) {
     SCOPED_TRACE(seed);
-    swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+    const auto m = swarm::test::run_text(
         "map: 'small' groups: 3 robots_per_group: 3 max_ticks: 4000 seed: " + std::to_string(seed) +
         " links { leader_gcs { delay_ticks: 2 jitter_ticks: 2 loss: 0.05 } member_leader { jitter_ticks: 1 } } "
-        "mission { phase { cover { } } }"));
-    const auto m = s.run_to_end();
+        "mission { phase { cover { } } }");
     const auto& cover = expect_covered_without_a_conflict(m);
     EXPECT_GT(cover["task"]["traffic"]["windows_continued"].get<int>(), 0);
   }
 }
 
 TEST(CoverTask, ThroughTheTrafficLayerTheFlatDivisionCoversToo) {
-  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+  const auto m = swarm::test::run_text(
       "map: 'small' groups: 2 robots_per_group: 2 max_ticks: 3000 "
-      "mission { phase { cover { traffic: true hierarchical: false } } }"));
-  const auto m = s.run_to_end();
+      "mission { phase { cover { traffic: true hierarchical: false } } }");
   const auto& cover = expect_covered_without_a_conflict(m);
   EXPECT_EQ(cover["task"]["divisions"][0]["agents"], "robots");
 }

@@ -1,7 +1,11 @@
 #include "swarm/tasks/cover/cover_gcs.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <compare>
 #include <cstdio>
+#include <functional>
+#include <utility>
 
 #include "swarm/config/task_config.hpp"
 #include "swarm/planner/grid/deadline.hpp"
@@ -51,110 +55,190 @@ std::string CoverGcsTask::given_up() const {
   return drive_->given_up();
 }
 
-std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
-                                                    const char* why, const std::vector<int>& robots) {
-  const comm::Topology& t = ctx.setup.topology;
-  const auto t0 = std::chrono::steady_clock::now();
-  const auto deadline = planner::deadline_after(config_.darp_time_limit_s(), t0);
-  const auto stop = [deadline] { return std::chrono::steady_clock::now() > deadline; };
-  const std::vector<int> groups = living_groups(ctx);
-  ++seq_;
+namespace {
 
-  // The agents DARP divides among: the living leaders, portions by living group size
-  // (hierarchical), or every living robot of a living group (flat).
-  std::vector<int> robot_ids;
-  std::vector<double> weights;
-  const bool flat = !config_.hierarchical();
-  if (flat) {
-    robot_ids = robots;
-    weights.assign(robot_ids.size(), 1.0);
-  } else {
-    for (int g : groups) {
-      int living = 0;
-      for (int i = 0; i < t.robots_per_group(); ++i) living += ctx.alive(t.robot(g, i)) ? 1 : 0;
-      robot_ids.push_back(ctx.leader_of(g));
-      weights.push_back(living);
+// What a division costs to drive, compared in this order: the moves of its longest route (the
+// makespan it sets); its moves onto cells of another group's part, each a step that waits on
+// another group's robot, whose progress reaches its leader through the GCS (about four ticks a
+// wait against one within a group, docs/traffic.md); the moves of all its routes.
+struct DriveCost {
+  std::size_t longest = 0, foreign = 0, all = 0;
+  auto operator<=>(const DriveCost&) const = default;
+};
+
+DriveCost drive_cost(const std::vector<std::vector<Cell>>& routes, const std::vector<int>& group_of_cell,
+                     const comm::Topology& t, const planner::OccupancyGrid& map) {
+  DriveCost c;
+  for (std::size_t r = 0; r < routes.size(); ++r) {
+    const std::size_t moves = routes[r].empty() ? 0 : routes[r].size() - 1;
+    c.longest = std::max(c.longest, moves);
+    c.all += moves;
+    const int own = t.group_of(static_cast<comm::AgentId>(r));
+    for (std::size_t k = 1; k < routes[r].size(); ++k) {
+      const int g = group_of_cell[static_cast<std::size_t>(map.index(routes[r][k]))];
+      c.foreign += g >= 0 && g != own ? 1 : 0;
     }
+  }
+  return c;
+}
+
+nlohmann::json to_json(const DriveCost& c) {
+  return {{"longest_route_moves", c.longest}, {"moves_in_other_groups_parts", c.foreign}, {"route_moves", c.all}};
+}
+
+// Per grid cell, the group of the robot (or leader) whose DARP agent it went to; -1: none.
+std::vector<int> groups_of_cells(const planner::CoverRoutes& plan, const std::vector<int>& agents,
+                                 const comm::Topology& t, std::size_t cells) {
+  std::vector<int> group_of_agent;  // the agents DARP started, in order
+  for (std::size_t a = 0; a < agents.size(); ++a) {
+    if (plan.starts[a].x >= 0) group_of_agent.push_back(t.group_of(static_cast<comm::AgentId>(agents[a])));
+  }
+  std::vector<int> out(cells, -1);
+  for (std::size_t i = 0; i < out.size() && i < plan.darp.assignment.size(); ++i) {
+    const int k = plan.darp.assignment[i];
+    if (k >= 0) out[i] = group_of_agent[static_cast<std::size_t>(k)];
+  }
+  return out;
+}
+
+}  // namespace
+
+CoverGcsTask::Division CoverGcsTask::divide_among_groups(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
+                                                         const std::vector<int>& robots,
+                                                         const std::function<bool()>& stop) const {
+  const comm::Topology& t = ctx.setup.topology;
+  const std::vector<int> groups = living_groups(ctx);
+  // The agents DARP divides among: the living leaders, portions by living group size.
+  std::vector<int> leaders;
+  std::vector<double> weights;
+  for (int g : groups) {
+    int living = 0;
+    for (int i = 0; i < t.robots_per_group(); ++i) living += ctx.alive(t.robot(g, i)) ? 1 : 0;
+    leaders.push_back(ctx.leader_of(g));
+    weights.push_back(living);
   }
   std::vector<Cell> at;
-  for (int r : robot_ids) at.push_back(ctx.cell_of(r));
+  for (int r : leaders) at.push_back(ctx.cell_of(r));
   planner::CoverRoutesConfig cfg = tasks::cover_routes_config(config_, ctx.setup.world.scenario.seed(), seq_);
-  cfg.routes = flat;
+  cfg.routes = false;
   const planner::CoverRoutes plan = planner::divide_and_route(known_, cells, at, weights, cfg, stop);
 
-  // Each group's share: the cells DARP gave its agents.
+  // Each group's share: the cells DARP gave its leader.
+  Division out;
+  out.group_of_cell = groups_of_cells(plan, leaders, t, known_.size());
   std::vector<std::vector<std::uint8_t>> share(static_cast<std::size_t>(t.groups()),
                                                std::vector<std::uint8_t>(known_.size(), 0));
-  std::vector<int> agent_of_robot(static_cast<std::size_t>(t.robots()), -1);
-  {
-    int k = 0;
-    for (std::size_t a = 0; a < robot_ids.size(); ++a) {
-      if (plan.starts[a].x < 0) continue;  // reaches nothing: not a DARP agent
-      agent_of_robot[static_cast<std::size_t>(robot_ids[a])] = k++;
-    }
+  for (std::size_t i = 0; i < out.group_of_cell.size(); ++i) {
+    if (out.group_of_cell[i] >= 0) share[static_cast<std::size_t>(out.group_of_cell[i])][i] = 1;
   }
-  for (std::size_t i = 0; i < known_.size(); ++i) {
-    const int k = plan.darp.assignment.empty() ? -1 : plan.darp.assignment[i];
-    if (k < 0) continue;
-    for (std::size_t a = 0; a < robot_ids.size(); ++a) {
-      if (agent_of_robot[static_cast<std::size_t>(robot_ids[a])] != k) continue;
-      const int g = t.group_of(static_cast<comm::AgentId>(robot_ids[a]));
-      share[static_cast<std::size_t>(g)][i] = 1;
-    }
-  }
-  std::vector<std::vector<Cell>> routes;
+  out.routes.resize(static_cast<std::size_t>(t.robots()));
+  out.region_cells.assign(static_cast<std::size_t>(t.robots()), 0);
   nlohmann::json within_groups = nlohmann::json::array();
-  // Every robot's route: from the division itself (flat), or from dividing each group's share
-  // among its robots (hierarchical).
-  routes.resize(static_cast<std::size_t>(t.robots()));
-  std::size_t goals = 0;
-  const auto take = [&](int robot, const std::vector<Cell>& route, int region_cells) {
-    routes[static_cast<std::size_t>(robot)] = route;
-    goals += route.size();
-    ctx.record.append(route_frame(ctx.tick(), phase_, robot, route, static_cast<std::uint32_t>(region_cells)));
-  };
-  if (flat) {
-    for (std::size_t a = 0; a < robot_ids.size(); ++a) take(robot_ids[a], plan.routes[a], plan.region_cells[a]);
-  } else {
-    for (const int g : groups) {
-      std::vector<int> members;
-      std::vector<Cell> member_at;
-      for (const int r : robots) {
-        if (t.group_of(static_cast<comm::AgentId>(r)) != g) continue;
-        members.push_back(r);
-        member_at.push_back(ctx.cell_of(r));
-      }
-      if (members.empty()) continue;
-      planner::CoverRoutesConfig group_cfg = tasks::cover_routes_config(
-          config_, ctx.setup.world.scenario.seed(), (std::uint64_t{seq_} << 8) + static_cast<std::uint64_t>(g) + 1);
-      group_cfg.routes = true;
-      const planner::CoverRoutes sub = planner::divide_and_route(
-          known_, share[static_cast<std::size_t>(g)], member_at, std::vector<double>(members.size(), 1.0), group_cfg, stop);
-      for (std::size_t k = 0; k < members.size(); ++k) take(members[k], sub.routes[k], sub.region_cells[k]);
-      nlohmann::json entry = tasks::division_json(sub);
-      entry["group"] = g;
-      entry["robots"] = members;
-      within_groups.push_back(std::move(entry));
+  for (const int g : groups) {
+    std::vector<int> members;
+    std::vector<Cell> member_at;
+    for (const int r : robots) {
+      if (t.group_of(static_cast<comm::AgentId>(r)) != g) continue;
+      members.push_back(r);
+      member_at.push_back(ctx.cell_of(r));
     }
+    if (members.empty()) continue;
+    planner::CoverRoutesConfig group_cfg = tasks::cover_routes_config(
+        config_, ctx.setup.world.scenario.seed(), (std::uint64_t{seq_} << 8) + static_cast<std::uint64_t>(g) + 1);
+    group_cfg.routes = true;
+    const planner::CoverRoutes sub = planner::divide_and_route(
+        known_, share[static_cast<std::size_t>(g)], member_at, std::vector<double>(members.size(), 1.0), group_cfg, stop);
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      out.routes[static_cast<std::size_t>(members[k])] = sub.routes[k];
+      out.region_cells[static_cast<std::size_t>(members[k])] = sub.region_cells[k];
+    }
+    nlohmann::json entry = tasks::division_json(sub);
+    entry["group"] = g;
+    entry["robots"] = members;
+    within_groups.push_back(std::move(entry));
   }
-  nothing_to_drive_ = goals == 0 && !tracker_.complete();
   nlohmann::json cells_per_group = nlohmann::json::array();
   for (int g = 0; g < t.groups(); ++g) {
     int n = 0;
     for (std::uint8_t v : share[static_cast<std::size_t>(g)]) n += v;
     cells_per_group.push_back(n);
   }
-  nlohmann::json entry = tasks::division_json(plan);
-  entry["tick"] = ctx.tick();
-  entry["why"] = why;
-  entry["agents"] = flat ? "robots" : "leaders";
-  entry["cells_per_group"] = cells_per_group;
-  if (!within_groups.empty()) entry["within_groups"] = std::move(within_groups);
-  divisions_.push_back(std::move(entry));
-  std::fprintf(stderr, "gcs: cover division (%s) at tick %u: %s (by %s) after %d iterations, %.3f s\n", why,
-               ctx.tick(), planner::to_string(plan.darp.status), plan.darp.finished_by.c_str(), plan.darp.iterations,
-               plan.seconds_division);
-  return routes;
+  out.json = tasks::division_json(plan);
+  out.json["agents"] = "leaders";
+  out.json["cells_per_group"] = cells_per_group;
+  if (!within_groups.empty()) out.json["within_groups"] = std::move(within_groups);
+  out.status = plan.darp.status;
+  out.finished_by = plan.darp.finished_by;
+  out.iterations = plan.darp.iterations;
+  out.seconds = plan.seconds_division;
+  return out;
+}
+
+CoverGcsTask::Division CoverGcsTask::divide_among_robots(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
+                                                         const std::vector<int>& robots,
+                                                         const std::function<bool()>& stop) const {
+  const comm::Topology& t = ctx.setup.topology;
+  std::vector<Cell> at;
+  for (int r : robots) at.push_back(ctx.cell_of(r));
+  planner::CoverRoutesConfig cfg = tasks::cover_routes_config(config_, ctx.setup.world.scenario.seed(), seq_);
+  cfg.routes = true;
+  const planner::CoverRoutes plan =
+      planner::divide_and_route(known_, cells, at, std::vector<double>(robots.size(), 1.0), cfg, stop);
+  Division out;
+  out.group_of_cell = groups_of_cells(plan, robots, t, known_.size());
+  out.routes.resize(static_cast<std::size_t>(t.robots()));
+  out.region_cells.assign(static_cast<std::size_t>(t.robots()), 0);
+  for (std::size_t a = 0; a < robots.size(); ++a) {
+    out.routes[static_cast<std::size_t>(robots[a])] = plan.routes[a];
+    out.region_cells[static_cast<std::size_t>(robots[a])] = plan.region_cells[a];
+  }
+  out.json = tasks::division_json(plan);
+  out.json["agents"] = "robots";
+  out.status = plan.darp.status;
+  out.finished_by = plan.darp.finished_by;
+  out.iterations = plan.darp.iterations;
+  out.seconds = plan.seconds_division;
+  return out;
+}
+
+std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
+                                                    const char* why, const std::vector<int>& robots) {
+  const auto deadline = planner::deadline_after(config_.darp_time_limit_s(), std::chrono::steady_clock::now());
+  const std::function<bool()> stop = [deadline] { return std::chrono::steady_clock::now() > deadline; };
+  ++seq_;
+  Division chosen;
+  if (!config_.hierarchical()) {
+    chosen = divide_among_robots(ctx, cells, robots, stop);
+  } else {
+    chosen = divide_among_groups(ctx, cells, robots, stop);
+    if (config_.flat_candidate()) {
+      // A share grown from the leader's cell can lie far from the group's other robots; the
+      // division among all robots starts every region at its robot. The one cheaper to drive is
+      // driven (DriveCost; ties: the groups').
+      Division flat = divide_among_robots(ctx, cells, robots, stop);
+      const comm::Topology& t = ctx.setup.topology;
+      const DriveCost by_groups = drive_cost(chosen.routes, chosen.group_of_cell, t, known_);
+      const DriveCost by_robots = drive_cost(flat.routes, flat.group_of_cell, t, known_);
+      const nlohmann::json compared = {{"leaders", to_json(by_groups)}, {"robots", to_json(by_robots)}};
+      if (by_robots < by_groups) chosen = std::move(flat);
+      chosen.json["compared"] = compared;
+    }
+  }
+  std::size_t goals = 0;
+  for (std::size_t r = 0; r < chosen.routes.size(); ++r) {
+    if (chosen.routes[r].empty()) continue;
+    goals += chosen.routes[r].size();
+    ctx.record.append(route_frame(ctx.tick(), phase_, static_cast<int>(r), chosen.routes[r],
+                                  static_cast<std::uint32_t>(chosen.region_cells[r])));
+  }
+  nothing_to_drive_ = goals == 0 && !tracker_.complete();
+  chosen.json["tick"] = ctx.tick();
+  chosen.json["why"] = why;
+  divisions_.push_back(std::move(chosen.json));
+  std::fprintf(stderr, "gcs: cover division (%s) at tick %u among %s: %s (by %s) after %d iterations, %.3f s\n", why,
+               ctx.tick(), divisions_.back()["agents"].get<std::string>().c_str(), planner::to_string(chosen.status),
+               chosen.finished_by.c_str(), chosen.iterations, chosen.seconds);
+  return chosen.routes;
 }
 
 void CoverGcsTask::on_report(const task::Report& r, GcsContext& ctx) { drive_->on_report(r, ctx); }

@@ -222,4 +222,9 @@ void FakeSwarm::finish(bool sim_reports, const std::optional<std::string>& sim_j
   if (gcs_) gcs_->finish(std::chrono::milliseconds(sim_reports ? 15000 : 100));
 }
 
+nlohmann::json run_text(const std::string& scenario_text) {
+  FakeSwarm s(setup_from_text(scenario_text));
+  return s.run_to_end();
+}
+
 }  // namespace swarm::test

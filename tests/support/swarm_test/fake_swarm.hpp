@@ -120,4 +120,7 @@ class FakeSwarm {
   bool stopped_ = false;
 };
 
+// A scenario given as protobuf text run on the FakeBus to its end: what metrics.json would hold.
+nlohmann::json run_text(const std::string& scenario_text);
+
 }  // namespace swarm::test

@@ -5,7 +5,8 @@
 // The robots drive their routes through the traffic layer (docs/traffic.md): once every robot
 // stands still the GCS divides the cells (hierarchical, the default: among the living groups by
 // DARP with the leaders as agents, portions by living group size, then each group's share among
-// its robots; flat: among all living robots at once), gives every robot a route over its part, and
+// its robots, or, when its longest route is shorter, among all living robots at once; flat: only
+// the latter), gives every robot a route over its part, and
 // the mapf task's lifelong engine drives the routes as goal sequences in conflict-free windows
 // (tasks/mapf/mapf_gcs.hpp; the leaders run mapf's part). The GCS follows coverage from the
 // robots' cells in the clock (with the footprint radius) and judges the phase complete when every
@@ -14,12 +15,14 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "swarm/gcs/gcs_task.hpp"
 #include "swarm/planner/coverage/coverage_tracker.hpp"
+#include "swarm/planner/coverage/darp.hpp"
 #include "swarm/tasks/mapf/mapf_gcs.hpp"
 
 namespace swarm::gcs {
@@ -43,6 +46,25 @@ class CoverGcsTask : public GcsTask {
   std::vector<std::vector<planner::Cell>> divide(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
                                                  const char* why, const std::vector<int>& robots);
   std::vector<int> living_groups(const GcsContext& ctx) const;
+  // One division of `cells`: every robot id's route (empty: none) and region size, and what
+  // metrics.json keeps of it.
+  struct Division {
+    std::vector<std::vector<planner::Cell>> routes;
+    std::vector<int> region_cells;
+    std::vector<int> group_of_cell;  // per grid cell: the group whose part it is (-1: none)
+    nlohmann::json json;
+    planner::DarpStatus status{};
+    std::string finished_by;
+    int iterations = 0;
+    double seconds = 0;
+  };
+  // Among the living groups (DARP with the leaders as agents, portions by living group size), then
+  // each group's share among its robots in `robots`.
+  Division divide_among_groups(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
+                               const std::vector<int>& robots, const std::function<bool()>& stop) const;
+  // Among `robots` at once.
+  Division divide_among_robots(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
+                               const std::vector<int>& robots, const std::function<bool()>& stop) const;
 
   swarm::scenario::Cover config_;
   std::uint32_t phase_;
