@@ -24,7 +24,7 @@ void RobotAgent::follow(std::uint32_t id, std::vector<Cell> cells, std::uint32_t
         f.drops = std::move(drops);
         if (follow_progress_.state == RouteState::Finished) follow_progress_.state = RouteState::Active;
       }
-      f.release = std::max(f.release, std::min<std::uint32_t>(release, static_cast<std::uint32_t>(f.cells.size() - 1)));
+      f.release = std::max(f.release, release);
       return;
     }
   }
@@ -37,7 +37,7 @@ void RobotAgent::follow(std::uint32_t id, std::vector<Cell> cells, std::uint32_t
     if (route == id) release = std::max(release, up_to);
   }
   std::erase_if(early_releases_, [id](const auto& r) { return r.first == id; });
-  f.release = std::min<std::uint32_t>(release, f.cells.empty() ? 0 : static_cast<std::uint32_t>(f.cells.size() - 1));
+  f.release = release;
   f.picks = std::move(picks);
   f.drops = std::move(drops);
   f.start_tick = start_tick;
@@ -59,8 +59,9 @@ void RobotAgent::release(std::uint32_t id, std::uint32_t up_to) {
     }
     return;
   }
-  const auto last = static_cast<std::uint32_t>(follow_->cells.size() - 1);
-  follow_->release = std::max(follow_->release, std::min(up_to, last));
+  // Kept whole: it may reach into the route's next window, whose cells are still on their way
+  // (routes and releases travel on different topics).
+  follow_->release = std::max(follow_->release, up_to);
 }
 
 void RobotAgent::step_following(Step& out, std::uint32_t tick) {
@@ -89,10 +90,11 @@ void RobotAgent::step_following(Step& out, std::uint32_t tick) {
     follow_progress_.state = RouteState::Finished;
     return;
   }
+  const std::uint32_t release = std::min(f.release, last);
   // The next part: from where the robot stands to the release, once the last part is driven
   // (or none was sent). A part in flight is waited for.
   const bool part_done = f.sim_id == 0 || (report_.id == f.sim_id && f.base + report_.step == f.sent_to);
-  if (!part_done || f.release <= at) return;
+  if (!part_done || release <= at) return;
   if (f.sim_id == 0 && tick < f.start_tick) return;  // not yet: the route sets off at its start tick
   if (pose_ != f.cells[at]) {
     // Not where the route says: it cannot go on, and it stops, so that it does not drive on along
@@ -104,18 +106,18 @@ void RobotAgent::step_following(Step& out, std::uint32_t tick) {
     return;
   }
   out.path_changed = true;
-  out.path.assign(f.cells.begin() + at, f.cells.begin() + f.release + 1);
+  out.path.assign(f.cells.begin() + at, f.cells.begin() + release + 1);
   // An action at index `at` belongs to this part only if no part was sent before (the route's
   // first cell); otherwise the previous part ended there and carried it.
   const std::uint32_t from = f.sim_id == 0 ? at : at + 1;
   for (std::uint32_t p : f.picks) {
-    if (p >= from && p <= f.release) out.pick_steps.push_back(p - at);
+    if (p >= from && p <= release) out.pick_steps.push_back(p - at);
   }
   for (std::uint32_t d : f.drops) {
-    if (d >= from && d <= f.release) out.drop_steps.push_back(d - at);
+    if (d >= from && d <= release) out.drop_steps.push_back(d - at);
   }
   f.base = at;
-  f.sent_to = f.release;
+  f.sent_to = release;
 }
 
 }  // namespace swarm::member

@@ -118,6 +118,7 @@ class RobotAgent {
   // (sent_id_) carries which part of it (leader index = base + simulator index).
   struct Follow {
     std::vector<planner::Cell> cells;
+    // How far it is released; may lie past cells, in a next window of the route still on its way.
     std::uint32_t release = 0;
     std::vector<std::uint32_t> picks, drops;
     std::uint32_t sim_id = 0;  // 0: no part sent yet
