@@ -327,6 +327,16 @@ auto corridor() {
   });
 }
 
+// One tick of a robot following a route, standing on `at`, the simulator at `step` of the part it
+// was sent last.
+RobotAgent::Step following_tick(RobotAgent& robot, const OccupancyGrid& truth, Cell at, std::uint32_t step,
+                                planner::RouteState state) {
+  std::vector<float> ranges(kBeams);
+  planner::scan(truth, at, kBeams, 3.0f, ranges.data());
+  robot.sense(at, ranges, 3.0f, {robot.route_id(), step, state});
+  return robot.step();
+}
+
 // A release can arrive before its route (another topic; a lost message is sent again later): it
 // is kept, and the route is driven as far as it says when it comes. Releases of other routes
 // change nothing.
@@ -351,12 +361,8 @@ TEST(RobotAgent, TheRouteItFollowsGrownAtItsEndIsDrivenOnFromWhereItStands) {
   RobotAgent robot = agent_for(art.grid);
   const Cell a = art.at.at('A');
   const auto along = [a](int i) { return Cell{a.x + i, a.y}; };
-  // One tick with the robot on `at`, the simulator at `step` of the part it was sent last.
   const auto tick = [&](Cell at, std::uint32_t step, planner::RouteState state) {
-    std::vector<float> ranges(kBeams);
-    planner::scan(art.grid, at, kBeams, 3.0f, ranges.data());
-    robot.sense(at, ranges, 3.0f, {robot.route_id(), step, state});
-    return robot.step();
+    return following_tick(robot, art.grid, at, step, state);
   };
   robot.follow(7, {along(0), along(1), along(2)}, 2);
   RobotAgent::Step s = tick(along(0), 0, planner::RouteState::Active);
@@ -401,10 +407,7 @@ TEST(RobotAgent, AReleaseIntoTheNextWindowIsKeptUntilTheRouteGrows) {
   const Cell a = art.at.at('A');
   const auto along = [a](int i) { return Cell{a.x + i, a.y}; };
   const auto tick = [&](Cell at, std::uint32_t step, planner::RouteState state) {
-    std::vector<float> ranges(kBeams);
-    planner::scan(art.grid, at, kBeams, 3.0f, ranges.data());
-    robot.sense(at, ranges, 3.0f, {robot.route_id(), step, state});
-    return robot.step();
+    return following_tick(robot, art.grid, at, step, state);
   };
   robot.follow(7, {along(0), along(1), along(2)}, 2);
   RobotAgent::Step s = tick(along(0), 0, planner::RouteState::Active);
