@@ -1,5 +1,5 @@
-// Cell sets and paths as they arrive over DDS (TaskOrder.cells, Route.path_xy, routes_xy; comm
-// wraps these): decode_mask and cells_from_xy; and a mapf plan's action-dependency graph, which
+// Paths as they arrive over DDS (Route.path_xy, TaskOrder.routes_xy; comm wraps these):
+// cells_from_xy; and a mapf plan's action-dependency graph, which
 // the leader builds from the routes it receives and which refuses a plan with a conflict by
 // throwing std::invalid_argument.
 #include <algorithm>
@@ -14,10 +14,6 @@ using namespace swarm::planner;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 2) return 0;
-  const int width = 1 + (data[0] & 31), height = 1 + (data[1] & 31);
-  if (const auto mask = decode_mask(data + 2, size - 2, width, height)) {
-    if (mask->size() != static_cast<std::size_t>(width * height)) __builtin_trap();
-  }
   std::vector<std::int16_t> xy((size - 2) / 2);
   if (!xy.empty()) std::memcpy(xy.data(), data + 2, xy.size() * 2);
   const auto cells = cells_from_xy(xy.data(), xy.size());

@@ -1,4 +1,4 @@
-// Whole maps as they arrive over DDS (RoundStart, TaskOrder.known_map; app::decode_map wraps
+// Whole maps as they arrive over DDS (RoundStart; app::decode_map wraps
 // this): run-length and zstd run-length, into a map of the receiver's size. The first two bytes
 // choose that size (1..64 each) and the encoding; malformed bytes give false and leave the map as
 // it was; a map that decodes encodes back to bytes that decode the same.

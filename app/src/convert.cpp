@@ -70,17 +70,4 @@ std::vector<planner::CellChange> decode_patch(const std::vector<std::uint8_t>& d
   return *changes;
 }
 
-std::vector<std::uint8_t> encode_mask(const std::vector<std::uint8_t>& mask, int width, int height) {
-  return planner::encode_mask(mask, width, height);
-}
-
-std::vector<std::uint8_t> decode_mask(const std::vector<std::uint8_t>& data, int width, int height) {
-  auto mask = planner::decode_mask(data.data(), data.size(), width, height);
-  if (!mask) {
-    throw std::runtime_error("a cell set does not decode to " + std::to_string(width) + " x " +
-                             std::to_string(height) + " cells");
-  }
-  return *mask;
-}
-
 }  // namespace swarm::app

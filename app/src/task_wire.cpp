@@ -17,32 +17,12 @@ task::Clock task_clock(const msgs::Clock& clock, const comm::Topology& topology)
   return out;
 }
 
-msgs::TaskOrder order_msg(const task::Order& o, std::uint32_t phase, planner::PatchEncoding encoding,
-                          EncodedMapCache* cache) {
+msgs::TaskOrder order_msg(const task::Order& o, std::uint32_t phase) {
   msgs::TaskOrder m;
   m.phase(phase);
   m.group(o.group);
   m.kind(static_cast<std::uint8_t>(o.kind));
   m.seq(o.seq);
-  if (o.known_map) {
-    m.width(static_cast<std::uint16_t>(o.known_map->width()));
-    m.height(static_cast<std::uint16_t>(o.known_map->height()));
-    m.map_encoding(static_cast<std::uint8_t>(encoding));
-    if (!cache) {
-      m.known_map(encode_map(*o.known_map, encoding));
-    } else {
-      if (!cache->map || cache->encoding != encoding || !(*cache->map == *o.known_map)) {
-        cache->map = *o.known_map;
-        cache->encoding = encoding;
-        cache->bytes = encode_map(*o.known_map, encoding);
-      }
-      m.known_map(cache->bytes);
-    }
-  }
-  if (!o.cells.empty()) {
-    if (!o.known_map) throw std::logic_error("an order's cell set needs its known map");
-    m.cells(encode_mask(o.cells, o.known_map->width(), o.known_map->height()));
-  }
   m.values(o.values);
   bool acts = false;
   for (const auto& r : o.routes) {
@@ -57,30 +37,14 @@ msgs::TaskOrder order_msg(const task::Order& o, std::uint32_t phase, planner::Pa
   return m;
 }
 
-task::Order order_from(const msgs::TaskOrder& m, const config::MapFrame& frame) {
+task::Order order_from(const msgs::TaskOrder& m) {
   task::Order o;
   o.group = m.group();
-  if (m.kind() > static_cast<std::uint8_t>(task::OrderKind::Resume)) {
+  if (m.kind() > static_cast<std::uint8_t>(task::OrderKind::Rotate)) {
     throw std::runtime_error("an order of unknown kind " + std::to_string(m.kind()));
   }
   o.kind = static_cast<task::OrderKind>(m.kind());
   o.seq = m.seq();
-  const bool sized = m.width() != 0 || m.height() != 0;
-  if (sized && (static_cast<int>(m.width()) != frame.width || static_cast<int>(m.height()) != frame.height)) {
-    throw std::runtime_error("an order for a " + std::to_string(m.width()) + " x " + std::to_string(m.height()) +
-                             " map; the run's map is " + std::to_string(frame.width) + " x " +
-                             std::to_string(frame.height));
-  }
-  if (!m.known_map().empty()) {
-    if (!sized) throw std::runtime_error("an order's known map has no size");
-    planner::OccupancyGrid map(frame.width, frame.height, frame.resolution);
-    decode_map(m.known_map(), static_cast<planner::PatchEncoding>(m.map_encoding()), map);
-    o.known_map = std::move(map);
-  }
-  if (!m.cells().empty()) {
-    if (!sized) throw std::runtime_error("an order's cell set has no map size");
-    o.cells = decode_mask(m.cells(), frame.width, frame.height);
-  }
   o.values = m.values();
   if (m.route_robots().size() != m.routes_xy().size()) {
     throw std::runtime_error("an order names " + std::to_string(m.route_robots().size()) + " robots for " +

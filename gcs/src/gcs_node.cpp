@@ -92,7 +92,7 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const 
   auto& order = agent.advertise<msgs::TaskOrder>(topic::kTaskOrder, LinkClass::LeaderGcs, leaders);
   auto& round = agent.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, leaders);
   outlets_.order = [this, &order](const task::Order& o) {
-    msgs::TaskOrder m = app::order_msg(o, phase_, map_encoding(setup_), &order_map_);
+    msgs::TaskOrder m = app::order_msg(o, phase_);
     order.send(m);
   };
   outlets_.round = [this, &round](std::uint32_t fused_tick, const planner::OccupancyGrid& map) {

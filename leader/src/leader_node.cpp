@@ -285,7 +285,7 @@ void LeaderNode::dispatch(GroupContext& ctx) {
   for (const auto& o : orders_) {
     if (o.phase() != phase_) continue;
     try {
-      task.on_order(app::order_from(o, setup_.world.frame), ctx);
+      task.on_order(app::order_from(o), ctx);
     } catch (const std::exception& e) {
       agent_.drop_malformed(comm::topic::kTaskOrder, o.header().sender(), e.what());
     }

@@ -31,11 +31,7 @@ TEST(Convert, CellListsOfOddLengthAreRefused) {
   EXPECT_THROW((void)from_xy({1, 2, 3}), std::runtime_error);
 }
 
-TEST(Convert, MasksAndMapsMustHaveTheReceiversSize) {
-  std::vector<std::uint8_t> mask{1, 0, 0, 1, 1, 0};
-  const auto bytes = encode_mask(mask, 3, 2);
-  EXPECT_EQ(decode_mask(bytes, 3, 2), mask);
-  EXPECT_THROW((void)decode_mask(bytes, 4, 2), std::runtime_error);
+TEST(Convert, MapsMustHaveTheReceiversSize) {
   planner::OccupancyGrid g(3, 2);
   g.set(Cell{1, 1}, CellState::Occupied);
   for (auto e : {planner::PatchEncoding::RunLength, planner::PatchEncoding::ZstdRunLength}) {

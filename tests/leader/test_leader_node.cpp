@@ -206,7 +206,7 @@ TEST(LeaderNode, AStandbyTakesOverALostLeaderAndTheMissionCompletes) {
 }
 
 // Bytes that do not decode: a global map of the wrong size in a RoundStart (decoded in the
-// handler) and an order whose cell set is garbage (decoded as it arrives): each is logged and
+// handler) and an order whose route has an odd number of coordinates (decoded as it arrives): each is logged and
 // dropped, and the leader goes on with its work; a good window after them is driven.
 TEST(LeaderNode, DropsMalformedMessagesAndGoesOn) {
   const planner::OccupancyGrid truth = hall();
@@ -221,16 +221,6 @@ TEST(LeaderNode, DropsMalformedMessagesAndGoesOn) {
   auto& gcs = s.agent(t.gcs());
   auto& round = gcs.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, {t.leader(0)});
   auto& order = gcs.advertise<msgs::TaskOrder>(topic::kTaskOrder, LinkClass::LeaderGcs, {t.leader(0)});
-  const auto cover_order = [&](std::uint32_t seq, std::vector<std::uint8_t> cells) {
-    msgs::TaskOrder o;
-    o.seq(seq);
-    o.width(static_cast<std::uint16_t>(truth.width()));
-    o.height(static_cast<std::uint16_t>(truth.height()));
-    o.map_encoding(static_cast<std::uint8_t>(planner::PatchEncoding::RunLength));
-    o.known_map(app::encode_map(truth, planner::PatchEncoding::RunLength));
-    o.cells(std::move(cells));
-    order.send(o);
-  };
   s.script(t.gcs(), [&](const msgs::Clock& c) {
     if (c.tick() == 1) {
       msgs::RoundStart r;
@@ -240,7 +230,11 @@ TEST(LeaderNode, DropsMalformedMessagesAndGoesOn) {
       r.encoding(static_cast<std::uint8_t>(planner::PatchEncoding::RunLength));
       r.map_rle({7, 1, 200, 3});  // 7 cells, then a state that does not exist
       round.send(r);
-      cover_order(1, {0xff, 0xff, 0xff});
+      msgs::TaskOrder o;
+      o.seq(1);
+      o.route_robots({static_cast<std::uint16_t>(t.robot(0, 1))});
+      o.routes_xy({{1, 1, 2}});  // an odd number of coordinates
+      order.send(o);
     }
     if (c.tick() == 3) {
       // A good window: one step for the member, from where it stands to a free neighbour.

@@ -256,23 +256,6 @@ bool decode_grid(const std::uint8_t* data, std::size_t size, PatchEncoding encod
   return rle && decode_grid_rle(rle->data(), rle->size(), into);
 }
 
-std::vector<std::uint8_t> encode_mask(const std::vector<std::uint8_t>& mask, int width, int height) {
-  OccupancyGrid g(width, height);
-  for (std::size_t i = 0; i < mask.size() && i < g.size(); ++i) {
-    if (mask[i]) g.set(static_cast<int>(i), CellState::Free);
-  }
-  return encode_grid_rle(g);
-}
-
-std::optional<std::vector<std::uint8_t>> decode_mask(const std::uint8_t* data, std::size_t size, int width,
-                                                     int height) {
-  OccupancyGrid g(width, height);
-  if (!decode_grid_rle(data, size, g)) return std::nullopt;
-  std::vector<std::uint8_t> mask(g.size(), 0);
-  for (std::size_t i = 0; i < g.size(); ++i) mask[i] = g.at(static_cast<int>(i)) == CellState::Free;
-  return mask;
-}
-
 std::vector<std::int16_t> cells_to_xy(const std::vector<Cell>& cells) {
   std::vector<std::int16_t> xy;
   xy.reserve(cells.size() * 2);

@@ -33,11 +33,6 @@ std::vector<std::uint8_t> encode_patch(const std::vector<planner::CellChange>& c
 // `map_cells` cells. The encoding is read from the patch itself.
 std::vector<planner::CellChange> decode_patch(const std::vector<std::uint8_t>& data, std::size_t map_cells);
 
-// Cell sets (masks of a width x height map, 1 = in the set), run-length encoded.
-std::vector<std::uint8_t> encode_mask(const std::vector<std::uint8_t>& mask, int width, int height);
-// Throws std::runtime_error when the bytes do not decode to a mask of that size.
-std::vector<std::uint8_t> decode_mask(const std::vector<std::uint8_t>& data, int width, int height);
-
 // Whole global maps: run-length, zstd-compressed when the run's encoding is ZstdRunLength.
 std::vector<std::uint8_t> encode_map(const planner::OccupancyGrid& map, planner::PatchEncoding encoding);
 // Throws std::runtime_error when the bytes do not decode to a map of into's size.

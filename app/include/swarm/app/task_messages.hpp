@@ -33,7 +33,6 @@ enum class OrderKind : std::uint8_t {
   Progress = 1,  // other groups' route progress, relayed by the GCS
   Hold = 2,      // stop handing out work; report GroupState::Held when still
   Rotate = 3,    // mapf: robots that move round a cycle, at one tick
-  Resume = 4,    // collect: a group's work for a leader that took it over
 };
 
 // A route the GCS planned for one robot.
@@ -52,11 +51,6 @@ struct Order {
   std::uint16_t group = 0;  // or kAllGroups
   OrderKind kind = OrderKind::Work;
   std::uint32_t seq = 0;
-  // The known map the group works on (none: unchanged). It travels in the run's map encoding and
-  // is the run's map size.
-  std::optional<planner::OccupancyGrid> known_map;
-  // A cell set over known_map (1 = in it, e.g. the group's share); needs known_map. Empty: none.
-  std::vector<std::uint8_t> cells;
   std::vector<std::int32_t> values;  // the task's numbers
   std::vector<PlannedRoute> routes;  // routes planned at the GCS
 };

@@ -20,20 +20,9 @@ namespace swarm::app {
 // topology's first candidates).
 task::Clock task_clock(const msgs::Clock& clock, const comm::Topology& topology);
 
-// The last known map an order carried, encoded: a task sends one known map to every group, and
-// encoding it (zstd) once per order would cost the GCS that much more time on a large map.
-struct EncodedMapCache {
-  std::optional<planner::OccupancyGrid> map;
-  planner::PatchEncoding encoding = planner::PatchEncoding::RunLength;
-  std::vector<std::uint8_t> bytes;
-};
-
-// A known map travels in `encoding` (the run's map encoding); `cache`, when given, spares encoding
-// the same map again.
-msgs::TaskOrder order_msg(const task::Order& order, std::uint32_t phase, planner::PatchEncoding encoding,
-                          EncodedMapCache* cache = nullptr);
-// Throws when a map or cell set does not decode, or is not of the run's map size (`frame`).
-task::Order order_from(const msgs::TaskOrder& msg, const config::MapFrame& frame);
+msgs::TaskOrder order_msg(const task::Order& order, std::uint32_t phase);
+// Throws on an unknown kind, or routes whose pick-up and drop steps do not fit them.
+task::Order order_from(const msgs::TaskOrder& msg);
 
 msgs::TaskReport report_msg(const task::Report& report, std::uint32_t phase);
 task::Report report_from(const msgs::TaskReport& msg);

@@ -77,7 +77,6 @@ class GcsNode {
   std::vector<std::uint32_t> phase_starts_;
   std::vector<std::uint32_t> phase_ends_;
   GcsOutlets outlets_;
-  app::EncodedMapCache order_map_;  // the known map the last order carried, encoded
   std::function<void(std::uint32_t, const std::string&, bool settle)> announce_phase_;
   bool settling_ = false;       // phase_ waits for its robots to stand still
   std::vector<bool> settled_;   // per group, while settling: its robots stand

@@ -70,12 +70,6 @@ inline constexpr std::size_t kMaxPatchChanges = std::size_t{1} << 24;
 [[nodiscard]] bool decode_grid(const std::uint8_t* data, std::size_t size, PatchEncoding encoding,
                                OccupancyGrid& into);
 
-// Cell sets: a mask of a width x height map (1 = in the set), run-length encoded as a grid whose
-// Free cells are the set. decode_mask: nullopt unless the bytes give exactly width x height cells.
-[[nodiscard]] std::vector<std::uint8_t> encode_mask(const std::vector<std::uint8_t>& mask, int width, int height);
-[[nodiscard]] std::optional<std::vector<std::uint8_t>> decode_mask(const std::uint8_t* data, std::size_t size,
-                                                                   int width, int height);
-
 // Cells as flat x0, y0, x1, y1, ... sequences (paths in messages). nullopt for an odd length.
 [[nodiscard]] std::vector<std::int16_t> cells_to_xy(const std::vector<Cell>& cells);
 [[nodiscard]] std::optional<std::vector<Cell>> cells_from_xy(const std::int16_t* xy, std::size_t n);
