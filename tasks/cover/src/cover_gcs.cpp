@@ -103,6 +103,16 @@ std::vector<int> groups_of_cells(const planner::CoverRoutes& plan, const std::ve
 
 }  // namespace
 
+void CoverGcsTask::Division::describe(const planner::CoverRoutes& plan, const char* agents) {
+  json = tasks::division_json(plan);
+  json["agents"] = agents;
+  char line[160];
+  std::snprintf(line, sizeof line, "among %s: %s (by %s) after %d iterations, %.3f s", agents,
+                planner::to_string(plan.darp.status), plan.darp.finished_by.c_str(), plan.darp.iterations,
+                plan.seconds_division);
+  summary = line;
+}
+
 CoverGcsTask::Division CoverGcsTask::divide_among_groups(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
                                                          const std::vector<int>& robots,
                                                          const std::function<bool()>& stop) const {
@@ -163,14 +173,9 @@ CoverGcsTask::Division CoverGcsTask::divide_among_groups(const GcsContext& ctx, 
     for (std::uint8_t v : share[static_cast<std::size_t>(g)]) n += v;
     cells_per_group.push_back(n);
   }
-  out.json = tasks::division_json(plan);
-  out.json["agents"] = "leaders";
+  out.describe(plan, "leaders");
   out.json["cells_per_group"] = cells_per_group;
   if (!within_groups.empty()) out.json["within_groups"] = std::move(within_groups);
-  out.status = plan.darp.status;
-  out.finished_by = plan.darp.finished_by;
-  out.iterations = plan.darp.iterations;
-  out.seconds = plan.seconds_division;
   return out;
 }
 
@@ -192,12 +197,7 @@ CoverGcsTask::Division CoverGcsTask::divide_among_robots(const GcsContext& ctx, 
     out.routes[static_cast<std::size_t>(robots[a])] = plan.routes[a];
     out.region_cells[static_cast<std::size_t>(robots[a])] = plan.region_cells[a];
   }
-  out.json = tasks::division_json(plan);
-  out.json["agents"] = "robots";
-  out.status = plan.darp.status;
-  out.finished_by = plan.darp.finished_by;
-  out.iterations = plan.darp.iterations;
-  out.seconds = plan.seconds_division;
+  out.describe(plan, "robots");
   return out;
 }
 
@@ -235,9 +235,7 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
   chosen.json["tick"] = ctx.tick();
   chosen.json["why"] = why;
   divisions_.push_back(std::move(chosen.json));
-  std::fprintf(stderr, "gcs: cover division (%s) at tick %u among %s: %s (by %s) after %d iterations, %.3f s\n", why,
-               ctx.tick(), divisions_.back()["agents"].get<std::string>().c_str(), planner::to_string(chosen.status),
-               chosen.finished_by.c_str(), chosen.iterations, chosen.seconds);
+  std::fprintf(stderr, "gcs: cover division (%s) at tick %u: %s\n", why, ctx.tick(), chosen.summary.c_str());
   return chosen.routes;
 }
 

@@ -22,7 +22,7 @@
 
 #include "swarm/gcs/gcs_task.hpp"
 #include "swarm/planner/coverage/coverage_tracker.hpp"
-#include "swarm/planner/coverage/darp.hpp"
+#include "swarm/planner/coverage/cover_routes.hpp"
 #include "swarm/tasks/mapf/mapf_gcs.hpp"
 
 namespace swarm::gcs {
@@ -53,10 +53,9 @@ class CoverGcsTask : public GcsTask {
     std::vector<int> region_cells;
     std::vector<int> group_of_cell;  // per grid cell: the group whose part it is (-1: none)
     nlohmann::json json;
-    planner::DarpStatus status{};
-    std::string finished_by;
-    int iterations = 0;
-    double seconds = 0;
+    std::string summary;  // for the log
+    // Fills json and summary from the division's plan; `agents`: "leaders" or "robots".
+    void describe(const planner::CoverRoutes& plan, const char* agents);
   };
   // Among the living groups (DARP with the leaders as agents, portions by living group size), then
   // each group's share among its robots in `robots`.
