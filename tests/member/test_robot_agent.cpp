@@ -353,17 +353,25 @@ TEST(RobotAgent, AReleaseThatArrivesBeforeItsRouteIsKeptForIt) {
   EXPECT_EQ(s.path, route);  // to index 3, not only 1
 }
 
+// A robot at the west end of the corridor that follows routes along it.
+class RobotInACorridor : public ::testing::Test {
+ protected:
+  // The corridor's i-th cell from the robot's start.
+  Cell along(int i) const { return Cell{start_.x + i, start_.y}; }
+  // One tick on `at`, the simulator at `step` of the part the robot was sent last.
+  RobotAgent::Step tick(Cell at, std::uint32_t step, planner::RouteState state) {
+    return following_tick(robot, art_.grid, at, step, state);
+  }
+
+  decltype(corridor()) art_ = corridor();
+  Cell start_ = art_.at.at('A');
+  RobotAgent robot = agent_for(art_.grid);
+};
+
 // A leader extending its plan by the next window sends the route again under its id with more
 // cells at its end: the robot keeps its place on it and drives on from where it stands, even after
 // it had finished the shorter one; the shorter one arriving after it (link jitter) is ignored.
-TEST(RobotAgent, TheRouteItFollowsGrownAtItsEndIsDrivenOnFromWhereItStands) {
-  const auto art = corridor();
-  RobotAgent robot = agent_for(art.grid);
-  const Cell a = art.at.at('A');
-  const auto along = [a](int i) { return Cell{a.x + i, a.y}; };
-  const auto tick = [&](Cell at, std::uint32_t step, planner::RouteState state) {
-    return following_tick(robot, art.grid, at, step, state);
-  };
+TEST_F(RobotInACorridor, TheRouteItFollowsGrownAtItsEndIsDrivenOnFromWhereItStands) {
   robot.follow(7, {along(0), along(1), along(2)}, 2);
   RobotAgent::Step s = tick(along(0), 0, planner::RouteState::Active);
   ASSERT_TRUE(s.path_changed);
@@ -401,14 +409,7 @@ TEST(RobotAgent, TheRouteItFollowsGrownAtItsEndIsDrivenOnFromWhereItStands) {
 // that far once the route has grown. Cut at the route's end, it was lost, and the robot stood one
 // step short for good (the chain on rectangle with member<->leader delay 3 +- 2 ticks, seed 5:
 // collect stalled at 14 of 15 objects, the last drop's cell under that robot).
-TEST(RobotAgent, AReleaseIntoTheNextWindowIsKeptUntilTheRouteGrows) {
-  const auto art = corridor();
-  RobotAgent robot = agent_for(art.grid);
-  const Cell a = art.at.at('A');
-  const auto along = [a](int i) { return Cell{a.x + i, a.y}; };
-  const auto tick = [&](Cell at, std::uint32_t step, planner::RouteState state) {
-    return following_tick(robot, art.grid, at, step, state);
-  };
+TEST_F(RobotInACorridor, AReleaseIntoTheNextWindowIsKeptUntilTheRouteGrows) {
   robot.follow(7, {along(0), along(1), along(2)}, 2);
   RobotAgent::Step s = tick(along(0), 0, planner::RouteState::Active);
   ASSERT_TRUE(s.path_changed);
