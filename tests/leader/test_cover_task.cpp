@@ -95,32 +95,59 @@ TEST(CoverTask, ThroughTheTrafficLayerEveryCellIsCoveredWithoutAConflict) {
   }
 }
 
-// After exploration a group's robots stand scattered, and a share grown from the leader's cell
-// sends its members across the map. The division among all robots is made too, and the one cheaper
-// to drive is driven: the shorter longest route, then fewer moves onto other groups' parts, then
-// fewer moves in all. On warehouse-5x8, seed 1, the groups' division's longest route is 22 moves
-// and the robots' 18.
-TEST(CoverTask, AfterExplorationTheDivisionCheaperToDriveIsDriven) {
-  const auto m = swarm::test::run_text(
+// The explore, cover chain on warehouse-5x8, seed 1 (107 cells left for 9 robots), with these
+// cover settings: the metrics, once the cover phase covered everything without a conflict.
+nlohmann::json warehouse_after_exploration(const std::string& cover_settings) {
+  auto m = swarm::test::run_text(
       "map: 'warehouse-5x8' groups: 3 robots_per_group: 3 max_ticks: 3000 seed: 1 "
-      "mission { phase { explore {} } phase { cover {} } }");
-  const auto& cover = expect_covered_without_a_conflict(m);
+      "mission { phase { explore {} } phase { cover { " + cover_settings + " } } }");
+  expect_covered_without_a_conflict(m);
+  return m;
+}
+
+// After exploration a group's robots stand scattered, and a share grown from the leader's cell
+// sends its members across the map; the cells left are few and scattered. The division among all
+// robots and the tours are made too, each rehearsed through the traffic layer, and the one
+// cheapest to drive is driven: the fewest estimated ticks, then planned steps, then moves onto
+// other groups' parts, then moves in all. Seed 1: the groups' division (longest route 22 moves)
+// is estimated at 36 ticks, the robots' (18) at 20 and the tours' (16) at 20 with 17 planned steps
+// against 18.
+TEST(CoverTask, AfterExplorationTheDivisionCheaperToDriveIsDriven) {
+  const auto m = warehouse_after_exploration("");
+  const auto& cover = phase_named(m, "cover");
   const auto& division = cover["task"]["divisions"][0];
   const auto& compared = division["compared"];
-  ASSERT_TRUE(compared.contains("leaders") && compared.contains("robots")) << division.dump(1);
-  const auto key = [&](const char* agents) {
-    const auto& c = compared[agents];
-    return std::make_tuple(c["longest_route_moves"].get<int>(), c["moves_in_other_groups_parts"].get<int>(),
-                           c["route_moves"].get<int>());
+  ASSERT_TRUE(compared.contains("leaders") && compared.contains("robots") && compared.contains("tours"))
+      << division.dump(1);
+  const auto key = [&](const char* candidate) {
+    const auto& c = compared[candidate];
+    return std::make_tuple(c["estimated_ticks"].get<int>(), c["planned_steps"].get<int>(),
+                           c["moves_in_other_groups_parts"].get<int>(), c["route_moves"].get<int>());
   };
-  EXPECT_EQ(division["agents"], key("robots") < key("leaders") ? "robots" : "leaders") << division.dump(1);
-  EXPECT_EQ(std::get<0>(key("leaders")), 22);
-  EXPECT_EQ(std::get<0>(key("robots")), 18);
-  EXPECT_EQ(division["agents"], "robots");
-  // Driven without a push aside: the busiest robot made its route's 18 moves.
+  const auto longest = [&](const char* candidate) { return compared[candidate]["longest_route_moves"].get<int>(); };
+  EXPECT_EQ(longest("leaders"), 22);
+  EXPECT_EQ(longest("robots"), 18);
+  EXPECT_EQ(longest("tours"), 16);
+  EXPECT_EQ(std::get<0>(key("leaders")), 36);
+  EXPECT_EQ(std::get<0>(key("robots")), 20);
+  EXPECT_EQ(std::get<0>(key("tours")), 20);
+  EXPECT_LT(key("tours"), key("robots"));
+  EXPECT_LT(key("tours"), key("leaders"));
+  EXPECT_EQ(division["driven"], "tours") << division.dump(1);
+  EXPECT_EQ(division["method"], "tours");
+  // Driven without a push aside: the busiest robot made its route's 16 moves.
   int busiest = 0;
   for (const auto& [name, r] : cover["motion"]["per_robot"].items()) busiest = std::max(busiest, r["moves"].get<int>());
-  EXPECT_EQ(busiest, 18);
+  EXPECT_EQ(busiest, 16);
+}
+
+// Few cells left but the tours switched off (tour_candidate_cells: 0): only the DARP divisions are
+// compared.
+TEST(CoverTask, WithoutTheTourCandidateOnlyTheDivisionsAreCompared) {
+  const auto m = warehouse_after_exploration("tour_candidate_cells: 0");
+  const auto& division = phase_named(m, "cover")["task"]["divisions"][0];
+  EXPECT_FALSE(division["compared"].contains("tours")) << division.dump(1);
+  EXPECT_EQ(division["driven"], "robots") << division.dump(1);
 }
 
 // A time limit past the clock's range is no limit: the divisions run as without one (it used to

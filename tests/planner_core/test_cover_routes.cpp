@@ -23,26 +23,11 @@ std::vector<std::uint8_t> free_cells(const OccupancyGrid& g) {
   return m;
 }
 
-// Independent check: each route starts at its robot, every step is a legal 4-connected action on
-// the map, and together the routes stand on every cell of the set.
+// Independent check (coverage_check.hpp): each route starts at its robot, every step is a legal
+// 4-connected action on the map, and together the routes stand on every reachable cell of the set.
 void expect_covers(const OccupancyGrid& map, const std::vector<std::uint8_t>& set, const std::vector<Cell>& robots,
                    const std::vector<std::vector<Cell>>& routes) {
-  ASSERT_EQ(routes.size(), robots.size());
-  std::vector<std::uint8_t> seen(map.size(), 0);
-  for (std::size_t r = 0; r < routes.size(); ++r) {
-    ASSERT_FALSE(routes[r].empty());
-    EXPECT_EQ(routes[r].front(), robots[r]) << "robot " << r;
-    for (std::size_t k = 0; k < routes[r].size(); ++k) {
-      if (k > 0) {
-        EXPECT_EQ(MotionModel::four().check(map, routes[r][k - 1], routes[r][k]), MoveCheck::Ok)
-            << "robot " << r << " step " << k;
-      }
-      seen[static_cast<std::size_t>(map.index(routes[r][k]))] = 1;
-    }
-  }
-  int missed = 0;
-  for (std::size_t i = 0; i < map.size(); ++i) missed += set[i] && !seen[i];
-  EXPECT_EQ(missed, 0);
+  for (const std::string& p : check_cover_routes(map, set, robots, routes)) ADD_FAILURE() << p;
 }
 
 // A robot whose nearest cell of the set lies in a sliver of it (two cells cut off from the rest,

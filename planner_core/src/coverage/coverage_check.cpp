@@ -133,4 +133,41 @@ std::vector<std::string> check_coverage_path(const OccupancyGrid& region, Cell s
   return problems;
 }
 
+std::vector<std::string> check_cover_routes(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells,
+                                            const std::vector<Cell>& robots,
+                                            const std::vector<std::vector<Cell>>& routes) {
+  if (routes.size() != robots.size()) {
+    return {std::to_string(routes.size()) + " routes for " + std::to_string(robots.size()) + " robots"};
+  }
+  std::vector<std::string> problems;
+  const MotionModel four = MotionModel::four();
+  std::vector<char> visited(map.size(), 0);
+  for (std::size_t r = 0; r < routes.size(); ++r) {
+    const std::string who = "robot " + std::to_string(r);
+    const std::vector<Cell>& route = routes[r];
+    if (route.empty() || route.front() != robots[r]) {
+      problems.push_back(who + ": the route does not start at its cell " + at(robots[r]));
+      continue;
+    }
+    if (map.is_free(route.front())) visited[map.index(route.front())] = 1;
+    for (std::size_t k = 1; k < route.size(); ++k) {
+      const MoveCheck m = four.check(map, route[k - 1], route[k]);
+      if (m != MoveCheck::Ok) {
+        problems.push_back(who + ": step " + std::to_string(k) + " " + at(route[k - 1]) + " -> " + at(route[k]) + ": " +
+                           to_string(m));
+        break;
+      }
+      visited[map.index(route[k])] = 1;
+    }
+  }
+  const std::vector<char> reachable = flood(map, robots, [&](Cell c) { return map.is_free(c); });
+  int missed = 0;
+  Cell first{};
+  for (int i = 0; i < static_cast<int>(map.size()) && i < static_cast<int>(cells.size()); ++i) {
+    if (cells[static_cast<std::size_t>(i)] && reachable[i] && !visited[i] && missed++ == 0) first = map.cell_of(i);
+  }
+  if (missed > 0) problems.push_back(std::to_string(missed) + " cells of the set never visited, e.g. " + at(first));
+  return problems;
+}
+
 }  // namespace swarm::planner

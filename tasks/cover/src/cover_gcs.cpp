@@ -5,10 +5,14 @@
 #include <compare>
 #include <cstdio>
 #include <functional>
+#include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include "swarm/config/task_config.hpp"
+#include "swarm/planner/coverage/cover_tours.hpp"
 #include "swarm/planner/grid/deadline.hpp"
+#include "swarm/planner/traffic/rehearsal.hpp"
 #include "swarm/tasks/cover/cover_settings.hpp"
 #include "swarm/planner/explore/frontier.hpp"
 
@@ -57,17 +61,21 @@ std::string CoverGcsTask::given_up() const {
 
 namespace {
 
-// What a division costs to drive, compared in this order: the moves of its longest route (the
-// makespan it sets); its moves onto cells of another group's part, each a step that waits on
-// another group's robot, whose progress reaches its leader through the GCS (about four ticks a
-// wait against one within a group, docs/traffic.md); the moves of all its routes.
+// What a division costs to drive, compared in this order: the ticks its drive is estimated to
+// take (a rehearsal of the traffic layer's plan for it, driven by the plan's dependencies with
+// each wait for another robot costing its messages' way round: more across groups, whose progress
+// reaches the other leaders through the GCS, docs/traffic.md); the steps that plan takes (the
+// longest route plus whatever the robots wait or step aside for one another); its moves onto
+// cells of another group's part; the moves of all its routes. Its longest route is kept to show.
 struct DriveCost {
-  std::size_t longest = 0, foreign = 0, all = 0;
+  int driven = 0, planned = 0;
+  std::size_t foreign = 0, all = 0, longest = 0;
   auto operator<=>(const DriveCost&) const = default;
 };
 
 DriveCost drive_cost(const std::vector<std::vector<Cell>>& routes, const std::vector<int>& group_of_cell,
-                     const comm::Topology& t, const planner::OccupancyGrid& map) {
+                     const comm::Topology& t, const planner::OccupancyGrid& map,
+                     const std::function<std::pair<int, int>(const std::vector<std::vector<Cell>>&)>& rehearse) {
   DriveCost c;
   for (std::size_t r = 0; r < routes.size(); ++r) {
     const std::size_t moves = routes[r].empty() ? 0 : routes[r].size() - 1;
@@ -79,11 +87,16 @@ DriveCost drive_cost(const std::vector<std::vector<Cell>>& routes, const std::ve
       c.foreign += g >= 0 && g != own ? 1 : 0;
     }
   }
+  std::tie(c.driven, c.planned) = rehearse(routes);
   return c;
 }
 
 nlohmann::json to_json(const DriveCost& c) {
-  return {{"longest_route_moves", c.longest}, {"moves_in_other_groups_parts", c.foreign}, {"route_moves", c.all}};
+  return {{"estimated_ticks", c.driven},
+          {"planned_steps", c.planned},
+          {"moves_in_other_groups_parts", c.foreign},
+          {"route_moves", c.all},
+          {"longest_route_moves", c.longest}};
 }
 
 // Per grid cell, the group of the robot (or leader) whose DARP agent it went to; -1: none.
@@ -201,29 +214,120 @@ CoverGcsTask::Division CoverGcsTask::divide_among_robots(const GcsContext& ctx, 
   return out;
 }
 
+CoverGcsTask::Division CoverGcsTask::divide_by_tours(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
+                                                     const std::vector<int>& robots,
+                                                     const std::function<bool()>& stop) const {
+  const comm::Topology& t = ctx.setup.topology;
+  std::vector<Cell> at;
+  for (int r : robots) at.push_back(ctx.cell_of(r));
+  planner::CoverToursConfig cfg;
+  cfg.max_targets = config_.tour_candidate_cells();
+  const planner::CoverTours tours = planner::cover_tours(known_, cells, at, cfg, stop);
+  Division out;
+  if (!tours.solved) return out;
+  out.routes.resize(static_cast<std::size_t>(t.robots()));
+  out.region_cells.assign(static_cast<std::size_t>(t.robots()), 0);
+  out.group_of_cell.assign(known_.size(), -1);
+  for (std::size_t i = 0; i < tours.owner.size(); ++i) {
+    const int k = tours.owner[i];
+    if (k >= 0) out.group_of_cell[i] = t.group_of(static_cast<comm::AgentId>(robots[static_cast<std::size_t>(k)]));
+  }
+  std::vector<int> cells_per_robot;
+  for (std::size_t a = 0; a < robots.size(); ++a) {
+    out.routes[static_cast<std::size_t>(robots[a])] = tours.routes[a];
+    out.region_cells[static_cast<std::size_t>(robots[a])] = tours.region_cells[a];
+    cells_per_robot.push_back(tours.region_cells[a]);
+  }
+  out.json = {{"agents", "robots"},
+              {"method", "tours"},
+              {"targets", tours.targets},
+              {"unreachable_cells", tours.unreachable},
+              {"improvements", tours.improvements},
+              {"stopped", tours.stopped},
+              {"cells", cells_per_robot},
+              {"seconds", tours.seconds}};
+  char line[160];
+  std::snprintf(line, sizeof line, "as tours among robots: %zu cells, longest route %zu moves, %.3f s", tours.targets,
+                planner::longest_moves(tours.routes), tours.seconds);
+  out.summary = line;
+  return out;
+}
+
+std::pair<int, int> CoverGcsTask::rehearsed_ticks(const GcsContext& ctx, const std::vector<std::vector<Cell>>& routes,
+                                                  const std::vector<int>& robots) const {
+  const comm::Topology& t = ctx.setup.topology;
+  // As the layer plans (tasks/mapf/mapf_windows.cpp): the robots' cells free, everyone but
+  // `robots` standing still, every route cell a goal, the same windows and seed.
+  planner::OccupancyGrid map = known_;
+  std::vector<planner::traffic::Agent> agents(static_cast<std::size_t>(t.robots()));
+  std::size_t longest = 0;
+  for (int r = 0; r < t.robots(); ++r) {
+    map.set(ctx.cell_of(r), planner::CellState::Free);
+    agents[static_cast<std::size_t>(r)].at = ctx.cell_of(r);
+    agents[static_cast<std::size_t>(r)].fixed = true;
+  }
+  for (const int r : robots) {
+    auto& a = agents[static_cast<std::size_t>(r)];
+    a.fixed = false;
+    a.goals = routes[static_cast<std::size_t>(r)];
+    longest = std::max(longest, a.goals.size());
+  }
+  const int window = static_cast<int>(config_.traffic_window_steps());
+  const planner::traffic::Rehearsal plan =
+      planner::traffic::rehearse(map, planner::MotionModel::four(), std::move(agents), window,
+                                 traffic_config(ctx.setup.world.scenario.seed(), phase_), 4 * static_cast<int>(longest) + 4 * window);
+  if (!plan.finished) return {plan.makespan, plan.makespan};
+  // A dependency's cost, from the robot waited for leaving to the other entering: the plan's own
+  // tick, and the progress's way to the waiting robot's leader and its release's way back; across
+  // groups through the GCS as well (measured with exact links: 1 tick within a group, 4 across;
+  // docs/traffic.md), each link's mean delay on top.
+  const comm::LinkTable& links = ctx.setup.links;
+  const auto mean_delay = [&](comm::LinkClass c) {
+    return static_cast<int>(links[c].delay_ticks) + static_cast<int>(links[c].jitter_ticks) / 2;
+  };
+  const int member_leader = 2 * mean_delay(comm::LinkClass::MemberLeader);
+  const int through_gcs = 2 * mean_delay(comm::LinkClass::LeaderGcs);
+  const auto lag = [&](int from, int to) {
+    const bool same_group = t.group_of(static_cast<comm::AgentId>(from)) == t.group_of(static_cast<comm::AgentId>(to));
+    return 1 + (same_group ? 1 + member_leader : 4 + member_leader + through_gcs);
+  };
+  try {
+    return {planner::traffic::driven_ticks(plan.paths, lag), plan.makespan};
+  } catch (const std::invalid_argument&) {
+    return {plan.makespan, plan.makespan};  // never: the layer's plans are free of conflicts
+  }
+}
+
 std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
                                                     const char* why, const std::vector<int>& robots) {
   const auto deadline = planner::deadline_after(config_.darp_time_limit_s(), std::chrono::steady_clock::now());
   const std::function<bool()> stop = [deadline] { return std::chrono::steady_clock::now() > deadline; };
   ++seq_;
-  Division chosen;
-  if (!config_.hierarchical()) {
-    chosen = divide_among_robots(ctx, cells, robots, stop);
-  } else {
-    chosen = divide_among_groups(ctx, cells, robots, stop);
-    if (config_.flat_candidate()) {
-      // A share grown from the leader's cell can lie far from the group's other robots; the
-      // division among all robots starts every region at its robot. The one cheaper to drive is
-      // driven (DriveCost; ties: the groups').
-      Division flat = divide_among_robots(ctx, cells, robots, stop);
-      const comm::Topology& t = ctx.setup.topology;
-      const DriveCost by_groups = drive_cost(chosen.routes, chosen.group_of_cell, t, known_);
-      const DriveCost by_robots = drive_cost(flat.routes, flat.group_of_cell, t, known_);
-      const nlohmann::json compared = {{"leaders", to_json(by_groups)}, {"robots", to_json(by_robots)}};
-      if (by_robots < by_groups) chosen = std::move(flat);
-      chosen.json["compared"] = compared;
-    }
+  // The candidates, in the order ties go: the groups' division (hierarchical), the division among
+  // all robots (flat, or hierarchical with flat_candidate: a share grown from the leader's cell
+  // can lie far from the group's other robots, while this one starts every region at its robot),
+  // the tours (few cells left). The one cheapest to drive (DriveCost) is driven.
+  std::vector<std::pair<const char*, Division>> candidates;
+  if (config_.hierarchical()) candidates.emplace_back("leaders", divide_among_groups(ctx, cells, robots, stop));
+  if (!config_.hierarchical() || config_.flat_candidate()) {
+    candidates.emplace_back("robots", divide_among_robots(ctx, cells, robots, stop));
   }
+  if (config_.tour_candidate_cells() > 0) {
+    Division tours = divide_by_tours(ctx, cells, robots, stop);
+    if (!tours.json.is_null()) candidates.emplace_back("tours", std::move(tours));
+  }
+  std::size_t best = 0;
+  nlohmann::json compared = nlohmann::json::object();
+  std::vector<DriveCost> costs;
+  const auto rehearse = [&](const std::vector<std::vector<Cell>>& routes) { return rehearsed_ticks(ctx, routes, robots); };
+  for (const auto& [name, d] : candidates) {
+    costs.push_back(drive_cost(d.routes, d.group_of_cell, ctx.setup.topology, known_, rehearse));
+    compared[name] = to_json(costs.back());
+    if (costs.back() < costs[best]) best = costs.size() - 1;
+  }
+  Division chosen = std::move(candidates[best].second);
+  chosen.json["driven"] = candidates[best].first;
+  if (candidates.size() > 1) chosen.json["compared"] = std::move(compared);
   std::size_t goals = 0;
   for (std::size_t r = 0; r < chosen.routes.size(); ++r) {
     if (chosen.routes[r].empty()) continue;

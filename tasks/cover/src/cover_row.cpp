@@ -43,6 +43,9 @@ class CoverJudge : public sim::PhaseJudge {
             {"covered_cells", world.covered_cells()},
             {"target_cells", world.coverage_target_cells()},
             {"makespan_ticks", full_tick_ ? nlohmann::json(*full_tick_ - facts.start_tick) : nlohmann::json(nullptr)},
+            // The orders' way to the robots: ticks from the phase's start to the first move.
+            {"first_move_ticks", facts.first_move_tick ? nlohmann::json(*facts.first_move_tick - facts.start_tick)
+                                                       : nlohmann::json(nullptr)},
             {"reach_bound_moves", reach_bound_ ? nlohmann::json(*reach_bound_) : nlohmann::json(nullptr)},
             {"coverage_curve", curve}};
   }

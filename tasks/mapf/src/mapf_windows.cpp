@@ -17,6 +17,10 @@ constexpr int kIdleWindowsLimit = 8;
 constexpr const char* kNextWindow = "window";
 }  // namespace
 
+planner::traffic::Config traffic_config(std::uint64_t seed, std::uint32_t phase) {
+  return planner::traffic::Config{planner::mix_seed({seed, 9100 + std::uint64_t{phase}})};
+}
+
 MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, Lifelong lifelong)
     : config_(config),
       phase_(phase),
@@ -59,7 +63,7 @@ void MapfGcsTask::plan_window(GcsContext& ctx, const char* why) {
     } else {
       traffic_ = std::make_unique<planner::traffic::Planner>(
           std::move(map), motion_,
-          planner::traffic::Config{planner::mix_seed({ctx.setup.world.scenario.seed(), 9100 + phase_})});
+          traffic_config(ctx.setup.world.scenario.seed(), phase_));
     }
   }
   std::vector<planner::traffic::Agent> agents(static_cast<std::size_t>(t.robots()));

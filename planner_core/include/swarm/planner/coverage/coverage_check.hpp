@@ -10,6 +10,7 @@
 // Deterministic; thread-safe.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -33,5 +34,13 @@ namespace swarm::planner {
 // holding `start`.
 [[nodiscard]] std::vector<std::string> check_coverage_path(const OccupancyGrid& region, Cell start,
                                                            const std::vector<Cell>& path);
+
+// Several robots' routes over a set of cells (cover_tours.hpp, or any division's routes): one
+// route per robot, starting at its cell, moving by legal 4-connected steps through Free cells of
+// `map` (anywhere, not only the set), and together visiting every cell of the set that some
+// robot can reach.
+[[nodiscard]] std::vector<std::string> check_cover_routes(const OccupancyGrid& map, const std::vector<std::uint8_t>& cells,
+                                                          const std::vector<Cell>& robots,
+                                                          const std::vector<std::vector<Cell>>& routes);
 
 }  // namespace swarm::planner

@@ -5,8 +5,8 @@
 // The robots drive their routes through the traffic layer (docs/traffic.md): once every robot
 // stands still the GCS divides the cells (hierarchical, the default: among the living groups by
 // DARP with the leaders as agents, portions by living group size, then each group's share among
-// its robots, or, when its longest route is shorter, among all living robots at once; flat: only
-// the latter), gives every robot a route over its part, and
+// its robots, or, when it is cheaper to drive, among all living robots at once, or, when few cells
+// are left, as tours; flat: only the latter two), gives every robot a route over its part, and
 // the mapf task's lifelong engine drives the routes as goal sequences in conflict-free windows
 // (tasks/mapf/mapf_gcs.hpp; the leaders run mapf's part). The GCS follows coverage from the
 // robots' cells in the clock (with the footprint radius) and judges the phase complete when every
@@ -18,6 +18,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "swarm/gcs/gcs_task.hpp"
@@ -64,6 +65,14 @@ class CoverGcsTask : public GcsTask {
   // Among `robots` at once.
   Division divide_among_robots(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
                                const std::vector<int>& robots, const std::function<bool()>& stop) const;
+  // For `routes` (every robot id's) driven by `robots`: the ticks the drive is estimated to take
+  // by the plan's dependencies, and the steps the traffic layer plans.
+  std::pair<int, int> rehearsed_ticks(const GcsContext& ctx, const std::vector<std::vector<planner::Cell>>& routes,
+                                      const std::vector<int>& robots) const;
+  // Among `robots` as tours (cover_tours.hpp); json is null when there are more cells than
+  // config_.tour_candidate_cells.
+  Division divide_by_tours(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
+                           const std::vector<int>& robots, const std::function<bool()>& stop) const;
 
   swarm::scenario::Cover config_;
   std::uint32_t phase_;

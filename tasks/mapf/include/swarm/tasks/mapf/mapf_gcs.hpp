@@ -58,6 +58,10 @@ namespace swarm::gcs {
 
 // Order Hold's second value: stop the robots where they stand (see the contract above).
 inline constexpr std::int32_t kHoldStop = 1;
+
+// The traffic planner's settings for a phase of a run: one seed per phase, so that a rehearsal of
+// the layer (planner/traffic/rehearsal.hpp) plans what the driver will.
+planner::traffic::Config traffic_config(std::uint64_t seed, std::uint32_t phase);
 // Order Work's first value for a window that continues a plan (see the contract above).
 inline constexpr std::int32_t kContinues = -1;
 

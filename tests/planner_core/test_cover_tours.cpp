@@ -1,0 +1,158 @@
+// Covering a small, scattered set of cells as tours: every route passes the independent check
+// (check_cover_routes), and on sets whose best longest route is known the tours find it.
+#include "swarm/planner/coverage/cover_tours.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "swarm/planner/coverage/coverage_check.hpp"
+#include "swarm/planner/coverage/cover_routes.hpp"
+#include "swarm_test/ascii_grid.hpp"
+
+namespace swarm::planner {
+namespace {
+
+std::vector<std::uint8_t> marked(const OccupancyGrid& g, const std::vector<Cell>& cells) {
+  std::vector<std::uint8_t> m(g.size(), 0);
+  for (const Cell c : cells) m[static_cast<std::size_t>(g.index(c))] = 1;
+  return m;
+}
+
+std::vector<std::uint8_t> every_free(const OccupancyGrid& g) {
+  std::vector<std::uint8_t> m(g.size(), 0);
+  for (std::size_t i = 0; i < g.size(); ++i) m[i] = g.at(static_cast<int>(i)) == CellState::Free;
+  return m;
+}
+
+void expect_valid(const OccupancyGrid& map, const std::vector<std::uint8_t>& set, const std::vector<Cell>& robots,
+                  const CoverTours& t) {
+  ASSERT_TRUE(t.solved);
+  for (const std::string& p : check_cover_routes(map, set, robots, t.routes)) ADD_FAILURE() << p;
+}
+
+// A one-cell corridor with a robot at each end: each sweeps half, 4 moves for 5 cells.
+TEST(CoverTours, ACorridorIsSplitInTheMiddle) {
+  const auto art = swarm::test::ascii_map({"A........B"});
+  const std::vector<Cell> robots = {art.at.at('A'), art.at.at('B')};
+  const auto set = every_free(art.grid);
+  const CoverTours t = cover_tours(art.grid, set, robots);
+  expect_valid(art.grid, set, robots, t);
+  EXPECT_EQ(longest_moves(t.routes), 4U);
+  EXPECT_EQ(t.targets, 10U);
+  EXPECT_EQ(t.region_cells, (std::vector<int>{5, 5}));
+}
+
+// Four corners of an open room from its centre: one robot needs 6 moves to the first corner and
+// 6 between corners (24); two robots take two neighbouring corners each (12).
+TEST(CoverTours, TheCornersOfARoomFromItsCentre) {
+  const auto art = swarm::test::ascii_map({
+      ".......",
+      ".......",
+      ".......",
+      "...R...",
+      ".......",
+      ".......",
+      ".......",
+  });
+  const auto set = marked(art.grid, {{0, 0}, {6, 0}, {0, 6}, {6, 6}});
+  const std::vector<Cell> one = {art.at.at('R')};
+  const CoverTours alone = cover_tours(art.grid, set, one);
+  expect_valid(art.grid, set, one, alone);
+  EXPECT_EQ(longest_moves(alone.routes), 24U);
+  const std::vector<Cell> two = {art.at.at('R'), art.at.at('R')};
+  const CoverTours pair = cover_tours(art.grid, set, two);
+  expect_valid(art.grid, set, two, pair);
+  EXPECT_EQ(longest_moves(pair.routes), 12U);
+  EXPECT_EQ(pair.region_cells, (std::vector<int>{2, 2}));
+}
+
+// The cells along the walls of a room (a ring of 20), robots at opposite corners: each goes its
+// own way round, 9 moves for the 9 cells it does not stand on; the division and tree walks of
+// cover_routes.hpp cannot do better.
+TEST(CoverTours, ARingAlongTheWallsIsSharedByBothRobots) {
+  const auto art = swarm::test::ascii_map({
+      ".....B",
+      "......",
+      "......",
+      "......",
+      "......",
+      "A.....",
+  });
+  std::vector<Cell> ring;
+  for (int x = 0; x < 6; ++x) ring.push_back({x, 0}), ring.push_back({x, 5});
+  for (int y = 1; y < 5; ++y) ring.push_back({0, y}), ring.push_back({5, y});
+  const auto set = marked(art.grid, ring);
+  const std::vector<Cell> robots = {art.at.at('A'), art.at.at('B')};
+  const CoverTours t = cover_tours(art.grid, set, robots);
+  expect_valid(art.grid, set, robots, t);
+  EXPECT_EQ(longest_moves(t.routes), 9U);
+
+  CoverRoutesConfig c;
+  c.candidates = 3;
+  const CoverRoutes darp = divide_and_route(art.grid, set, robots, {}, c);
+  EXPECT_GE(longest_moves(darp.routes), longest_moves(t.routes));
+}
+
+// A cell of the set behind a wall is left out and counted; the rest is covered.
+TEST(CoverTours, ACellNoRobotReachesIsLeftOutAndCounted) {
+  const auto art = swarm::test::ascii_map({
+      "A...#.",
+      "....#X",
+      "....##",
+  });
+  std::vector<std::uint8_t> set = every_free(art.grid);
+  const std::vector<Cell> robots = {art.at.at('A')};
+  const CoverTours t = cover_tours(art.grid, set, robots);
+  expect_valid(art.grid, set, robots, t);
+  EXPECT_EQ(t.unreachable, 2U);  // X and the cell above it
+  EXPECT_EQ(t.targets, 12U);
+  EXPECT_EQ(longest_moves(t.routes), 11U);  // a snake through the 3 x 4 room
+  EXPECT_EQ(t.owner[static_cast<std::size_t>(art.grid.index(art.at.at('X')))], -1);
+}
+
+// More targets than the limit: not attempted, so the caller keeps its other division.
+TEST(CoverTours, ASetOverTheLimitIsNotAttempted) {
+  const auto art = swarm::test::ascii_map({"A........."});
+  CoverToursConfig c;
+  c.max_targets = 9;
+  const CoverTours t = cover_tours(art.grid, every_free(art.grid), {art.at.at('A')}, c);
+  EXPECT_FALSE(t.solved);
+  c.max_targets = 10;
+  EXPECT_TRUE(cover_tours(art.grid, every_free(art.grid), {art.at.at('A')}, c).solved);
+}
+
+// Scattered cells among pillars, three robots: valid and deterministic. DARP cannot do this in one
+// division: its regions grow through the set's cells, so each robot's route covers only the piece
+// of the set it starts in, and the live task divides the rest again.
+TEST(CoverTours, ScatteredCellsAmongPillarsAreCoveredTheSameWayTwice) {
+  const auto art = swarm::test::ascii_map({
+      "A..........",
+      ".#.#.#.#.#.",
+      "...........",
+      ".#.#.#.#.#.",
+      "B....C.....",
+      ".#.#.#.#.#.",
+      "...........",
+  });
+  std::vector<std::uint8_t> set(art.grid.size(), 0);
+  int cells = 0;
+  for (int y = 0; y < art.grid.height(); ++y) {
+    for (int x = 0; x < art.grid.width(); ++x) {
+      if (art.grid.is_free({x, y}) && (x * 7 + y * 3) % 4 == 0) set[static_cast<std::size_t>(art.grid.index({x, y}))] = 1, ++cells;
+    }
+  }
+  const std::vector<Cell> robots = {art.at.at('A'), art.at.at('B'), art.at.at('C')};
+  const CoverTours t = cover_tours(art.grid, set, robots);
+  expect_valid(art.grid, set, robots, t);
+  EXPECT_EQ(t.targets, static_cast<std::size_t>(cells));
+  EXPECT_EQ(longest_moves(t.routes), 14U);
+  const CoverTours again = cover_tours(art.grid, set, robots);
+  EXPECT_EQ(t.routes, again.routes);
+  const CoverRoutes darp = divide_and_route(art.grid, set, robots, {}, CoverRoutesConfig{});
+  EXPECT_FALSE(check_cover_routes(art.grid, set, robots, darp.routes).empty());
+}
+
+}  // namespace
+}  // namespace swarm::planner
