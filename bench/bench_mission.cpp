@@ -2,11 +2,14 @@
 // DDS in lockstep, started exactly as `swarm run` starts them. One iteration = one whole mission.
 // Reported time is the lockstep loop (tick 0 to the GCS's completion); discovery and start-up are
 // the "wall_with_startup_s" counter. Target on a 2-core machine: >= 200 ticks/s.
+// BM_ExportMcap: the default mission's record written as MCAP (`swarm export`), target < 1 s.
 #include <benchmark/benchmark.h>
 
 #include <unistd.h>
 
+#include "mcap_export.hpp"
 #include "mission_run.hpp"
+#include "swarm/record/record.hpp"
 
 namespace {
 
@@ -37,6 +40,24 @@ void BM_DefaultMission(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_DefaultMission)->Iterations(3)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+void BM_ExportMcap(benchmark::State& state) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::temp_directory_path() / ("swarm-bench-mcap-" + std::to_string(::getpid()));
+  std::string error;
+  if (!swarm::bench::run_mission(swarm::tools::RunOptions{}, root, 0, error)) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  const auto frames = swarm::record::read_record((root / "0").string());
+  const swarm::config::World world = swarm::config::resolve_world(frames.front().header().scenario(), ".");
+  swarm::tools::McapExport done;
+  for (auto _ : state) done = swarm::tools::export_mcap(frames, &world, (root / "run.mcap").string());
+  state.counters["messages"] = static_cast<double>(done.messages);
+  state.counters["bytes"] = static_cast<double>(done.bytes);
+  fs::remove_all(root);
+}
+BENCHMARK(BM_ExportMcap)->Iterations(3)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -31,6 +31,7 @@ struct Command {
 // run_cli.cpp: a swarm run and what reads its results.
 Command add_run(CLI::App& app);
 Command add_render(CLI::App& app);
+Command add_export(CLI::App& app);
 Command add_bench(CLI::App& app);
 Command add_report(CLI::App& app);
 

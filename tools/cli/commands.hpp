@@ -21,6 +21,15 @@ struct RenderOptions {
 // (or the picture cannot be written), with a message saying which.
 int render_command(const RenderOptions& options, std::ostream& out, std::ostream& err);
 
+struct ExportOptions {
+  std::string run_dir;
+  std::string mcap_path;
+};
+
+// `swarm export RUN_DIR --mcap FILE`: 0 when written; 2 when the run directory is not a run, its
+// record is truncated or damaged, or the file cannot be written, with a message saying which.
+int export_command(const ExportOptions& options, std::ostream& out, std::ostream& err);
+
 // `swarm bench [SUITE] [Google Benchmark flags]`: with no suite runs swarm-bench-planner (ray
 // casting rays/s, A*) and swarm-bench-mission (lockstep ticks/s of the default 11-process mission)
 // from `bin_dir`, one after the other; or the one suite named: planner, mission, tour (the tour GA,

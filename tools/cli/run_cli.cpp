@@ -70,6 +70,8 @@ Command add_run(CLI::App& app) {
                     "would, say what would run, and stop: nothing is created or started");
   run_cmd->add_option("--out", run.out_dir,
                       "Run directory; default runs/<time>-<map>-<mode>-s<seed>");
+  run_cmd->add_option("--mcap", run.mcap_path,
+                      "Also write the run's record as an MCAP file (Foxglove, Lichtblick), as `swarm export` does");
   run_cmd->add_option("--timeout", f->timeout_s, "Wall-clock limit in seconds (0 = none)")
       ->capture_default_str()
       ->check(wall_seconds());
@@ -132,6 +134,14 @@ Command add_render(CLI::App& app) {
             if (f->tick_opt->count()) render.tick = f->tick;
             return render_command(render, out, err);
           }};
+}
+
+Command add_export(CLI::App& app) {
+  auto o = std::make_shared<ExportOptions>();
+  CLI::App* cmd = app.add_subcommand("export", "Write a run's record as an MCAP file (Foxglove, Lichtblick)");
+  cmd->add_option("run_dir", o->run_dir, "Run directory written by `swarm run`")->required();
+  cmd->add_option("--mcap", o->mcap_path, "The MCAP file to write")->required();
+  return {cmd, [o](std::ostream& out, std::ostream& err) { return export_command(*o, out, err); }};
 }
 
 Command add_bench(CLI::App& app) {

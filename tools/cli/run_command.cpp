@@ -1,5 +1,7 @@
 #include "run_command.hpp"
 
+#include "mcap_export.hpp"
+
 #include "run_end.hpp"
 
 #include "format.hpp"
@@ -147,6 +149,14 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err)
       return 1;
     }
   }
+  if (!options.mcap_path.empty()) {
+    const std::filesystem::path parent = std::filesystem::absolute(options.mcap_path).parent_path();
+    std::error_code ec;
+    if (!std::filesystem::is_directory(parent, ec)) {
+      err << "swarm run: --mcap " << options.mcap_path << ": the folder " << parent.string() << " does not exist\n";
+      return 2;
+    }
+  }
   PreparedRun run;
   try {
     run = prepare_run(options);
@@ -193,12 +203,22 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err)
   const std::string record = swarm::record::run_record_path(l.run_dir);
   const std::string metrics = (std::filesystem::path(l.run_dir) / "metrics.json").string();
   const std::string png = (std::filesystem::path(l.run_dir) / "map.png").string();
+  std::vector<swarm::record::Frame> frames;
   try {
-    swarm::record::render_map_png(swarm::record::read_record(record), png);
+    frames = swarm::record::read_record(record);
+    swarm::record::render_map_png(frames, png);
   } catch (const std::exception& e) {
     err << "swarm run: every process exited normally, but the map picture failed: " << e.what()
         << "\n";
     return 1;
+  }
+  if (!options.mcap_path.empty()) {
+    try {
+      (void)export_mcap(frames, &run.world, options.mcap_path);
+    } catch (const std::exception& e) {
+      err << "swarm run: every process exited normally, but the MCAP file failed: " << e.what() << "\n";
+      return 1;
+    }
   }
   std::string summary;
   bool complete = false;
@@ -214,6 +234,7 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err)
       << ", " << s.groups() << " x " << s.robots_per_group() << " robots, seed " << s.seed()
       << "\n"
       << summary << "  map picture      " << png << "\n"
+      << (options.mcap_path.empty() ? std::string() : "  mcap             " + options.mcap_path + "\n")
       << "run dir: " << l.run_dir << "\n";
   if (!complete) {
     err << "swarm run: the mission is incomplete (exit " << kExitIncomplete << "); metrics.json says why\n";

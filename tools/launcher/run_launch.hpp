@@ -55,6 +55,7 @@ struct RunOptions {
   std::string scenario_path;  // "" = DATA/scenarios/default.pbtxt
   RunOverrides overrides;
   std::string out_dir;  // "" = runs/<YYYYmmdd-HHMMSS>-<map>-<mode>-s<seed>
+  std::string mcap_path;  // "" = none; else `swarm run` writes the run's record there as MCAP at the end
   std::chrono::seconds timeout{600};
   std::string bin_dir;  // "" = the folder of the running executable
   // Changes further scenario fields after the flags are applied and before validation (how
