@@ -14,6 +14,8 @@ packages=(
   clang libclang-rt-14-dev  # scripts/sanitize.sh address and scripts/fuzz.sh: ASan + libFuzzer
   openssl  # scripts/make-certs.sh: swarm run --secure (DDS-Security certificates)
   debootstrap  # deploy/base-image.sh: the Debian base image where no registry is reachable
+  libwebsocketpp-dev libasio-dev  # swarm view: its HTTP and WebSocket server (header-only)
+  chromium  # the viewer's page tests: headless screenshots
 )
 
 missing=()

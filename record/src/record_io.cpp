@@ -1,5 +1,7 @@
 #include "swarm/record/record.hpp"
 
+#include "swarm/planner/grid/map_patch.hpp"
+
 #include <algorithm>
 
 #include <google/protobuf/util/delimited_message_util.h>
@@ -101,6 +103,29 @@ std::optional<std::uint32_t> last_tick(const std::vector<Frame>& frames) {
     if (f.has_poses()) last = std::max(last.value_or(0), f.poses().tick());
   }
   return last;
+}
+
+planner::OccupancyGrid map_of(const Header& h, const MapVersion* version) {
+  planner::OccupancyGrid grid(static_cast<int>(h.width()), static_cast<int>(h.height()),
+                              h.resolution() > 0 ? h.resolution() : 0.2, h.origin_x(), h.origin_y());
+  if (version == nullptr) return grid;  // nothing known yet: all unknown
+  const std::string& rle = version->rle();
+  if (!planner::decode_grid_rle(reinterpret_cast<const std::uint8_t*>(rle.data()), rle.size(), grid)) {
+    throw std::runtime_error("run record: the map version of tick " + std::to_string(version->tick()) +
+                             " does not decode to " + std::to_string(h.width()) + " x " + std::to_string(h.height()) +
+                             " cells (damaged record?)");
+  }
+  return grid;
+}
+
+std::vector<std::string> robot_names(const Header& h) {
+  std::vector<std::string> names;
+  for (std::uint32_t g = 0; g < h.groups(); ++g) {
+    for (std::uint32_t i = 0; i < h.robots_per_group(); ++i) {
+      names.push_back(i == 0 ? "leader-" + std::to_string(g) : "member-" + std::to_string(g) + "-" + std::to_string(i));
+    }
+  }
+  return names;
 }
 
 std::vector<Frame> read_record(const std::string& path_in) {

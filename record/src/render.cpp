@@ -14,7 +14,7 @@
 #include <utility>
 
 #include "swarm/planner/grid/grid.hpp"
-#include "swarm/planner/grid/map_patch.hpp"
+#include "swarm/record/record.hpp"
 
 namespace swarm::record {
 namespace {
@@ -88,22 +88,6 @@ RecordIndex index_frames(const std::vector<Frame>& frames) {
   if (r == 0 && h.has_scenario()) r = h.scenario().robots_per_group();
   idx.robots_per_group = std::max<int>(1, static_cast<int>(r));
   return idx;
-}
-
-OccupancyGrid decode_map(const RecordIndex& idx, const MapVersion* version) {
-  const Header& h = *idx.header;
-  OccupancyGrid grid(static_cast<int>(h.width()), static_cast<int>(h.height()),
-                     h.resolution() > 0 ? h.resolution() : 0.2, h.origin_x(), h.origin_y());
-  if (version == nullptr) return grid;  // nothing known yet: all unknown
-  const std::string& rle = version->rle();
-  if (!planner::decode_grid_rle(reinterpret_cast<const std::uint8_t*>(rle.data()), rle.size(),
-                                grid)) {
-    throw std::runtime_error("run record: the map version of tick " +
-                             std::to_string(version->tick()) + " does not decode to " +
-                             std::to_string(h.width()) + " x " + std::to_string(h.height()) +
-                             " cells (damaged record?)");
-  }
-  return grid;
 }
 
 std::string mode_text(const Header& h) {
@@ -321,7 +305,7 @@ SnapshotMaps snapshot_maps_of(const RecordIndex& idx, std::uint32_t tick) {
   SnapshotMaps m;
   m.round = round_at(idx, tick);
   const MapVersion* fused = at_or_before(idx.maps, tick);
-  m.fused = decode_map(idx, fused);
+  m.fused = map_of(*idx.header, fused);
   if (fused != nullptr) m.fused_tick = fused->tick();
   const MapVersion* planned = fused;
   if (m.round) {
@@ -351,7 +335,7 @@ SnapshotMaps snapshot_maps_of(const RecordIndex& idx, std::uint32_t tick) {
       m.planned_recorded = true;
     }
   }
-  m.planned = planned == fused ? m.fused : decode_map(idx, planned);
+  m.planned = planned == fused ? m.fused : map_of(*idx.header, planned);
   if (planned != nullptr) m.planned_tick = planned->tick();
   return m;
 }
@@ -370,7 +354,7 @@ void render_map_png(const std::vector<Frame>& frames, const std::string& png_pat
   const RecordIndex idx = index_frames(frames);
   const RenderGeometry geo = geometry_of(idx, scale);
   Canvas canvas(geo);
-  canvas.draw_grid(decode_map(idx, idx.maps.empty() ? nullptr : idx.maps.back()));
+  canvas.draw_grid(map_of(*idx.header, idx.maps.empty() ? nullptr : idx.maps.back()));
 
   // Paths: one polyline per robot through its cell centres; a negative cell (unknown) breaks it.
   const int r_per_group = idx.robots_per_group;

@@ -287,6 +287,13 @@ TEST(Hostile, FlagValues) {
   for (const std::string& flag : {"--tick", "--scale"}) {
     for (const std::string& v : kEdgeNumbers) f.expect({"render", run_dir, flag, v, "--out", f.file("x.png")}, {flag});
   }
+  // Every value refused before anything listens: none of them is a port.
+  for (const std::string& v : kEdgeNumbers) f.expect({"view", run_dir, "--view-port", v}, {"--view-port"});
+  for (const std::string& v : {std::string(""), std::string("not-an-address"), std::string("::g")}) {
+    f.expect({"view", run_dir, "--view-bind", v}, {"--view-bind"});
+  }
+  f.expect({"export", run_dir, "--mcap", f.file("x.mcap")}, {});
+  f.expect({"export", run_dir, "--mcap", f.file("no/such/folder/x.mcap")}, {"x.mcap"});
   for (const std::string& flag : {"--seed", "--generations"}) {
     for (const std::string& v : kEdgeNumbers) {
       f.expect({"tour", source("scenarios/tour/scenario1.tour"), "--variants", "nna", flag, v, "--out", f.out()}, {flag});

@@ -32,6 +32,7 @@ struct Command {
 Command add_run(CLI::App& app);
 Command add_render(CLI::App& app);
 Command add_export(CLI::App& app);
+Command add_view(CLI::App& app);
 Command add_bench(CLI::App& app);
 Command add_report(CLI::App& app);
 

@@ -6,6 +6,8 @@
 #include <optional>
 #include <ostream>
 #include <string>
+
+#include "view_server.hpp"
 #include <vector>
 
 namespace swarm::tools {
@@ -29,6 +31,15 @@ struct ExportOptions {
 // `swarm export RUN_DIR --mcap FILE`: 0 when written; 2 when the run directory is not a run, its
 // record is truncated or damaged, or the file cannot be written, with a message saying which.
 int export_command(const ExportOptions& options, std::ostream& out, std::ostream& err);
+
+struct ViewOptions {
+  std::string run_dir;
+  ViewServerOptions server;
+};
+
+// `swarm view RUN_DIR`: serves the run's replay page until Ctrl-C: 0 then; 2 when the run directory
+// is not a run, its record is truncated or damaged, or the address cannot be listened on.
+int view_command(const ViewOptions& options, std::ostream& out, std::ostream& err);
 
 // `swarm bench [SUITE] [Google Benchmark flags]`: with no suite runs swarm-bench-planner (ray
 // casting rays/s, A*) and swarm-bench-mission (lockstep ticks/s of the default 11-process mission)

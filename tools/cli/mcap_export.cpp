@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "swarm/planner/grid/map_patch.hpp"
 #include "swarm/planner/sensing/raycast.hpp"
 #include "swarm/record/mcap_writer.hpp"
+#include "swarm/record/record.hpp"
 
 namespace swarm::tools {
 namespace {
@@ -118,15 +118,12 @@ class Exporter {
     tick_ns_ = std::uint64_t{h.scenario().tick_ms()} * 1'000'000U;
     resolution_ = h.resolution() > 0 ? h.resolution() : 0.2;
     robots_ = static_cast<int>(h.groups() * h.robots_per_group());
+    names_ = record::robot_names(h);
   }
 
   [[nodiscard]] std::uint64_t ns(std::uint32_t tick) const { return tick * tick_ns_; }
   [[nodiscard]] static json stamp(std::uint64_t ns) { return {{"sec", ns / 1'000'000'000U}, {"nsec", ns % 1'000'000'000U}}; }
-  [[nodiscard]] std::string robot_name(int id) const {
-    const int per = static_cast<int>(h_.robots_per_group());
-    const int g = id / per, i = id % per;
-    return i == 0 ? "leader-" + std::to_string(g) : "member-" + std::to_string(g) + "-" + std::to_string(i);
-  }
+  [[nodiscard]] const std::string& robot_name(int id) const { return names_[static_cast<std::size_t>(id)]; }
   [[nodiscard]] json cell_centre(int x, int y) const {
     return {{"x", h_.origin_x() + (x + 0.5) * resolution_}, {"y", h_.origin_y() + (y + 0.5) * resolution_}, {"z", 0.0}};
   }
@@ -258,6 +255,7 @@ class Exporter {
   std::uint64_t tick_ns_ = 0;
   double resolution_ = 0.2;
   int robots_ = 0;
+  std::vector<std::string> names_;
   std::map<std::string, std::uint16_t> schemas_, channels_;
   std::vector<std::pair<std::string, json>> scans_;
   McapExport result_;
@@ -287,12 +285,7 @@ McapExport export_mcap(const std::vector<record::Frame>& frames, const config::W
   if (truth != nullptr) e.grid("/map/truth", 0, *truth);
   for (const record::Frame& f : frames) {
     if (f.has_map()) {
-      OccupancyGrid g(static_cast<int>(h.width()), static_cast<int>(h.height()), h.resolution() > 0 ? h.resolution() : 0.2,
-                      h.origin_x(), h.origin_y());
-      const std::string& rle = f.map().rle();
-      if (!planner::decode_grid_rle(reinterpret_cast<const std::uint8_t*>(rle.data()), rle.size(), g)) {
-        throw std::runtime_error("the map version of tick " + std::to_string(f.map().tick()) + " does not decode (damaged record?)");
-      }
+      const OccupancyGrid g = record::map_of(h, &f.map());
       e.grid("/map", f.map().tick(), g);
     } else if (f.has_poses()) {
       e.poses(f.poses(), truth, beams, range_cells);

@@ -144,6 +144,16 @@ Command add_export(CLI::App& app) {
   return {cmd, [o](std::ostream& out, std::ostream& err) { return export_command(*o, out, err); }};
 }
 
+Command add_view(CLI::App& app) {
+  auto o = std::make_shared<ViewOptions>();
+  CLI::App* cmd = app.add_subcommand("view", "Replay a run in the browser: its map, robots, routes and phases");
+  cmd->add_option("run_dir", o->run_dir, "Run directory written by `swarm run`")->required();
+  cmd->add_option("--view-port", o->server.port, "The port to serve on")->capture_default_str()->check(CLI::Range(1, 65535));
+  cmd->add_option("--view-bind", o->server.bind, "The address to serve on (loopback unless told otherwise)")
+      ->capture_default_str();
+  return {cmd, [o](std::ostream& out, std::ostream& err) { return view_command(*o, out, err); }};
+}
+
 Command add_bench(CLI::App& app) {
   CLI::App* bench_cmd =
       app.add_subcommand("bench", "Benchmarks: ray casting rays/s, A*, and the default mission's ticks/s "

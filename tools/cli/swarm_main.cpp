@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
       "benchmark, divide areas (darp)"};
   app.require_subcommand(1);
 
-  std::vector<Command> commands{add_run(app), add_render(app), add_export(app), add_bench(app)};
+  std::vector<Command> commands{add_run(app), add_render(app), add_export(app), add_view(app), add_bench(app)};
   CLI::App* experiment = app.add_subcommand("experiment", "Run many swarms in parallel and table, plot and save the results");
   experiment->require_subcommand(1);
   for (Command& c : add_swarm_experiments(*experiment)) commands.push_back(std::move(c));

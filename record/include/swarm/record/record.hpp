@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "swarm/planner/grid/grid.hpp"
 #include "swarm/proto/run_record.pb.h"
 
 namespace swarm::record {
@@ -79,5 +80,12 @@ RecordPrefix read_record_prefix(const std::string& path);
 
 // The last tick the frames' poses reach; none without a Poses frame.
 std::optional<std::uint32_t> last_tick(const std::vector<Frame>& frames);
+
+// The map a MapVersion holds, on the Header's frame (nullptr: all unknown). Throws
+// std::runtime_error naming the tick when it does not decode to the Header's size.
+planner::OccupancyGrid map_of(const Header& header, const MapVersion* version);
+
+// The robots' names by id (group * robots_per_group + index): "leader-G", "member-G-I".
+std::vector<std::string> robot_names(const Header& header);
 
 }  // namespace swarm::record
