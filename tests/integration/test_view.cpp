@@ -1,6 +1,7 @@
 // `swarm view RUN_DIR`: the replay page served over HTTP and drawn by headless Chromium (Debian's
 // `chromium`, installed by scripts/install-deps.sh). The screenshot must show every robot on the
 // cell the record has it on, in its group's colour, and the map's walls where the map has them.
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <netinet/in.h>
 #include <signal.h>
@@ -10,6 +11,8 @@
 #include <unistd.h>
 
 #include <array>
+#include <map>
+#include <nlohmann/json.hpp>
 #include <chrono>
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
@@ -18,6 +21,7 @@
 #include "run_swarm.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/record/record.hpp"
+#include "swarm_test/files.hpp"
 
 extern char** environ;
 
@@ -29,23 +33,31 @@ constexpr std::array<std::array<int, 3>, 3> kGroupColour = {{{31, 119, 180}, {25
 constexpr std::array<int, 3> kWall = {51, 51, 51};
 constexpr std::array<int, 3> kFree = {255, 255, 255};
 
-// `swarm view` in the background; stopped (SIGTERM) when this goes out of scope.
-class Viewer {
+// `swarm ARGS` in the background; stopped (SIGTERM) if still running when this goes out of scope.
+class BackgroundSwarm {
  public:
-  Viewer(const std::string& run_dir, int port) {
+  // What it prints goes to `log`.
+  BackgroundSwarm(std::vector<std::string> args, const std::string& log) {
     const std::string exe = std::string(SWARM_BIN_DIR) + "/swarm";
-    const std::string port_text = std::to_string(port);
-    std::vector<std::string> args = {exe, "view", run_dir, "--view-port", port_text};
+    args.insert(args.begin(), exe);
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
-    if (::posix_spawn(&pid_, exe.c_str(), nullptr, nullptr, argv.data(), environ) != 0) pid_ = -1;
+    posix_spawn_file_actions_t files;
+    ::posix_spawn_file_actions_init(&files);
+    ::posix_spawn_file_actions_addopen(&files, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::posix_spawn_file_actions_adddup2(&files, 1, 2);
+    if (::posix_spawn(&pid_, exe.c_str(), &files, nullptr, argv.data(), environ) != 0) pid_ = -1;
+    ::posix_spawn_file_actions_destroy(&files);
   }
-  ~Viewer() { (void)stop(); }
-  // The exit status after SIGTERM (-1: it had not started or did not exit normally).
+  ~BackgroundSwarm() { (void)stop(); }
+  // SIGTERM, then its exit status (-1: it had not started or did not exit normally).
   int stop() {
+    if (pid_ > 0) ::kill(pid_, SIGTERM);
+    return wait();
+  }
+  int wait() {
     if (pid_ <= 0) return -1;
-    ::kill(pid_, SIGTERM);
     int status = 0;
     ::waitpid(pid_, &status, 0);
     pid_ = -1;
@@ -76,6 +88,89 @@ bool wait_for(int port) {
   return false;
 }
 
+// A WebSocket client written for the test from RFC 6455, apart from the server's library: the
+// opening handshake asking for Foxglove's subprotocol, masked text frames out, whole frames in.
+class WsClient {
+ public:
+  explicit WsClient(int port) {
+    fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_port = htons(static_cast<std::uint16_t>(port));
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    timeval limit{10, 0};
+    ::setsockopt(fd_, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof limit);
+    if (::connect(fd_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0) return;
+    const std::string request = "GET / HTTP/1.1\r\nHost: 127.0.0.1\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
+                                "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n"
+                                "Sec-WebSocket-Protocol: foxglove.websocket.v1\r\n\r\n";
+    (void)::send(fd_, request.data(), request.size(), 0);
+    while (response_.find("\r\n\r\n") == std::string::npos) {
+      char c = 0;
+      if (::recv(fd_, &c, 1, 0) != 1) return;
+      response_ += c;
+    }
+  }
+  ~WsClient() { ::close(fd_); }
+  [[nodiscard]] const std::string& handshake() const { return response_; }
+
+  void send_text(const std::string& text) {
+    std::string f;
+    f.push_back(static_cast<char>(0x81));
+    const std::size_t n = text.size();
+    if (n < 126) {
+      f.push_back(static_cast<char>(0x80 | n));
+    } else {
+      f.push_back(static_cast<char>(0x80 | 126));
+      f.push_back(static_cast<char>((n >> 8) & 0xFF));
+      f.push_back(static_cast<char>(n & 0xFF));
+    }
+    const std::array<char, 4> mask = {'\x12', '\x34', '\x56', '\x78'};
+    f.append(mask.data(), 4);
+    for (std::size_t i = 0; i < n; ++i) f.push_back(static_cast<char>(text[i] ^ mask[i % 4]));
+    (void)::send(fd_, f.data(), f.size(), 0);
+  }
+
+  // The next data frame: (opcode, payload); opcode 8 (close) or -1 when the connection ends.
+  std::pair<int, std::string> next() {
+    for (;;) {
+      std::uint8_t head[2];
+      if (!read(head, 2)) return {-1, {}};
+      const int op = head[0] & 0x0F;
+      std::uint64_t n = head[1] & 0x7F;
+      if (n == 126 || n == 127) {
+        std::uint8_t ext[8];
+        const int bytes = n == 126 ? 2 : 8;
+        if (!read(ext, static_cast<std::size_t>(bytes))) return {-1, {}};
+        n = 0;
+        for (int b = 0; b < bytes; ++b) n = (n << 8) | ext[b];
+      }
+      std::string payload(n, '\0');
+      if (n > 0 && !read(reinterpret_cast<std::uint8_t*>(payload.data()), n)) return {-1, {}};
+      if (op == 9 || op == 10) continue;  // ping, pong
+      return {op, std::move(payload)};
+    }
+  }
+
+ private:
+  bool read(std::uint8_t* out, std::size_t n) {
+    for (std::size_t got = 0; got < n;) {
+      const ssize_t k = ::recv(fd_, out + got, n - got, 0);
+      if (k <= 0) return false;
+      got += static_cast<std::size_t>(k);
+    }
+    return true;
+  }
+  int fd_ = -1;
+  std::string response_;
+};
+
+std::uint64_t le(const std::string& s, std::size_t at, int bytes) {
+  std::uint64_t v = 0;
+  for (int b = bytes - 1; b >= 0; --b) v = (v << 8) | static_cast<std::uint8_t>(s[at + static_cast<std::size_t>(b)]);
+  return v;
+}
+
 std::array<int, 3> rgb_at(const cv::Mat& png, double x, double y) {
   const cv::Vec3b p = png.at<cv::Vec3b>(static_cast<int>(y), static_cast<int>(x));
   return {p[2], p[1], p[0]};
@@ -98,7 +193,7 @@ TEST(View, TheReplayPageDrawsTheRobotsAndTheWallsWhereTheRecordHasThem) {
   poses = all[all.size() / 2];
 
   const int port = 20000 + ::getpid() % 20000;
-  Viewer viewer(dir + "/run", port);
+  BackgroundSwarm viewer({"view", dir + "/run", "--view-port", std::to_string(port)}, dir + "/view.log");
   ASSERT_TRUE(viewer.started());
   ASSERT_TRUE(wait_for(port)) << "swarm view did not answer on port " << port;
   // A second viewer on the same port: exit 2, naming it.
@@ -142,6 +237,82 @@ TEST(View, TheReplayPageDrawsTheRobotsAndTheWallsWhereTheRecordHasThem) {
   const CommandResult not_a_run = run_swarm("view " + dir + " --view-port " + std::to_string(port));
   EXPECT_EQ(not_a_run.exit_code, 2);
   EXPECT_NE(not_a_run.output.find("is not a run directory"), std::string::npos) << not_a_run.output;
+}
+
+// `swarm run --view`: a client speaking Foxglove's protocol (serverInfo, advertise, subscribe,
+// binary message frames) sees every robot where the record has it at that tick, then goes away
+// mid-run without a close; the run's record is byte for byte the one of the same run unwatched.
+TEST(View, ALiveRunIsWatchedOverFoxglovesProtocolAndNotChangedByIt) {
+  const std::string dir = fresh_dir("view_live");
+  const CommandResult plain = run_swarm("run --map maze1 --seed 3 --out " + dir + "/plain");
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+
+  const int port = 20000 + (::getpid() + 7) % 20000;
+  BackgroundSwarm run({"run", "--map", "maze1", "--seed", "3", "--out", dir + "/viewed", "--view", "--view-port",
+                       std::to_string(port)},
+                      dir + "/viewed.log");
+  ASSERT_TRUE(run.started());
+  ASSERT_TRUE(wait_for(port)) << "no live view on port " << port;
+  WsClient ws(port);
+  ASSERT_NE(ws.handshake().find("101"), std::string::npos) << ws.handshake();
+  ASSERT_NE(ws.handshake().find("foxglove.websocket.v1"), std::string::npos) << ws.handshake();
+  const auto info = ws.next();
+  ASSERT_EQ(info.first, 1);
+  EXPECT_EQ(nlohmann::json::parse(info.second)["op"], "serverInfo");
+  const auto advertise = ws.next();
+  ASSERT_EQ(advertise.first, 1);
+  const nlohmann::json channels = nlohmann::json::parse(advertise.second);
+  ASSERT_EQ(channels["op"], "advertise");
+  std::map<std::string, std::uint32_t> id_of;
+  nlohmann::json subscriptions = nlohmann::json::array();
+  for (const auto& c : channels["channels"]) {
+    id_of[c["topic"].get<std::string>()] = c["id"].get<std::uint32_t>();
+    EXPECT_EQ(c["encoding"], "json");
+    EXPECT_FALSE(nlohmann::json::parse(c["schema"].get<std::string>()).empty());
+    subscriptions.push_back({{"id", 100 + c["id"].get<std::uint32_t>()}, {"channelId", c["id"]}});
+  }
+  ASSERT_TRUE(id_of.count("/tf") && id_of.count("/map") && id_of.count("/robots") && id_of.count("/log"));
+  ws.send_text(nlohmann::json({{"op", "subscribe"}, {"subscriptions", subscriptions}}).dump());
+  // (tick, every robot's cell) from /tf, until 10 of them or the run ends.
+  std::vector<std::pair<std::uint64_t, nlohmann::json>> seen;
+  int maps = 0, robots = 0;
+  while (seen.size() < 10) {
+    const auto [op, payload] = ws.next();
+    if (op != 2) break;  // the view closed: the run is over
+    ASSERT_GE(payload.size(), 13U);
+    ASSERT_EQ(payload[0], '\x01');
+    const auto sub = static_cast<std::uint32_t>(le(payload, 1, 4));
+    const nlohmann::json m = nlohmann::json::parse(payload.substr(13));
+    if (sub == 100 + id_of["/tf"]) seen.emplace_back(le(payload, 5, 8), m);
+    maps += sub == 100 + id_of["/map"];
+    robots += sub == 100 + id_of["/robots"];
+  }
+  EXPECT_EQ(robots, 1);
+  // Gone without a close frame, mid-run.
+  ASSERT_EQ(run.wait(), 0);
+  ASSERT_GE(seen.size(), 3U);
+
+  const auto frames = record::read_record(dir + "/viewed/run.pb");
+  const record::Header& h = frames.front().header();
+  std::map<std::uint32_t, const record::Poses*> poses_at;
+  for (const auto& f : frames) {
+    if (f.has_poses()) poses_at[f.poses().tick()] = &f.poses();
+  }
+  const std::uint64_t tick_ns = std::uint64_t{h.scenario().tick_ms()} * 1'000'000U;
+  int compared = 0;
+  for (const auto& [ns, m] : seen) {
+    const auto it = poses_at.find(static_cast<std::uint32_t>(ns / tick_ns));
+    if (it == poses_at.end()) continue;  // a tick the record does not hold (before the first pose)
+    ++compared;
+    const auto& t = m["transforms"];
+    ASSERT_EQ(static_cast<int>(t.size()) * 2, it->second->xy_size());
+    for (std::size_t r = 0; r < t.size(); ++r) {
+      EXPECT_NEAR(t[r]["translation"]["x"].get<double>(), h.origin_x() + (it->second->xy(2 * static_cast<int>(r)) + 0.5) * h.resolution(), 1e-9);
+      EXPECT_NEAR(t[r]["translation"]["y"].get<double>(), h.origin_y() + (it->second->xy(2 * static_cast<int>(r) + 1) + 0.5) * h.resolution(), 1e-9);
+    }
+  }
+  EXPECT_GE(compared, 3);
+  EXPECT_EQ(slurp(dir + "/viewed/run.pb"), slurp(dir + "/plain/run.pb")) << "the view changed the run";
 }
 
 }  // namespace

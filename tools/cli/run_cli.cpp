@@ -70,6 +70,11 @@ Command add_run(CLI::App& app) {
                     "would, say what would run, and stop: nothing is created or started");
   run_cmd->add_option("--out", run.out_dir,
                       "Run directory; default runs/<time>-<map>-<mode>-s<seed>");
+  run_cmd->add_flag("--view", run.view,
+                    "Watch the run live in the browser (and in Foxglove: foxglove.websocket.v1) at the address printed");
+  run_cmd->add_option("--view-port", run.view_port, "The live view's port")->capture_default_str()->check(CLI::Range(1, 65535));
+  run_cmd->add_option("--view-bind", run.view_bind, "The live view's address (loopback unless told otherwise)")
+      ->capture_default_str();
   run_cmd->add_option("--mcap", run.mcap_path,
                       "Also write the run's record as an MCAP file (Foxglove, Lichtblick), as `swarm export` does");
   run_cmd->add_option("--timeout", f->timeout_s, "Wall-clock limit in seconds (0 = none)")

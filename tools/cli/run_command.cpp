@@ -1,5 +1,6 @@
 #include "run_command.hpp"
 
+#include "live_run_view.hpp"
 #include "mcap_export.hpp"
 
 #include "run_end.hpp"
@@ -170,7 +171,13 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err)
   const RunLaunch& l = run.launch;
   const std::vector<ProcessSpec> procs = build_run_processes(l, run.world.scenario);
 
+  LiveRunView view;
+  if (options.view) {
+    const int status = view.start(options, run, out, err);
+    if (status != 0) return status;
+  }
   const SupervisorResult r = run_processes(procs, options.timeout);
+  view.stop();
   const std::string logs = (std::filesystem::path(l.run_dir) / "logs").string();
   if (!r.ok) {
     // What the run did up to its stop, and why it stopped, in metrics.json.

@@ -56,6 +56,10 @@ struct RunOptions {
   RunOverrides overrides;
   std::string out_dir;  // "" = runs/<YYYYmmdd-HHMMSS>-<map>-<mode>-s<seed>
   std::string mcap_path;  // "" = none; else `swarm run` writes the run's record there as MCAP at the end
+  // `swarm run --view`: a live view of the run in the browser on view_bind:view_port while it runs.
+  bool view = false;
+  std::string view_bind = "127.0.0.1";
+  int view_port = 8765;
   std::chrono::seconds timeout{600};
   std::string bin_dir;  // "" = the folder of the running executable
   // Changes further scenario fields after the flags are applied and before validation (how

@@ -1,17 +1,29 @@
 // `swarm view`'s server: HTTP on one address and port, serving the viewer's page and the data it
-// asks for, until SIGINT or SIGTERM. websocketpp over standalone asio (Debian's
-// libwebsocketpp-dev and libasio-dev, header-only): one small library that serves both the HTTP the
-// page needs and the WebSocket a live view speaks, on one port, without Boost.
+// asks for, and, for a live view, a WebSocket that speaks Foxglove's protocol
+// (foxglove.websocket.v1), so that Foxglove and Lichtblick can connect as well as our page.
+// websocketpp over standalone asio (Debian's libwebsocketpp-dev and libasio-dev, header-only): one
+// small library for both the HTTP and the WebSocket on one port, without Boost.
 //
-//   ViewServer::Options o;             // 127.0.0.1:8765
-//   ViewServer::Routes routes = {{"/", {"text/html", page}}, {"/run.json", {"application/json", json}}};
-//   return serve(o, routes, std::cout, std::cerr);   // 0 after a signal; 2: cannot listen
+// The WebSocket (live only), as the protocol says: on connecting, the client gets serverInfo and
+// an advertise of every channel (JSON encoding, a JSON Schema each); it subscribes with
+// {"op":"subscribe","subscriptions":[{"id":S,"channelId":C}]} (and unsubscribes with
+// {"op":"unsubscribe","subscriptionIds":[S]}); then, 20 times a second, every channel it is
+// subscribed to that has something newer comes as a binary frame: 0x01, uint32 S, uint64 log time
+// (ns), the message's JSON. A client that reads too slowly is skipped until it catches up; one that
+// goes away changes nothing for the others or for the run.
+//
+//   ViewRoutes routes = {{"/", {"text/html", page}}, {"/run.json", {"application/json", json}}};
+//   return serve(options, routes, std::cout, std::cerr);                 // replay: until a signal
+//   serve(options, routes, out, err, &live_view, &stop);                 // live: until `stop` too
 #pragma once
 
+#include <atomic>
 #include <map>
 #include <ostream>
 #include <string>
 #include <utility>
+
+#include "live_feed.hpp"
 
 namespace swarm::tools {
 
@@ -23,9 +35,11 @@ struct ViewServerOptions {
 // path -> (content type, body). "/" is also served for "/index.html"; a query string is ignored.
 using ViewRoutes = std::map<std::string, std::pair<std::string, std::string>>;
 
-// Serves `routes` until SIGINT or SIGTERM: 0 then. 2 when the address is not an IP address or the
-// port cannot be listened on (in use), with a message on `err` naming it.
-int serve(const ViewServerOptions& options, const ViewRoutes& routes, std::ostream& out, std::ostream& err);
+// Serves `routes` (and `live`'s WebSocket) until SIGINT or SIGTERM (without `stop`), or until
+// `stop` turns true: 0 then. 2 when the address is not an IP address or the port cannot be listened on (in use), with
+// a message on `err` naming it. `listening`, when given, turns true once connections are taken.
+int serve(const ViewServerOptions& options, const ViewRoutes& routes, std::ostream& out, std::ostream& err,
+          const LiveFeed* live = nullptr, const std::atomic<bool>* stop = nullptr, std::atomic<bool>* listening = nullptr);
 
 // The viewer's page (tools/view/page/index.html, built in).
 const std::string& view_page();

@@ -1,0 +1,67 @@
+#include "live_run_view.hpp"
+
+#include <chrono>
+
+#include "live_view.hpp"
+#include "swarm/record/record.hpp"
+#include "view_server.hpp"
+
+namespace swarm::tools {
+
+LiveRunView::LiveRunView() = default;
+LiveRunView::~LiveRunView() { stop(); }
+
+int LiveRunView::start(const RunOptions& options, const PreparedRun& run, std::ostream& out, std::ostream& err) {
+  const RunLaunch& l = run.launch;
+  if (!l.security_dir.empty()) {
+    err << "swarm run: --view with --secure is not supported yet: the view has no certificate of the run's CA\n";
+    return 2;
+  }
+  const auto& s = run.world.scenario;
+  LiveView::Setup setup;
+  setup.dds.domain = l.domain_id;
+  setup.dds.partition = l.partition;
+  setup.dds.name = "swarm-view";
+  setup.dds.profile_path = l.dds_profile;
+  setup.dds.discovery_server = l.discovery_server;
+  setup.dds.participant_id = -1;  // not an agent's: Fast DDS picks free ports
+  record::Header team;
+  team.set_groups(s.groups());
+  team.set_robots_per_group(s.robots_per_group());
+  setup.names = record::robot_names(team);
+  setup.robots_per_group = static_cast<int>(s.robots_per_group());
+  setup.frame = planner::OccupancyGrid(run.world.truth.width(), run.world.truth.height(), run.world.truth.resolution(),
+                                       run.world.truth.origin_x(), run.world.truth.origin_y());
+  setup.truth = &run.world.truth;
+  setup.tick_ns = std::uint64_t{s.tick_ms()} * 1'000'000U;
+  setup.title = s.map() + ", seed " + std::to_string(s.seed());
+  try {
+    view_ = std::make_unique<LiveView>(std::move(setup));
+  } catch (const std::exception& e) {
+    err << "swarm run: the live view cannot join the run's DDS domain: " << e.what() << "\n";
+    return 1;
+  }
+  ViewServerOptions server;
+  server.bind = options.view_bind;
+  server.port = options.view_port;
+  server_ = std::thread([this, server, &out, &err] {
+    const ViewRoutes routes = {{"/", {"text/html; charset=utf-8", view_page()}},
+                               {"/live.json", {"application/json", view_->setup_json()}}};
+    status_ = serve(server, routes, out, err, view_.get(), &stop_, &listening_);
+    ended_.store(true);
+  });
+  while (!listening_.load() && !ended_.load()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  if (ended_.load()) {
+    server_.join();
+    return status_ != 0 ? status_ : 1;
+  }
+  return 0;
+}
+
+void LiveRunView::stop() {
+  stop_.store(true);
+  if (server_.joinable()) server_.join();
+  view_.reset();
+}
+
+}  // namespace swarm::tools
