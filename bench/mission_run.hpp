@@ -7,10 +7,12 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "live_run_view.hpp"
 #include "run_launch.hpp"
 
 namespace swarm::bench {
@@ -32,7 +34,16 @@ inline std::optional<MissionTiming> run_mission(tools::RunOptions options, const
   const tools::PreparedRun prepared = tools::prepare_run(options);
   auto processes = tools::build_run_processes(prepared.launch, prepared.world.scenario);
   for (auto& p : processes) p.echo_stdout = false;
+  tools::LiveRunView view;  // with options.view: watched live, as `swarm run --view` does
+  if (options.view) {
+    std::ostringstream quiet;
+    if (view.start(options, prepared, quiet, quiet) != 0) {
+      error = "the live view did not start: " + quiet.str();
+      return std::nullopt;
+    }
+  }
   const auto result = tools::run_processes(processes, options.timeout);
+  view.stop();
   MissionTiming t;
   t.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!result.ok) {
