@@ -239,30 +239,20 @@ TEST(View, TheReplayPageDrawsTheRobotsAndTheWallsWhereTheRecordHasThem) {
   EXPECT_NE(not_a_run.output.find("is not a run directory"), std::string::npos) << not_a_run.output;
 }
 
-// `swarm run --view`: a client speaking Foxglove's protocol (serverInfo, advertise, subscribe,
-// binary message frames) sees every robot where the record has it at that tick, then goes away
-// mid-run without a close; the run's record is byte for byte the one of the same run unwatched.
-TEST(View, ALiveRunIsWatchedOverFoxglovesProtocolAndNotChangedByIt) {
-  const std::string dir = fresh_dir("view_live");
-  const CommandResult plain = run_swarm("run --map maze1 --seed 3 --out " + dir + "/plain");
-  ASSERT_EQ(plain.exit_code, 0) << plain.output;
-
-  const int port = 20000 + (::getpid() + 7) % 20000;
-  BackgroundSwarm run({"run", "--map", "maze1", "--seed", "3", "--out", dir + "/viewed", "--view", "--view-port",
-                       std::to_string(port)},
-                      dir + "/viewed.log");
-  ASSERT_TRUE(run.started());
-  ASSERT_TRUE(wait_for(port)) << "no live view on port " << port;
-  WsClient ws(port);
-  ASSERT_NE(ws.handshake().find("101"), std::string::npos) << ws.handshake();
-  ASSERT_NE(ws.handshake().find("foxglove.websocket.v1"), std::string::npos) << ws.handshake();
+// Speaks Foxglove's protocol on `ws`: serverInfo, advertise (every channel JSON with a JSON Schema),
+// a subscription to every channel; then (log time, message) of up to `count` /tf frames, fewer if
+// the connection ends. `robots_scenes` counts the /robots messages.
+std::vector<std::pair<std::uint64_t, nlohmann::json>> follow_tf(WsClient& ws, std::size_t count, int& robots_scenes) {
+  std::vector<std::pair<std::uint64_t, nlohmann::json>> seen;
+  EXPECT_NE(ws.handshake().find("101"), std::string::npos) << ws.handshake();
+  EXPECT_NE(ws.handshake().find("foxglove.websocket.v1"), std::string::npos) << ws.handshake();
   const auto info = ws.next();
-  ASSERT_EQ(info.first, 1);
+  if (info.first != 1) return seen;
   EXPECT_EQ(nlohmann::json::parse(info.second)["op"], "serverInfo");
   const auto advertise = ws.next();
-  ASSERT_EQ(advertise.first, 1);
+  if (advertise.first != 1) return seen;
   const nlohmann::json channels = nlohmann::json::parse(advertise.second);
-  ASSERT_EQ(channels["op"], "advertise");
+  EXPECT_EQ(channels["op"], "advertise");
   std::map<std::string, std::uint32_t> id_of;
   nlohmann::json subscriptions = nlohmann::json::array();
   for (const auto& c : channels["channels"]) {
@@ -271,28 +261,25 @@ TEST(View, ALiveRunIsWatchedOverFoxglovesProtocolAndNotChangedByIt) {
     EXPECT_FALSE(nlohmann::json::parse(c["schema"].get<std::string>()).empty());
     subscriptions.push_back({{"id", 100 + c["id"].get<std::uint32_t>()}, {"channelId", c["id"]}});
   }
-  ASSERT_TRUE(id_of.count("/tf") && id_of.count("/map") && id_of.count("/robots") && id_of.count("/log"));
+  EXPECT_TRUE(id_of.count("/tf") && id_of.count("/map") && id_of.count("/robots") && id_of.count("/log"));
   ws.send_text(nlohmann::json({{"op", "subscribe"}, {"subscriptions", subscriptions}}).dump());
-  // (tick, every robot's cell) from /tf, until 10 of them or the run ends.
-  std::vector<std::pair<std::uint64_t, nlohmann::json>> seen;
-  int maps = 0, robots = 0;
-  while (seen.size() < 10) {
+  while (seen.size() < count) {
     const auto [op, payload] = ws.next();
-    if (op != 2) break;  // the view closed: the run is over
-    ASSERT_GE(payload.size(), 13U);
-    ASSERT_EQ(payload[0], '\x01');
+    if (op != 2) break;  // closed, or nothing more
+    EXPECT_GE(payload.size(), 13U);
+    if (payload.size() < 13 || payload[0] != '\x01') break;
     const auto sub = static_cast<std::uint32_t>(le(payload, 1, 4));
     const nlohmann::json m = nlohmann::json::parse(payload.substr(13));
     if (sub == 100 + id_of["/tf"]) seen.emplace_back(le(payload, 5, 8), m);
-    maps += sub == 100 + id_of["/map"];
-    robots += sub == 100 + id_of["/robots"];
+    robots_scenes += sub == 100 + id_of["/robots"];
   }
-  EXPECT_EQ(robots, 1);
-  // Gone without a close frame, mid-run.
-  ASSERT_EQ(run.wait(), 0);
-  ASSERT_GE(seen.size(), 3U);
+  return seen;
+}
 
-  const auto frames = record::read_record(dir + "/viewed/run.pb");
+// Every /tf frame of a tick the record holds puts every robot where the record has it; returns
+// how many frames were compared.
+int compare_with_record(const std::vector<std::pair<std::uint64_t, nlohmann::json>>& seen, const std::string& run_pb) {
+  const auto frames = record::read_record(run_pb);
   const record::Header& h = frames.front().header();
   std::map<std::uint32_t, const record::Poses*> poses_at;
   for (const auto& f : frames) {
@@ -305,14 +292,71 @@ TEST(View, ALiveRunIsWatchedOverFoxglovesProtocolAndNotChangedByIt) {
     if (it == poses_at.end()) continue;  // a tick the record does not hold (before the first pose)
     ++compared;
     const auto& t = m["transforms"];
-    ASSERT_EQ(static_cast<int>(t.size()) * 2, it->second->xy_size());
-    for (std::size_t r = 0; r < t.size(); ++r) {
-      EXPECT_NEAR(t[r]["translation"]["x"].get<double>(), h.origin_x() + (it->second->xy(2 * static_cast<int>(r)) + 0.5) * h.resolution(), 1e-9);
-      EXPECT_NEAR(t[r]["translation"]["y"].get<double>(), h.origin_y() + (it->second->xy(2 * static_cast<int>(r) + 1) + 0.5) * h.resolution(), 1e-9);
+    EXPECT_EQ(static_cast<int>(t.size()) * 2, it->second->xy_size());
+    for (int r = 0; r < static_cast<int>(t.size()) && 2 * r + 1 < it->second->xy_size(); ++r) {
+      const auto& at = t[static_cast<std::size_t>(r)]["translation"];
+      EXPECT_NEAR(at["x"].get<double>(), h.origin_x() + (it->second->xy(2 * r) + 0.5) * h.resolution(), 1e-9);
+      EXPECT_NEAR(at["y"].get<double>(), h.origin_y() + (it->second->xy(2 * r + 1) + 0.5) * h.resolution(), 1e-9);
     }
   }
-  EXPECT_GE(compared, 3);
+  return compared;
+}
+
+// `swarm run --view`: a client speaking Foxglove's protocol sees every robot where the record has
+// it at that tick, then goes away mid-run without a close; the run's record is byte for byte the
+// one of the same run unwatched.
+TEST(View, ALiveRunIsWatchedOverFoxglovesProtocolAndNotChangedByIt) {
+  const std::string dir = fresh_dir("view_live");
+  const CommandResult plain = run_swarm("run --map maze1 --seed 3 --out " + dir + "/plain");
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+
+  const int port = 20000 + (::getpid() + 7) % 20000;
+  BackgroundSwarm run({"run", "--map", "maze1", "--seed", "3", "--out", dir + "/viewed", "--view", "--view-port",
+                       std::to_string(port)},
+                      dir + "/viewed.log");
+  ASSERT_TRUE(run.started());
+  ASSERT_TRUE(wait_for(port)) << "no live view on port " << port;
+  int robots = 0;
+  std::vector<std::pair<std::uint64_t, nlohmann::json>> seen;
+  {
+    WsClient ws(port);
+    seen = follow_tf(ws, 10, robots);
+  }  // gone without a close frame, mid-run
+  EXPECT_EQ(robots, 1);
+  ASSERT_EQ(run.wait(), 0);
+  EXPECT_GE(compare_with_record(seen, dir + "/viewed/run.pb"), 3);
   EXPECT_EQ(slurp(dir + "/viewed/run.pb"), slurp(dir + "/plain/run.pb")) << "the view changed the run";
+}
+
+// `swarm view --attach`: the same view of a swarm it did not start (as a deployment's), found by
+// its domain and partition, read-only; it keeps serving after the swarm ends, until a signal.
+TEST(View, AttachedToARunningSwarmItFollowsTheRobots) {
+  const std::string dir = fresh_dir("view_attach");
+  const int port = 20000 + (::getpid() + 13) % 20000;
+  const std::string domain = std::to_string(41 + ::getpid() % 8);  // 41..48: left to tests (run_launch.hpp)
+  const std::string partition = "view-attach-" + std::to_string(::getpid());
+  const std::string scenario = source_path("scenarios/default.pbtxt");
+  BackgroundSwarm viewer({"view", "--attach", "--scenario", scenario, "--domain", domain, "--partition", partition,
+                          "--view-port", std::to_string(port)},
+                         dir + "/view.log");
+  ASSERT_TRUE(viewer.started());
+  ASSERT_TRUE(wait_for(port)) << "no view on port " << port;
+  WsClient ws(port);
+  BackgroundSwarm run({"run", "--scenario", scenario, "--domain", domain, "--partition", partition, "--discovery", "simple",
+                       "--out", dir + "/run"},
+                      dir + "/run.log");
+  int robots = 0;
+  const auto seen = follow_tf(ws, 10, robots);
+  ASSERT_EQ(run.wait(), 0) << "see " << dir << "/run.log";
+  EXPECT_EQ(robots, 1);
+  EXPECT_GE(compare_with_record(seen, dir + "/run/run.pb"), 3) << "see " << dir << "/view.log";
+  EXPECT_EQ(viewer.stop(), 0);
+
+  const CommandResult no_scenario = run_swarm("view --attach --domain " + domain);
+  EXPECT_EQ(no_scenario.exit_code, 2);
+  EXPECT_NE(no_scenario.output.find("--scenario"), std::string::npos) << no_scenario.output;
+  const CommandResult neither = run_swarm("view");
+  EXPECT_EQ(neither.exit_code, 2);
 }
 
 }  // namespace

@@ -33,12 +33,20 @@ struct ExportOptions {
 int export_command(const ExportOptions& options, std::ostream& out, std::ostream& err);
 
 struct ViewOptions {
-  std::string run_dir;
+  std::string run_dir;  // a replay; or, empty, --attach:
+  bool attach = false;  // watch a running swarm (a deployment) live
+  std::string scenario_path;  // its scenario: the map, team and tick length
+  int domain = 0;
+  std::string partition = "swarm";
+  std::string discovery_server;  // HOST:PORT, or "" for simple discovery
+  std::string profile;           // Fast DDS XML profile; "" = config::dds_profile_path()
   ViewServerOptions server;
 };
 
-// `swarm view RUN_DIR`: serves the run's replay page until Ctrl-C: 0 then; 2 when the run directory
-// is not a run, its record is truncated or damaged, or the address cannot be listened on.
+// `swarm view RUN_DIR` serves the run's replay page, `swarm view --attach --scenario FILE ...` a
+// live view of a running swarm, until Ctrl-C: 0 then; 2 when the run directory is not a run, its
+// record is truncated or damaged, the scenario does not load, or the address cannot be listened
+// on; 1 when the DDS participant cannot be made.
 int view_command(const ViewOptions& options, std::ostream& out, std::ostream& err);
 
 // `swarm bench [SUITE] [Google Benchmark flags]`: with no suite runs swarm-bench-planner (ray

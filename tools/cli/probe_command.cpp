@@ -11,6 +11,7 @@
 
 #include "cli_numbers.hpp"
 #include "command.hpp"
+#include "observer_dds.hpp"
 #include "swarm/comm/endpoint.hpp"
 #include "swarm/comm/participant.hpp"
 #include "swarm/comm/topology.hpp"
@@ -50,12 +51,7 @@ int probe_command(const ProbeOptions& o, std::ostream& out, std::ostream& err) {
   int writers = 0;  // the most clock writers matched at once
   int readers = 0;  // the most readers the done writer matched at once
   try {
-    comm::DdsOptions dds;
-    dds.domain = o.domain;
-    dds.partition = o.partition;
-    dds.name = "swarm-probe";
-    dds.profile_path = o.profile.empty() ? config::dds_profile_path() : o.profile;
-    dds.discovery_server = o.discovery_server;
+    comm::DdsOptions dds = observer_dds("swarm-probe", o.domain, o.partition, o.profile, o.discovery_server);
     dds.participant_id = o.participant_id;
     dds.security_dir = o.security_dir;
     dds.identity = o.identity;

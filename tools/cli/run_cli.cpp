@@ -151,12 +151,36 @@ Command add_export(CLI::App& app) {
 
 Command add_view(CLI::App& app) {
   auto o = std::make_shared<ViewOptions>();
-  CLI::App* cmd = app.add_subcommand("view", "Replay a run in the browser: its map, robots, routes and phases");
-  cmd->add_option("run_dir", o->run_dir, "Run directory written by `swarm run`")->required();
+  CLI::App* cmd = app.add_subcommand(
+      "view", "Replay a run in the browser (RUN_DIR), or watch a running swarm live (--attach --scenario FILE)");
+  auto* run_dir = cmd->add_option("run_dir", o->run_dir, "Run directory written by `swarm run`");
+  auto* attach = cmd->add_flag("--attach", o->attach, "Watch a running swarm (a deployment) live, read-only")
+                     ->excludes(run_dir);
+  cmd->add_option("--scenario", o->scenario_path, "With --attach: the swarm's scenario file (its map, team, tick)")
+      ->needs(attach);
+  cmd->add_option("--domain", o->domain, "With --attach: the swarm's DDS domain id")
+      ->capture_default_str()
+      ->check(number({0, 232}))
+      ->needs(attach);
+  cmd->add_option("--partition", o->partition, "With --attach: the swarm's DDS partition")->capture_default_str()->needs(attach);
+  cmd->add_option("--discovery-server", o->discovery_server,
+                  "With --attach: HOST:PORT of the swarm's Fast DDS discovery server (default: simple discovery)")
+      ->needs(attach);
+  cmd->add_option("--profile", o->profile, "With --attach: Fast DDS XML profile (default: as `swarm probe`)")->needs(attach);
   cmd->add_option("--view-port", o->server.port, "The port to serve on")->capture_default_str()->check(CLI::Range(1, 65535));
   cmd->add_option("--view-bind", o->server.bind, "The address to serve on (loopback unless told otherwise)")
       ->capture_default_str();
-  return {cmd, [o](std::ostream& out, std::ostream& err) { return view_command(*o, out, err); }};
+  return {cmd, [o](std::ostream& out, std::ostream& err) {
+            if (o->run_dir.empty() && !o->attach) {
+              err << "swarm view: give a run directory to replay, or --attach --scenario FILE to watch a swarm live\n";
+              return 2;
+            }
+            if (o->attach && o->scenario_path.empty()) {
+              err << "swarm view --attach: --scenario FILE is needed: the swarm's map, team and tick length\n";
+              return 2;
+            }
+            return view_command(*o, out, err);
+          }};
 }
 
 Command add_bench(CLI::App& app) {

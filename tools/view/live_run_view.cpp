@@ -3,7 +3,7 @@
 #include <chrono>
 
 #include "live_view.hpp"
-#include "swarm/record/record.hpp"
+#include "observer_dds.hpp"
 #include "view_server.hpp"
 
 namespace swarm::tools {
@@ -17,24 +17,8 @@ int LiveRunView::start(const RunOptions& options, const PreparedRun& run, std::o
     err << "swarm run: --view with --secure is not supported yet: the view has no certificate of the run's CA\n";
     return 2;
   }
-  const auto& s = run.world.scenario;
-  LiveView::Setup setup;
-  setup.dds.domain = l.domain_id;
-  setup.dds.partition = l.partition;
-  setup.dds.name = "swarm-view";
-  setup.dds.profile_path = l.dds_profile;
-  setup.dds.discovery_server = l.discovery_server;
-  setup.dds.participant_id = -1;  // not an agent's: Fast DDS picks free ports
-  record::Header team;
-  team.set_groups(s.groups());
-  team.set_robots_per_group(s.robots_per_group());
-  setup.names = record::robot_names(team);
-  setup.robots_per_group = static_cast<int>(s.robots_per_group());
-  setup.frame = planner::OccupancyGrid(run.world.truth.width(), run.world.truth.height(), run.world.truth.resolution(),
-                                       run.world.truth.origin_x(), run.world.truth.origin_y());
-  setup.truth = &run.world.truth;
-  setup.tick_ns = std::uint64_t{s.tick_ms()} * 1'000'000U;
-  setup.title = s.map() + ", seed " + std::to_string(s.seed());
+  LiveView::Setup setup =
+      LiveView::setup_for(run.world, observer_dds("swarm-view", l.domain_id, l.partition, l.dds_profile, l.discovery_server));
   try {
     view_ = std::make_unique<LiveView>(std::move(setup));
   } catch (const std::exception& e) {

@@ -5,6 +5,7 @@
 #include "swarm/app/convert.hpp"
 #include "swarm/comm/endpoint.hpp"
 #include "swarm/comm/topology.hpp"
+#include "swarm/record/record.hpp"
 
 namespace swarm::tools {
 
@@ -19,6 +20,23 @@ struct LiveView::Readers {
   std::unique_ptr<comm::Reader<msgs::RoundStart>> round;
   std::unique_ptr<comm::Reader<msgs::PhaseStart>> phase;
 };
+
+LiveView::Setup LiveView::setup_for(const config::World& world, comm::DdsOptions dds) {
+  const auto& s = world.scenario;
+  Setup setup;
+  setup.dds = std::move(dds);
+  record::Header team;
+  team.set_groups(s.groups());
+  team.set_robots_per_group(s.robots_per_group());
+  setup.names = record::robot_names(team);
+  setup.robots_per_group = static_cast<int>(s.robots_per_group());
+  setup.frame = planner::OccupancyGrid(world.truth.width(), world.truth.height(), world.truth.resolution(),
+                                       world.truth.origin_x(), world.truth.origin_y());
+  setup.truth = &world.truth;
+  setup.tick_ns = std::uint64_t{s.tick_ms()} * 1'000'000U;
+  setup.title = s.map() + ", seed " + std::to_string(s.seed());
+  return setup;
+}
 
 LiveView::LiveView(Setup setup)
     : setup_(std::move(setup)),

@@ -21,6 +21,7 @@
 #include "foxglove_json.hpp"
 #include "live_feed.hpp"
 #include "swarm/comm/participant.hpp"
+#include "swarm/config/scenario.hpp"
 #include "swarm/planner/grid/grid.hpp"
 
 namespace swarm::tools {
@@ -36,6 +37,8 @@ class LiveView : public LiveFeed {
     std::uint64_t tick_ns = 50'000'000;
     std::string title;  // e.g. "maze1, seed 1, explore"
   };
+  // The setup for watching a run of `world` (its map, team and tick length) over `dds`.
+  static Setup setup_for(const config::World& world, comm::DdsOptions dds);
   explicit LiveView(Setup setup);
   ~LiveView() override;
   LiveView(const LiveView&) = delete;
