@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <chrono>
@@ -239,11 +240,16 @@ TEST(View, TheReplayPageDrawsTheRobotsAndTheWallsWhereTheRecordHasThem) {
   EXPECT_NE(not_a_run.output.find("is not a run directory"), std::string::npos) << not_a_run.output;
 }
 
+// What a client saw of a live view: (log time, message) per channel it keeps.
+struct Followed {
+  std::vector<std::pair<std::uint64_t, nlohmann::json>> tf, robots, log;
+};
+
 // Speaks Foxglove's protocol on `ws`: serverInfo, advertise (every channel JSON with a JSON Schema),
-// a subscription to every channel; then (log time, message) of up to `count` /tf frames, fewer if
-// the connection ends. `robots_scenes` counts the /robots messages.
-std::vector<std::pair<std::uint64_t, nlohmann::json>> follow_tf(WsClient& ws, std::size_t count, int& robots_scenes) {
-  std::vector<std::pair<std::uint64_t, nlohmann::json>> seen;
+// a subscription to every channel; then what comes until `count` /tf frames have, or the
+// connection ends.
+Followed follow(WsClient& ws, std::size_t count) {
+  Followed seen;
   EXPECT_NE(ws.handshake().find("101"), std::string::npos) << ws.handshake();
   EXPECT_NE(ws.handshake().find("foxglove.websocket.v1"), std::string::npos) << ws.handshake();
   const auto info = ws.next();
@@ -263,15 +269,16 @@ std::vector<std::pair<std::uint64_t, nlohmann::json>> follow_tf(WsClient& ws, st
   }
   EXPECT_TRUE(id_of.count("/tf") && id_of.count("/map") && id_of.count("/robots") && id_of.count("/log"));
   ws.send_text(nlohmann::json({{"op", "subscribe"}, {"subscriptions", subscriptions}}).dump());
-  while (seen.size() < count) {
+  while (seen.tf.size() < count) {
     const auto [op, payload] = ws.next();
     if (op != 2) break;  // closed, or nothing more
     EXPECT_GE(payload.size(), 13U);
     if (payload.size() < 13 || payload[0] != '\x01') break;
     const auto sub = static_cast<std::uint32_t>(le(payload, 1, 4));
-    const nlohmann::json m = nlohmann::json::parse(payload.substr(13));
-    if (sub == 100 + id_of["/tf"]) seen.emplace_back(le(payload, 5, 8), m);
-    robots_scenes += sub == 100 + id_of["/robots"];
+    const std::pair<std::uint64_t, nlohmann::json> m{le(payload, 5, 8), nlohmann::json::parse(payload.substr(13))};
+    if (sub == 100 + id_of["/tf"]) seen.tf.push_back(m);
+    if (sub == 100 + id_of["/robots"]) seen.robots.push_back(m);
+    if (sub == 100 + id_of["/log"]) seen.log.push_back(m);
   }
   return seen;
 }
@@ -316,16 +323,43 @@ TEST(View, ALiveRunIsWatchedOverFoxglovesProtocolAndNotChangedByIt) {
                       dir + "/viewed.log");
   ASSERT_TRUE(run.started());
   ASSERT_TRUE(wait_for(port)) << "no live view on port " << port;
-  int robots = 0;
-  std::vector<std::pair<std::uint64_t, nlohmann::json>> seen;
+  Followed seen;
   {
     WsClient ws(port);
-    seen = follow_tf(ws, 10, robots);
+    seen = follow(ws, 10);
   }  // gone without a close frame, mid-run
-  EXPECT_EQ(robots, 1);
+  EXPECT_EQ(seen.robots.size(), 1U);
   ASSERT_EQ(run.wait(), 0);
-  EXPECT_GE(compare_with_record(seen, dir + "/viewed/run.pb"), 3);
+  EXPECT_GE(compare_with_record(seen.tf, dir + "/viewed/run.pb"), 3);
   EXPECT_EQ(slurp(dir + "/viewed/run.pb"), slurp(dir + "/plain/run.pb")) << "the view changed the run";
+}
+
+// A robot killed during a watched run is marked lost when the clock says so: its /robots entity
+// grey and "NAME (lost)", and a /log line with the tick.
+TEST(View, ALiveViewMarksARobotLostWhenItDies) {
+  const std::string dir = fresh_dir("view_lost");
+  const int port = 20000 + (::getpid() + 11) % 20000;
+  BackgroundSwarm run({"run", "--map", "maze1", "--kill", "member-1-2@60", "--out", dir + "/run", "--view", "--view-port",
+                       std::to_string(port)},
+                      dir + "/run.log");
+  ASSERT_TRUE(run.started());
+  ASSERT_TRUE(wait_for(port)) << "no live view on port " << port;
+  WsClient ws(port);
+  const Followed seen = follow(ws, std::numeric_limits<std::size_t>::max());  // until the run ends
+  ASSERT_EQ(run.wait(), 0) << "see " << dir << "/run.log";
+  ASSERT_GE(seen.robots.size(), 2U);
+  const nlohmann::json& last = seen.robots.back().second["entities"];
+  for (const auto& e : last) {
+    const std::string id = e["id"].get<std::string>();
+    EXPECT_EQ(e["texts"][0]["text"], id == "member-1-2" ? "member-1-2 (lost)" : id) << id;
+  }
+  bool logged = false;
+  for (const auto& [ns, m] : seen.log) {
+    const std::string text = m["message"].get<std::string>();
+    if (text.rfind("member-1-2 lost at tick ", 0) == 0) logged = std::stoi(text.substr(24)) >= 60;
+  }
+  EXPECT_TRUE(logged);
+  EXPECT_GE(compare_with_record(seen.tf, dir + "/run/run.pb"), 3);
 }
 
 // `swarm view --attach`: the same view of a swarm it did not start (as a deployment's), found by
@@ -345,11 +379,10 @@ TEST(View, AttachedToARunningSwarmItFollowsTheRobots) {
   BackgroundSwarm run({"run", "--scenario", scenario, "--domain", domain, "--partition", partition, "--discovery", "simple",
                        "--out", dir + "/run"},
                       dir + "/run.log");
-  int robots = 0;
-  const auto seen = follow_tf(ws, 10, robots);
+  const Followed seen = follow(ws, 10);
   ASSERT_EQ(run.wait(), 0) << "see " << dir << "/run.log";
-  EXPECT_EQ(robots, 1);
-  EXPECT_GE(compare_with_record(seen, dir + "/run/run.pb"), 3) << "see " << dir << "/view.log";
+  EXPECT_EQ(seen.robots.size(), 1U);
+  EXPECT_GE(compare_with_record(seen.tf, dir + "/run/run.pb"), 3) << "see " << dir << "/view.log";
   EXPECT_EQ(viewer.stop(), 0);
 
   const CommandResult no_scenario = run_swarm("view --attach --domain " + domain);

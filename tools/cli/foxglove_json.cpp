@@ -154,7 +154,8 @@ json foxglove_transforms(const std::vector<std::string>& names, const std::vecto
   return {{"transforms", std::move(transforms)}};
 }
 
-json foxglove_robots(const std::vector<std::string>& names, int robots_per_group, double resolution) {
+json foxglove_robots(const std::vector<std::string>& names, int robots_per_group, double resolution,
+                     const std::vector<bool>& lost) {
   // The viewer page's palette (view/page/index.html), as fractions.
   static constexpr std::array<std::array<double, 3>, 8> kPalette = {{{31, 119, 180},
                                                                       {255, 127, 14},
@@ -166,8 +167,9 @@ json foxglove_robots(const std::vector<std::string>& names, int robots_per_group
                                                                       {127, 127, 127}}};
   json entities = json::array();
   for (std::size_t r = 0; r < names.size(); ++r) {
-    const auto& c = kPalette[(r / static_cast<std::size_t>(std::max(1, robots_per_group))) % kPalette.size()];
-    const json colour = {{"r", c[0] / 255.0}, {"g", c[1] / 255.0}, {"b", c[2] / 255.0}, {"a", 1.0}};
+    const bool gone = r < lost.size() && lost[r];
+    const auto& c = gone ? kPalette.back() : kPalette[(r / static_cast<std::size_t>(std::max(1, robots_per_group))) % kPalette.size()];
+    const json colour = {{"r", c[0] / 255.0}, {"g", c[1] / 255.0}, {"b", c[2] / 255.0}, {"a", gone ? 0.5 : 1.0}};
     entities.push_back({{"timestamp", stamp(0)},
                         {"frame_id", names[r]},
                         {"id", names[r]},
@@ -181,7 +183,7 @@ json foxglove_robots(const std::vector<std::string>& names, int robots_per_group
                                                 {"font_size", 12.0},
                                                 {"scale_invariant", true},
                                                 {"color", colour},
-                                                {"text", names[r]}}})}});
+                                                {"text", gone ? names[r] + " (lost)" : names[r]}}})}});
   }
   return {{"deletions", json::array()}, {"entities", std::move(entities)}};
 }

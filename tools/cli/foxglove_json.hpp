@@ -31,8 +31,10 @@ struct FoxgloveFrame {
 // Every robot's frame in "map", cells[i] for names[i].
 [[nodiscard]] nlohmann::json foxglove_transforms(const std::vector<std::string>& names, const std::vector<planner::Cell>& cells,
                                                  const FoxgloveFrame& f, std::uint64_t ns);
-// One cube and label per robot, locked to its frame, in its group's colour (robots_per_group a group).
-[[nodiscard]] nlohmann::json foxglove_robots(const std::vector<std::string>& names, int robots_per_group, double resolution);
+// One cube and label per robot, locked to its frame, in its group's colour (robots_per_group a group);
+// a robot marked in `lost` grey, its label "NAME (lost)".
+[[nodiscard]] nlohmann::json foxglove_robots(const std::vector<std::string>& names, int robots_per_group, double resolution,
+                                             const std::vector<bool>& lost = {});
 // A route: its cells as poses in "map".
 [[nodiscard]] nlohmann::json foxglove_route(const std::vector<planner::Cell>& cells, const FoxgloveFrame& f, std::uint64_t ns);
 // A 360-degree scan in the robot's frame: beam i at 2 pi i / beams, ranges in cells.

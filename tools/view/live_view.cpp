@@ -53,6 +53,14 @@ LiveView::LiveView(Setup setup)
     cells_ = std::move(cells);
     ++cells_version_;
     ticks_.store(tick_);
+    lost_.resize(c.robots().size(), false);
+    for (std::size_t r = 0; r < c.robots().size(); ++r) {
+      if (c.robots()[r].alive() || lost_[r]) continue;
+      lost_[r] = true;
+      ++lost_version_;
+      const std::string name = r < setup_.names.size() ? setup_.names[r] : "robot " + std::to_string(r);
+      log_.emplace_back(std::uint64_t{tick_} * setup_.tick_ns, name + " lost at tick " + std::to_string(tick_));
+    }
   });
   readers_->round = std::make_unique<comm::Reader<msgs::RoundStart>>(*participant_, comm::topic::kRound, [this](msgs::RoundStart&& r) {
     planner::OccupancyGrid g = setup_.frame;
@@ -92,15 +100,16 @@ std::vector<LiveChannel> LiveView::channels() const {
 std::vector<LiveMessage> LiveView::since(std::vector<std::uint64_t>& cursor) const {
   cursor.resize(kSlots, 0);
   std::vector<LiveMessage> out;
-  if (cursor[kRobotsSeen] == 0) {
-    out.push_back({kRobots, 0, foxglove_robots(setup_.names, setup_.robots_per_group, frame_.resolution).dump()});
-    cursor[kRobotsSeen] = 1;
-  }
   if (setup_.truth != nullptr && cursor[kTruthSeen] == 0) {
     out.push_back({kTruth, 0, foxglove_grid(*setup_.truth, 0).dump()});
     cursor[kTruthSeen] = 1;
   }
   const std::lock_guard<std::mutex> lock(mutex_);
+  if (lost_version_ > cursor[kRobotsSeen]) {
+    const std::uint64_t ns = std::uint64_t{tick_} * setup_.tick_ns;
+    out.push_back({kRobots, ns, foxglove_robots(setup_.names, setup_.robots_per_group, frame_.resolution, lost_).dump()});
+    cursor[kRobotsSeen] = lost_version_;
+  }
   if (map_version_ > cursor[kMapSeen]) {
     const std::uint64_t ns = map_tick_ * setup_.tick_ns;
     out.push_back({kMap, ns, foxglove_grid(map_, ns).dump()});

@@ -1,6 +1,7 @@
 // The live view of a running swarm: a read-only DDS participant in the run's domain and partition
 // that reads the simulator's clock (every robot's cell, each tick), the GCS's round starts (its
-// fused map) and phase announcements, and keeps the newest of each for the viewer's WebSocket.
+// fused map) and phase announcements, and keeps the newest of each for the viewer's WebSocket. A
+// robot the clock says is dead is marked lost (/robots: grey, "NAME (lost)"; /log: when).
 //
 // It never writes and never joins the lockstep barrier: the clock master waits only for the run's
 // own agents (comm/lockstep.hpp), and the readers' callbacks only copy the newest sample under a
@@ -58,6 +59,8 @@ class LiveView : public LiveFeed {
   std::uint32_t tick_ = 0;
   std::vector<planner::Cell> cells_;
   std::uint64_t cells_version_ = 0;
+  std::vector<bool> lost_;  // per robot: the simulator has it dead
+  std::uint64_t lost_version_ = 1;
   planner::OccupancyGrid map_;
   std::uint64_t map_tick_ = 0, map_version_ = 0;
   std::vector<std::pair<std::uint64_t, std::string>> log_;  // (ns, text)
