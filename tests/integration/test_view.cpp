@@ -334,6 +334,61 @@ TEST(View, ALiveRunIsWatchedOverFoxglovesProtocolAndNotChangedByIt) {
   EXPECT_EQ(slurp(dir + "/viewed/run.pb"), slurp(dir + "/plain/run.pb")) << "the view changed the run";
 }
 
+// The live page in headless Chromium during a real-time run: the map file's cells from /map/truth
+// pixel by pixel, and every robot drawn from /tf as a whole cell in its group's colour (which cells
+// is the protocol test's to check: the page shows whatever tick it was at).
+TEST(View, TheLivePageDrawsTheMapAndEveryRobot) {
+  ASSERT_EQ(::access("/usr/bin/chromium", X_OK), 0) << "chromium is missing: run scripts/install-deps.sh";
+  const std::string dir = fresh_dir("view_live_page");
+  const int port = 20000 + (::getpid() + 5) % 20000;
+  // Real time at 5 ticks a second: its exploration (about 40 ticks) outlasts the page's loading.
+  BackgroundSwarm run({"run", "--map", "warehouse-5x8", "--realtime", "--tick-ms", "200", "--out", dir + "/run",
+                       "--view", "--view-port", std::to_string(port)},
+                      dir + "/run.log");
+  ASSERT_TRUE(run.started());
+  ASSERT_TRUE(wait_for(port)) << "no live view on port " << port;
+  std::this_thread::sleep_for(std::chrono::seconds(2));  // the processes start and the clock ticks
+  const int scale = 16;
+  const std::string png = dir + "/live.png";
+  const std::string url = "http://127.0.0.1:" + std::to_string(port) + "/?scale=" + std::to_string(scale) +
+                          "&labels=0&truth=1";
+  const std::string chromium = "chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars "
+                               "--window-size=600,400 --virtual-time-budget=3000 --screenshot=" + png + " '" + url +
+                               "' > " + dir + "/chromium.log 2>&1";
+  ASSERT_EQ(std::system(chromium.c_str()), 0) << "see " << dir << "/chromium.log";
+  (void)run.stop();
+  const cv::Mat shot = cv::imread(png, cv::IMREAD_COLOR);
+  ASSERT_FALSE(shot.empty());
+  auto scenario = config::load_scenario(source_path("scenarios/default.pbtxt"));
+  scenario.set_map("warehouse-5x8");
+  scenario.clear_start();
+  const planner::OccupancyGrid truth = config::resolve_world(scenario, ".").truth;
+  const int w = truth.width(), h = truth.height();
+  ASSERT_GE(shot.cols, w * scale);
+  ASSERT_GE(shot.rows, h * scale);
+  // Per group, the pixels of its colour: 3 robots, each a whole cell.
+  std::array<int, 3> pixels{};
+  std::vector<std::uint8_t> robot_cell(truth.size(), 0);
+  for (int y = 0; y < h * scale; ++y) {
+    for (int x = 0; x < w * scale; ++x) {
+      const auto c = rgb_at(shot, x, y);
+      for (std::size_t g = 0; g < kGroupColour.size(); ++g) {
+        if (c != kGroupColour[g]) continue;
+        ++pixels[g];
+        robot_cell[static_cast<std::size_t>(truth.index({x / scale, h - 1 - y / scale}))] = 1;
+      }
+    }
+  }
+  for (std::size_t g = 0; g < pixels.size(); ++g) EXPECT_EQ(pixels[g], 3 * scale * scale) << "group " << g;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (robot_cell[static_cast<std::size_t>(truth.index({x, y}))]) continue;
+      EXPECT_EQ(rgb_at(shot, (x + 0.5) * scale, (h - 1 - y + 0.5) * scale), truth.is_occupied({x, y}) ? kWall : kFree)
+          << "cell " << x << "," << y;
+    }
+  }
+}
+
 // A robot killed during a watched run is marked lost when the clock says so: its /robots entity
 // grey and "NAME (lost)", and a /log line with the tick.
 TEST(View, ALiveViewMarksARobotLostWhenItDies) {
