@@ -205,7 +205,7 @@ TEST(View, TheReplayPageDrawsTheRobotsAndTheWallsWhereTheRecordHasThem) {
   const int scale = 16;
   const std::string png = dir + "/view.png";
   const std::string url = "http://127.0.0.1:" + std::to_string(port) + "/?tick=" + std::to_string(poses->tick()) +
-                          "&scale=" + std::to_string(scale) + "&labels=0&routes=0&truth=1";
+                          "&scale=" + std::to_string(scale) + "&labels=0&routes=0&frontiers=0&truth=1";
   const std::string chromium = "chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars "
                                "--window-size=600,400 --virtual-time-budget=5000 --screenshot=" + png + " '" + url +
                                "' > " + dir + "/chromium.log 2>&1";
@@ -233,6 +233,42 @@ TEST(View, TheReplayPageDrawsTheRobotsAndTheWallsWhereTheRecordHasThem) {
     }
   }
   EXPECT_GT(walls, 20);
+
+  // With the frontiers: each group's frontier cells of its last plan, a dot in its colour at 0.6
+  // over the map's white.
+  std::map<std::uint32_t, const record::Plan*> plan_of;
+  for (const auto& f : frames) {
+    if (f.has_plan() && f.plan().tick() <= poses->tick()) plan_of[f.plan().group()] = &f.plan();
+  }
+  ASSERT_FALSE(plan_of.empty());
+  const std::string dots_png = dir + "/frontiers.png";
+  const std::string with_frontiers = "chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars "
+                                     "--window-size=600,400 --virtual-time-budget=5000 --screenshot=" + dots_png + " '" +
+                                     "http://127.0.0.1:" + std::to_string(port) + "/?tick=" + std::to_string(poses->tick()) +
+                                     "&scale=" + std::to_string(scale) + "&labels=0&routes=0&truth=1' > " + dir +
+                                     "/chromium.log 2>&1";
+  ASSERT_EQ(std::system(with_frontiers.c_str()), 0) << "see " << dir << "/chromium.log";
+  const cv::Mat dots = cv::imread(dots_png, cv::IMREAD_COLOR);
+  ASSERT_FALSE(dots.empty());
+  std::map<int, int> claims;  // cell index -> how many groups' frontiers hold it
+  for (const auto& [g, plan] : plan_of) {
+    for (int k = 0; k + 1 < plan->group_frontiers_xy_size(); k += 2) ++claims[world.truth.index({plan->group_frontiers_xy(k), plan->group_frontiers_xy(k + 1)})];
+  }
+  int checked = 0;
+  for (const auto& [g, plan] : plan_of) {
+    for (int k = 0; k + 1 < plan->group_frontiers_xy_size(); k += 2) {
+      const int x = plan->group_frontiers_xy(k), y = plan->group_frontiers_xy(k + 1);
+      const auto i = world.truth.index({x, y});
+      if (claims[i] > 1 || robot_on[static_cast<std::size_t>(i)] || !world.truth.is_free({x, y})) continue;
+      const auto got = rgb_at(dots, (x + 0.5) * scale, (h.height() - 1 - y + 0.5) * scale);
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(got[static_cast<std::size_t>(c)], 0.6 * kGroupColour[g][static_cast<std::size_t>(c)] + 0.4 * 255, 2.0)
+            << "group " << g << " frontier cell " << x << "," << y;
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0);
   EXPECT_EQ(viewer.stop(), 0);  // SIGTERM: a clean stop
 
   const CommandResult not_a_run = run_swarm("view " + dir + " --view-port " + std::to_string(port));

@@ -40,6 +40,7 @@ nlohmann::json replay_json(const std::vector<record::Frame>& frames, const plann
                       {"maps", nlohmann::json::array()},
                       {"poses", nlohmann::json::array()},
                       {"routes", nlohmann::json::array()},
+                      {"plans", nlohmann::json::array()},
                       {"phases", nlohmann::json::array()},
                       {"end", nullptr}};
   for (const record::Frame& f : frames) {
@@ -48,6 +49,9 @@ nlohmann::json replay_json(const std::vector<record::Frame>& frames, const plann
       j["maps"].push_back({{"tick", f.map().tick()}, {"cells", cells_text(g)}});
     } else if (f.has_poses()) {
       j["poses"].push_back({{"tick", f.poses().tick()}, {"phase", f.poses().phase()}, {"xy", xy_of(f.poses().xy())}});
+    } else if (f.has_plan()) {
+      const auto& p = f.plan();
+      j["plans"].push_back({{"tick", p.tick()}, {"group", p.group()}, {"frontiers", xy_of(p.group_frontiers_xy())}});
     } else if (f.has_route()) {
       const auto& r = f.route();
       j["routes"].push_back({{"tick", r.tick()}, {"phase", r.phase()}, {"robot", r.robot()}, {"xy", xy_of(r.xy())}});

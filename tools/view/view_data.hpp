@@ -6,6 +6,7 @@
 //    "maps":   [{"tick", "cells": "0120..."}],        // the GCS's fused map versions
 //    "poses":  [{"tick", "phase", "xy": [x0, y0, x1, y1, ...]}],
 //    "routes": [{"tick", "phase", "robot", "xy": [...]}],
+//    "plans":  [{"tick", "group", "frontiers": [x0, y0, ...]}],   // exploration: a group's frontiers
 //    "phases": [{"tick", "phase", "task", "ended", "complete"}],
 //    "end":    {"tick", "complete"} | null}
 // Cells are one character each: 0 unknown, 1 free, 2 wall.
