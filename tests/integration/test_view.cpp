@@ -377,23 +377,41 @@ TEST(View, TheLivePageDrawsTheMapAndEveryRobot) {
   ASSERT_EQ(::access("/usr/bin/chromium", X_OK), 0) << "chromium is missing: run scripts/install-deps.sh";
   const std::string dir = fresh_dir("view_live_page");
   const int port = 20000 + (::getpid() + 5) % 20000;
-  // Real time at 5 ticks a second: its exploration (about 40 ticks) outlasts the page's loading.
-  BackgroundSwarm run({"run", "--map", "warehouse-5x8", "--realtime", "--tick-ms", "200", "--out", dir + "/run",
+  // Real time at 4 ticks a second: its exploration (about 40 ticks) outlasts the page's loading.
+  BackgroundSwarm run({"run", "--map", "warehouse-5x8", "--realtime", "--tick-ms", "250", "--out", dir + "/run",
                        "--view", "--view-port", std::to_string(port)},
                       dir + "/run.log");
   ASSERT_TRUE(run.started());
   ASSERT_TRUE(wait_for(port)) << "no live view on port " << port;
-  std::this_thread::sleep_for(std::chrono::seconds(2));  // the processes start and the clock ticks
+  {
+    // The view has robots to show once the simulator's clock reaches it (discovery takes longer on
+    // a loaded machine): wait for the first /tf as a protocol client.
+    WsClient ws(port);
+    ASSERT_EQ(follow(ws, 1).tf.size(), 1U) << "no /tf from the live view";
+  }
   const int scale = 16;
   const std::string png = dir + "/live.png";
   const std::string url = "http://127.0.0.1:" + std::to_string(port) + "/?scale=" + std::to_string(scale) +
-                          "&labels=0&truth=1";
+                          "&labels=0&truth=1&settle=1";
   const std::string chromium = "chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars "
                                "--window-size=600,400 --virtual-time-budget=3000 --screenshot=" + png + " '" + url +
                                "' > " + dir + "/chromium.log 2>&1";
-  ASSERT_EQ(std::system(chromium.c_str()), 0) << "see " << dir << "/chromium.log";
+  // The page draws the robots once the first /tf has reached it; a loaded machine may take a
+  // screenshot before that, so up to four, until one shows any robot.
+  const auto any_robot = [&](const cv::Mat& m) {
+    for (int y = 0; y < m.rows; ++y) {
+      for (int x = 0; x < m.cols; ++x) {
+        if (rgb_at(m, x, y) == kGroupColour[0]) return true;
+      }
+    }
+    return false;
+  };
+  cv::Mat shot;
+  for (int attempt = 0; attempt < 4 && (shot.empty() || !any_robot(shot)); ++attempt) {
+    ASSERT_EQ(std::system(chromium.c_str()), 0) << "see " << dir << "/chromium.log";
+    shot = cv::imread(png, cv::IMREAD_COLOR);
+  }
   (void)run.stop();
-  const cv::Mat shot = cv::imread(png, cv::IMREAD_COLOR);
   ASSERT_FALSE(shot.empty());
   auto scenario = config::load_scenario(source_path("scenarios/default.pbtxt"));
   scenario.set_map("warehouse-5x8");

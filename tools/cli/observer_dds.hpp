@@ -1,6 +1,10 @@
 // The DDS options of a participant that watches a swarm from outside it (`swarm probe`,
 // `swarm view --attach`, `swarm run --view`): the swarm's domain, partition and discovery, its
-// own name, and ports Fast DDS picks (it is no agent of the run).
+// own name, and the highest participant id the profile's ports allow. Every agent of a run takes
+// its agent id as participant id (its ports), so a watcher that let Fast DDS pick the first free
+// id, started before the run's processes, would take an agent's ports, and the agent, binding them
+// too, would receive the watcher's traffic.
+inline constexpr int kObserverParticipantId = 239;
 #pragma once
 
 #include <string>
@@ -19,7 +23,7 @@ inline comm::DdsOptions observer_dds(const std::string& name, int domain, const 
   dds.name = name;
   dds.profile_path = profile.empty() ? config::dds_profile_path() : profile;
   dds.discovery_server = discovery_server;
-  dds.participant_id = -1;
+  dds.participant_id = kObserverParticipantId;
   return dds;
 }
 
