@@ -52,7 +52,6 @@ LiveView::LiveView(Setup setup)
     tick_ = c.tick();
     cells_ = std::move(cells);
     ++cells_version_;
-    ticks_.store(tick_);
     lost_.resize(c.robots().size(), false);
     for (std::size_t r = 0; r < c.robots().size(); ++r) {
       if (c.robots()[r].alive() || lost_[r]) continue;

@@ -12,7 +12,6 @@
 //   serve(options, routes, out, err, &view, &stop);
 #pragma once
 
-#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -48,7 +47,6 @@ class LiveView : public LiveFeed {
   [[nodiscard]] std::vector<LiveChannel> channels() const override;
   [[nodiscard]] std::vector<LiveMessage> since(std::vector<std::uint64_t>& cursor) const override;
   [[nodiscard]] std::string setup_json() const override;
-  [[nodiscard]] std::uint32_t ticks_seen() const { return ticks_.load(); }
 
  private:
   struct Readers;
@@ -64,7 +62,6 @@ class LiveView : public LiveFeed {
   planner::OccupancyGrid map_;
   std::uint64_t map_tick_ = 0, map_version_ = 0;
   std::vector<std::pair<std::uint64_t, std::string>> log_;  // (ns, text)
-  std::atomic<std::uint32_t> ticks_{0};
   std::unique_ptr<comm::Participant> participant_;
   std::unique_ptr<Readers> readers_;
 };
