@@ -429,6 +429,7 @@ void LockstepAgent::end_tick(bool mission_complete) {
   done.tick(tick_);
   done.sent(take_sent_counts());
   done.mission_complete(mission_complete);
+  done.sent_bytes(traffic_.sent_bytes_by_link());
   // The tick is journalled whole before anyone hears it is done: a restart replays it.
   if (journal_) journal_->tick_end(tick_);
   done_writer_->write(done);
@@ -449,6 +450,7 @@ LockstepClock::LockstepClock(Bus& bus, const Topology& topology, const LinkTable
       last_heard_(topology.agents(), std::chrono::steady_clock::now()),
       next_undone_(topology.agents(), 0),
       leaders_(topology.leaders()),
+      agent_bytes_(topology.agents(), std::vector<std::uint64_t>(kLinkClasses, 0)),
       restarting_(topology.agents(), false),
       restart_heard_(topology.agents()),
       counted_from_(topology.agents(), 0),
@@ -508,6 +510,16 @@ void LockstepClock::on_done(msgs::Done&& d, WriterId writer) {
       // earlier tick (an agent catching up after a cut) is not for it.
       for (std::size_t a = 0; a < d.sent().size() && a < from_agents_.size(); ++a) {
         if (d.tick() >= counted_from_[a]) from_agents_[a] += d.sent()[a];
+      }
+      if (newest && d.sent_bytes().size() == static_cast<std::size_t>(kLinkClasses)) {
+        // Cumulative per process: a smaller count is a restarted process's, which began from 0.
+        std::vector<std::uint64_t>& now = agent_bytes_[a];
+        for (std::size_t c = 0; c < now.size(); ++c) {
+          if (d.sent_bytes()[c] >= now[c]) continue;
+          for (std::size_t l = 0; l < now.size(); ++l) retired_bytes_[l] += now[l];
+          break;
+        }
+        now = d.sent_bytes();
       }
       if (d.mission_complete()) complete_ = true;
     }
@@ -602,14 +614,22 @@ void LockstepClock::begin_tick(std::uint32_t k) {
   deliver_due(k, expected);
 }
 
-void LockstepClock::publish_clock(std::uint32_t k, const std::vector<msgs::RobotState>& robots, bool stop) {
+void LockstepClock::publish_clock(std::uint32_t k, const std::vector<msgs::RobotState>& robots, bool stop,
+                                  const msgs::RunTally& tally) {
   const std::vector<std::uint32_t> sent = take_sent_counts();
   msgs::Clock clock;
   clock.tick(k);
   clock.stop(stop);
+  clock.tally(tally);
   std::vector<std::uint32_t> expected(topology_.agents(), 0);
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<std::uint64_t> bytes = traffic_.sent_bytes_by_link();
+    for (std::size_t l = 0; l < bytes.size(); ++l) {
+      bytes[l] += retired_bytes_[l];
+      for (const std::vector<std::uint64_t>& agent : agent_bytes_) bytes[l] += agent[l];
+    }
+    clock.sent_bytes(bytes);
     started_ = true;
     const auto now = std::chrono::steady_clock::now();
     for (int a = 0; a < topology_.agents(); ++a) {

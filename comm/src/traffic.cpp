@@ -1,5 +1,7 @@
 #include "swarm/comm/traffic.hpp"
 
+#include "swarm/comm/link.hpp"
+
 namespace swarm::comm {
 
 void TrafficAccount::sent(const std::string& family, const std::string& link, std::uint64_t bytes,
@@ -24,6 +26,22 @@ void TrafficAccount::received(const std::string& family, const std::string& link
 std::map<TrafficAccount::Key, TrafficCount> TrafficAccount::snapshot() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return counts_;
+}
+
+std::vector<std::uint64_t> TrafficAccount::sent_bytes_by_link() const {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (int c = 0; c < kLinkClasses; ++c) n.push_back(link_name(static_cast<LinkClass>(c)));
+    return n;
+  }();
+  std::vector<std::uint64_t> bytes(kLinkClasses, 0);
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (const auto& [key, c] : counts_) {
+    for (int l = 0; l < kLinkClasses; ++l) {
+      if (key.second == names[static_cast<std::size_t>(l)]) bytes[static_cast<std::size_t>(l)] += c.sent_bytes;
+    }
+  }
+  return bytes;
 }
 
 }  // namespace swarm::comm

@@ -188,6 +188,27 @@ void GcsNode::resumed(std::vector<comm::JournalRestart> restarts) {
                restarts_.empty() ? 0u : restarts_.back().replayed_ticks, restarts_.empty() ? 0.0 : restarts_.back().seconds);
 }
 
+void GcsNode::record_events(const msgs::Clock& clock) {
+  const auto event = [&](record::Event::Kind kind, std::uint32_t robot) {
+    record::Frame f;
+    record::Event& e = *f.mutable_event();
+    e.set_tick(clock.tick());
+    e.set_kind(kind);
+    e.set_robot(robot);
+    e.set_group(static_cast<std::uint32_t>(setup_.topology.group_of(static_cast<comm::AgentId>(robot))));
+    record_.append(f);
+  };
+  // robots_lost_ still holds the last clock's verdict (step observes this one later).
+  for (int r = 0; r < setup_.topology.robots() && r < static_cast<int>(clock.robots().size()); ++r) {
+    const bool down = !clock.robots()[static_cast<std::size_t>(r)].alive();
+    if (down != robots_lost_.down(r)) event(down ? record::Event::ROBOT_LOST : record::Event::ROBOT_BACK, static_cast<std::uint32_t>(r));
+  }
+  // A handler may have observed this clock before the step: every change not recorded yet.
+  for (; leader_changes_recorded_ < leaders_.changes().size(); ++leader_changes_recorded_) {
+    event(record::Event::TAKE_OVER, leaders_.changes()[leader_changes_recorded_].to);
+  }
+}
+
 bool GcsNode::step(const msgs::Clock& clock) {
   const bool live = !agent_.replaying();
   const auto now = std::chrono::system_clock::now();
@@ -215,7 +236,15 @@ bool GcsNode::step(const msgs::Clock& clock) {
     poses.mutable_poses()->add_xy(r.x());
     poses.mutable_poses()->add_xy(r.y());
   }
+  record::Tally& tally = *poses.mutable_poses()->mutable_tally();
+  tally.set_vertex_conflicts(clock.tally().vertex_conflicts());
+  tally.set_edge_conflicts(clock.tally().edge_conflicts());
+  tally.set_blocked_moves(clock.tally().blocked_moves());
+  tally.set_progress_done(clock.tally().progress_done());
+  tally.set_progress_total(clock.tally().progress_total());
+  for (const std::uint64_t b : clock.sent_bytes()) tally.add_sent_bytes(b);
   record_.append(poses);
+  record_events(clock);
 
   const task::Clock tick_clock = app::task_clock(clock, setup_.topology);
   GcsContext ctx{setup_, phase_, tick_clock, fused_, record_, outlets_};

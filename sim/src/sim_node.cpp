@@ -104,6 +104,17 @@ std::vector<msgs::RobotState> SimNode::states() const {
   return out;
 }
 
+msgs::RunTally SimNode::tally() const {
+  msgs::RunTally t;
+  t.vertex_conflicts(static_cast<std::uint32_t>(world_.events().vertex));
+  t.edge_conflicts(static_cast<std::uint32_t>(world_.events().edge));
+  t.blocked_moves(static_cast<std::uint32_t>(world_.total_counts().blocked_moves));
+  const Progress p = phases_.back().judge_part->progress(world_);
+  t.progress_done(static_cast<std::uint32_t>(p.done));
+  t.progress_total(static_cast<std::uint32_t>(p.total));
+  return t;
+}
+
 void SimNode::begin_tick(std::uint32_t k) {
   clock_.begin_tick(k);
   if (next_phase_ && *next_phase_ < mission_.size() && *next_phase_ != phases_.back().index) start_phase(*next_phase_, k);
@@ -145,7 +156,7 @@ void SimNode::begin_tick(std::uint32_t k) {
   if (!steps_to_99_ && explored >= 0.99) steps_to_99_ = k;
   if (k % 10 == 0) curve_.emplace_back(k, explored);
   phases_.back().judge_part->after_tick(world_, k);
-  clock_.publish_clock(k, states(), false);
+  clock_.publish_clock(k, states(), false, tally());
 }
 
 bool SimNode::end_tick(std::uint32_t k) {
@@ -160,7 +171,7 @@ bool SimNode::end_tick(std::uint32_t k) {
   curve_.emplace_back(k, world_.explored_fraction());
   phases_.back().judge_part->last_tick(world_, k);
   judge_phase();
-  clock_.publish_clock(k + 1, states(), true);
+  clock_.publish_clock(k + 1, states(), true, tally());
   return true;
 }
 

@@ -176,6 +176,25 @@ TEST(LockstepFake, ARestartedAgentReplaysItsJournalAndRejoinsAtTheNextClock) {
   EXPECT_EQ(j.ticks.size(), 20u);
   ASSERT_EQ(j.restarts.size(), 1u);
   EXPECT_EQ(j.restarts[0].replayed_ticks, 10u);
+
+  // The clock's traffic for watchers: every agent's sent bytes per link class, through the
+  // restart (the new process counted its replayed sends, so nothing is lost or counted twice).
+  clock.begin_tick(30);
+  msgs::RunTally tally;
+  tally.vertex_conflicts(3);
+  clock.publish_clock(30, one_robot(), false, tally);
+  const msgs::Clock* c = again.begin_tick();
+  ASSERT_NE(c, nullptr);
+  const auto leader_gcs = static_cast<std::size_t>(LinkClass::LeaderGcs);
+  ASSERT_EQ(c->sent_bytes().size(), static_cast<std::size_t>(kLinkClasses));
+  const std::uint64_t heartbeat = wire_size(msgs::Heartbeat{});
+  EXPECT_EQ(robot.traffic().sent_bytes_by_link()[leader_gcs], 30 * heartbeat);
+  // The new GCS process counted the 10 sends it replayed from the dead one's journal (muted) and
+  // sent none since: its count carries on from the dead process's, which is not added again.
+  EXPECT_EQ(again.traffic().sent_bytes_by_link()[leader_gcs], 10 * heartbeat);
+  EXPECT_EQ(c->sent_bytes()[leader_gcs], 40 * heartbeat);
+  EXPECT_EQ(c->sent_bytes()[static_cast<std::size_t>(LinkClass::MemberLeader)], 0u);
+  EXPECT_EQ(c->tally().vertex_conflicts(), 3u);
 }
 
 // A bus whose DDS peers are as a stuck secure start-up left them: the simulator discovered but

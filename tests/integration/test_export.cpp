@@ -38,13 +38,14 @@ TEST(Export, AWholeChainRunBecomesAnMcapFileThatReadsBackWhole) {
   const auto frames = record::read_record(dir + "/run/run.pb");
   const record::Header& h = frames.front().header();
   const int robots = static_cast<int>(h.groups() * h.robots_per_group());
-  std::size_t poses = 0, maps = 0, routes = 0, logs = 0;
+  std::size_t poses = 0, maps = 0, routes = 0, logs = 0, events = 0;
   std::map<std::uint32_t, const record::Poses*> poses_at;
   for (const auto& fr : frames) {
     poses += fr.has_poses();
     maps += fr.has_map();
     routes += fr.has_route();
-    logs += fr.has_phase() || fr.has_summary();
+    logs += fr.has_phase() || fr.has_summary() || fr.has_event();
+    events += fr.has_event();
     if (fr.has_poses()) poses_at[fr.poses().tick()] = &fr.poses();
   }
   ASSERT_GT(routes, 0U);
@@ -72,6 +73,12 @@ TEST(Export, AWholeChainRunBecomesAnMcapFileThatReadsBackWhole) {
         EXPECT_NEAR(t["translation"]["y"].get<double>(), h.origin_y() + (p.xy(2 * r + 1) + 0.5) * h.resolution(), 1e-9);
         EXPECT_EQ(t["parent_frame_id"], "map");
       }
+    } else if (kind == "/status") {
+      // The clock's tally at the record's tick: the conflicts and progress the simulator counted.
+      const record::Poses& p = *poses_at.at(static_cast<std::uint32_t>(m.log_time / tick_ns));
+      EXPECT_EQ(j["vertex_conflicts"], p.tally().vertex_conflicts());
+      EXPECT_EQ(j["progress_done"], p.tally().progress_done());
+      EXPECT_EQ(j["sent_bytes"]["member_leader"], p.tally().sent_bytes(1));
     } else if (kind == "/scan/") {
       EXPECT_EQ(j["ranges"].size(), h.scenario().lidar_beams());
     } else if (kind == "/map" || kind == "/map/truth") {
@@ -85,7 +92,8 @@ TEST(Export, AWholeChainRunBecomesAnMcapFileThatReadsBackWhole) {
   EXPECT_EQ(per_kind["/map/truth"], 1U);
   EXPECT_EQ(per_kind["/route/"], routes);
   EXPECT_EQ(per_kind["/log"], logs);
-  EXPECT_EQ(per_kind["/robots"], 1U);
+  EXPECT_EQ(per_kind["/robots"], 1U + events);
+  EXPECT_EQ(per_kind["/status"], poses);
   EXPECT_EQ(schema_of["/map"], "foxglove.Grid");
   EXPECT_EQ(schema_of["/tf"], "foxglove.FrameTransforms");
   EXPECT_EQ(schema_of["/robots"], "foxglove.SceneUpdate");

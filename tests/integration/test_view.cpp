@@ -12,7 +12,9 @@
 
 #include <array>
 #include <limits>
+#include <cmath>
 #include <map>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <chrono>
 #include <filesystem>
@@ -70,15 +72,24 @@ class BackgroundSwarm {
   pid_t pid_ = -1;
 };
 
-bool answers(int port) {
+// A TCP connection to 127.0.0.1:port whose reads give up after 10 s: its socket, or -1.
+int connect_loopback(int port) {
   const int s = ::socket(AF_INET, SOCK_STREAM, 0);
   sockaddr_in a{};
   a.sin_family = AF_INET;
   a.sin_port = htons(static_cast<std::uint16_t>(port));
   a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  const bool ok = ::connect(s, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0;
+  timeval limit{10, 0};
+  ::setsockopt(s, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof limit);
+  if (::connect(s, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0) return s;
   ::close(s);
-  return ok;
+  return -1;
+}
+
+bool answers(int port) {
+  const int s = connect_loopback(port);
+  if (s >= 0) ::close(s);
+  return s >= 0;
 }
 
 bool wait_for(int port) {
@@ -89,19 +100,27 @@ bool wait_for(int port) {
   return false;
 }
 
+// GET `path` over HTTP/1.1 (the server closes the connection after it): the body, or "" on failure.
+std::string http_get(int port, const std::string& path) {
+  const int s = connect_loopback(port);
+  std::string response;
+  if (s >= 0) {
+    const std::string request = "GET " + path + " HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n";
+    (void)::send(s, request.data(), request.size(), 0);
+    char buffer[65536];
+    for (ssize_t n; (n = ::recv(s, buffer, sizeof buffer, 0)) > 0;) response.append(buffer, static_cast<std::size_t>(n));
+    ::close(s);
+  }
+  const std::size_t body = response.find("\r\n\r\n");
+  return body == std::string::npos ? "" : response.substr(body + 4);
+}
+
 // A WebSocket client written for the test from RFC 6455, apart from the server's library: the
 // opening handshake asking for Foxglove's subprotocol, masked text frames out, whole frames in.
 class WsClient {
  public:
-  explicit WsClient(int port) {
-    fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in a{};
-    a.sin_family = AF_INET;
-    a.sin_port = htons(static_cast<std::uint16_t>(port));
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    timeval limit{10, 0};
-    ::setsockopt(fd_, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof limit);
-    if (::connect(fd_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0) return;
+  explicit WsClient(int port) : fd_(connect_loopback(port)) {
+    if (fd_ < 0) return;
     const std::string request = "GET / HTTP/1.1\r\nHost: 127.0.0.1\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
                                 "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n"
                                 "Sec-WebSocket-Protocol: foxglove.websocket.v1\r\n\r\n";
@@ -112,7 +131,9 @@ class WsClient {
       response_ += c;
     }
   }
-  ~WsClient() { ::close(fd_); }
+  ~WsClient() {
+    if (fd_ >= 0) ::close(fd_);
+  }
   [[nodiscard]] const std::string& handshake() const { return response_; }
 
   void send_text(const std::string& text) {
@@ -269,6 +290,46 @@ TEST(View, TheReplayPageDrawsTheRobotsAndTheWallsWhereTheRecordHasThem) {
     }
   }
   EXPECT_GT(checked, 0);
+
+  // The replay's data: a tally per tick the record has poses for (the clock's conflicts, progress
+  // and bytes per link class), and no team events in a run without faults.
+  const nlohmann::json data = nlohmann::json::parse(http_get(port, "/run.json"));
+  ASSERT_EQ(data["tallies"].size(), all.size());
+  EXPECT_EQ(data["tallies"].back()["bytes"].size(), 5U);
+  EXPECT_GT(data["tallies"].back()["bytes"][1].get<std::uint64_t>(), 0U);  // member_leader
+  EXPECT_TRUE(data["events"].empty());
+  EXPECT_EQ(data["links"], nlohmann::json({"sim_robot", "member_leader", "leader_gcs", "telemetry", "control"}));
+
+  // With the routes in the cover phase: each robot's route sweeps its region, its cells tinted in
+  // its group's colour at 0.18 over white, under the robots, which stay where the record has them.
+  std::set<std::uint32_t> routed_groups;
+  std::uint32_t routed_at = 0;  // the tick of the cover phase's last route plan
+  for (const auto& f : frames) {
+    if (!f.has_route() || f.route().phase() != 1) continue;
+    routed_groups.insert(f.route().robot() / h.robots_per_group());
+    routed_at = std::max(routed_at, f.route().tick());
+  }
+  ASSERT_FALSE(routed_groups.empty()) << "no cover routes in the record";
+  const std::string regions_png = dir + "/regions.png";
+  const std::string with_regions = "chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars "
+                                   "--window-size=600,400 --virtual-time-budget=5000 --screenshot=" + regions_png + " '" +
+                                   "http://127.0.0.1:" + std::to_string(port) + "/?tick=" + std::to_string(routed_at + 1) +
+                                   "&scale=" + std::to_string(scale) + "&labels=0&truth=1' > " + dir + "/chromium.log 2>&1";
+  ASSERT_EQ(std::system(with_regions.c_str()), 0) << "see " << dir << "/chromium.log";
+  const cv::Mat regions = cv::imread(regions_png, cv::IMREAD_COLOR);
+  ASSERT_FALSE(regions.empty());
+  for (const std::uint32_t g : routed_groups) {
+    int tinted = 0;
+    for (int y = 0; y < static_cast<int>(h.height()) * scale; ++y) {
+      for (int x = 0; x < static_cast<int>(h.width()) * scale; ++x) {
+        const auto got = rgb_at(regions, x, y);
+        bool near = true;
+        for (int c = 0; c < 3; ++c) near = near && std::abs(got[c] - (0.18 * kGroupColour[g][c] + 0.82 * 255)) <= 2.0;
+        tinted += near ? 1 : 0;
+      }
+    }
+    EXPECT_GT(tinted, scale * scale) << "group " << g << ": no region drawn";
+  }
   EXPECT_EQ(viewer.stop(), 0);  // SIGTERM: a clean stop
 
   const CommandResult not_a_run = run_swarm("view " + dir + " --view-port " + std::to_string(port));
@@ -278,7 +339,7 @@ TEST(View, TheReplayPageDrawsTheRobotsAndTheWallsWhereTheRecordHasThem) {
 
 // What a client saw of a live view: (log time, message) per channel it keeps.
 struct Followed {
-  std::vector<std::pair<std::uint64_t, nlohmann::json>> tf, robots, log;
+  std::vector<std::pair<std::uint64_t, nlohmann::json>> tf, robots, log, routes, frontiers, status;
 };
 
 // Speaks Foxglove's protocol on `ws`: serverInfo, advertise (every channel JSON with a JSON Schema),
@@ -303,7 +364,9 @@ Followed follow(WsClient& ws, std::size_t count) {
     EXPECT_FALSE(nlohmann::json::parse(c["schema"].get<std::string>()).empty());
     subscriptions.push_back({{"id", 100 + c["id"].get<std::uint32_t>()}, {"channelId", c["id"]}});
   }
-  EXPECT_TRUE(id_of.count("/tf") && id_of.count("/map") && id_of.count("/robots") && id_of.count("/log"));
+  for (const char* topic : {"/tf", "/map", "/robots", "/log", "/routes", "/frontiers", "/status"}) {
+    EXPECT_TRUE(id_of.count(topic)) << topic;
+  }
   ws.send_text(nlohmann::json({{"op", "subscribe"}, {"subscriptions", subscriptions}}).dump());
   while (seen.tf.size() < count) {
     const auto [op, payload] = ws.next();
@@ -315,6 +378,9 @@ Followed follow(WsClient& ws, std::size_t count) {
     if (sub == 100 + id_of["/tf"]) seen.tf.push_back(m);
     if (sub == 100 + id_of["/robots"]) seen.robots.push_back(m);
     if (sub == 100 + id_of["/log"]) seen.log.push_back(m);
+    if (sub == 100 + id_of["/routes"]) seen.routes.push_back(m);
+    if (sub == 100 + id_of["/frontiers"]) seen.frontiers.push_back(m);
+    if (sub == 100 + id_of["/status"]) seen.status.push_back(m);
   }
   return seen;
 }
@@ -343,6 +409,47 @@ int compare_with_record(const std::vector<std::pair<std::uint64_t, nlohmann::jso
     }
   }
   return compared;
+}
+
+// Every /status of a tick the record holds has the record's tally for it (the simulator's conflict
+// and progress counts, the bytes sent per link class); returns how many were compared.
+int compare_status_with_record(const std::vector<std::pair<std::uint64_t, nlohmann::json>>& seen, const std::string& run_pb) {
+  const auto frames = record::read_record(run_pb);
+  std::map<std::uint32_t, const record::Tally*> tally_at;
+  for (const auto& f : frames) {
+    if (f.has_poses() && f.poses().has_tally()) tally_at[f.poses().tick()] = &f.poses().tally();
+  }
+  const std::vector<std::string> links = {"sim_robot", "member_leader", "leader_gcs", "telemetry", "control"};
+  int compared = 0;
+  for (const auto& [ns, m] : seen) {
+    const auto it = tally_at.find(m["tick"].get<std::uint32_t>());
+    if (it == tally_at.end()) continue;
+    ++compared;
+    const record::Tally& t = *it->second;
+    EXPECT_EQ(m["vertex_conflicts"], t.vertex_conflicts());
+    EXPECT_EQ(m["edge_conflicts"], t.edge_conflicts());
+    EXPECT_EQ(m["blocked_moves"], t.blocked_moves());
+    EXPECT_EQ(m["progress_done"], t.progress_done());
+    EXPECT_EQ(m["progress_total"], t.progress_total());
+    EXPECT_EQ(t.sent_bytes_size(), static_cast<int>(links.size()));
+    if (t.sent_bytes_size() != static_cast<int>(links.size())) continue;
+    for (std::size_t l = 0; l < links.size(); ++l) EXPECT_EQ(m["sent_bytes"][links[l]], t.sent_bytes(static_cast<int>(l))) << links[l];
+  }
+  return compared;
+}
+
+// The cells of a SceneUpdate entity's cubes or first line, by the map's frame.
+std::vector<planner::Cell> entity_cells(const nlohmann::json& e, const record::Header& h) {
+  std::vector<planner::Cell> out;
+  const auto cell = [&](const nlohmann::json& p) {
+    out.push_back({static_cast<int>(std::floor((p["x"].get<double>() - h.origin_x()) / h.resolution())),
+                   static_cast<int>(std::floor((p["y"].get<double>() - h.origin_y()) / h.resolution()))});
+  };
+  for (const auto& c : e["cubes"]) cell(c["pose"]["position"]);
+  if (!e["lines"].empty()) {
+    for (const auto& p : e["lines"][0]["points"]) cell(p);
+  }
+  return out;
 }
 
 // `swarm run --view`: a client speaking Foxglove's protocol sees every robot where the record has
@@ -392,7 +499,7 @@ TEST(View, TheLivePageDrawsTheMapAndEveryRobot) {
   const int scale = 16;
   const std::string png = dir + "/live.png";
   const std::string url = "http://127.0.0.1:" + std::to_string(port) + "/?scale=" + std::to_string(scale) +
-                          "&labels=0&truth=1&settle=1";
+                          "&labels=0&truth=1&settle=1&routes=0&frontiers=0&objects=0";
   const std::string chromium = "chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars "
                                "--window-size=600,400 --virtual-time-budget=3000 --screenshot=" + png + " '" + url +
                                "' > " + dir + "/chromium.log 2>&1";
@@ -444,12 +551,14 @@ TEST(View, TheLivePageDrawsTheMapAndEveryRobot) {
 }
 
 // A robot killed during a watched run is marked lost when the clock says so: its /robots entity
-// grey and "NAME (lost)", and a /log line with the tick.
+// grey and "NAME (lost)", and a /log line with the tick; a leader killed too, its standby
+// "NAME (leads group G)" from the tick the clock names it. Over the whole run: /status has the
+// record's tallies, /routes the robots' routes on free cells, /frontiers the groups' frontiers.
 TEST(View, ALiveViewMarksARobotLostWhenItDies) {
   const std::string dir = fresh_dir("view_lost");
   const int port = 20000 + (::getpid() + 11) % 20000;
-  BackgroundSwarm run({"run", "--map", "maze1", "--kill", "member-1-2@60", "--out", dir + "/run", "--view", "--view-port",
-                       std::to_string(port)},
+  BackgroundSwarm run({"run", "--map", "maze1", "--kill", "member-1-2@60", "--kill", "leader-2@40", "--out", dir + "/run",
+                       "--view", "--view-port", std::to_string(port)},
                       dir + "/run.log");
   ASSERT_TRUE(run.started());
   ASSERT_TRUE(wait_for(port)) << "no live view on port " << port;
@@ -460,15 +569,50 @@ TEST(View, ALiveViewMarksARobotLostWhenItDies) {
   const nlohmann::json& last = seen.robots.back().second["entities"];
   for (const auto& e : last) {
     const std::string id = e["id"].get<std::string>();
-    EXPECT_EQ(e["texts"][0]["text"], id == "member-1-2" ? "member-1-2 (lost)" : id) << id;
+    const std::string want = id == "member-1-2" || id == "leader-2" ? id + " (lost)" : id == "member-2-1" ? id + " (leads group 2)" : id;
+    EXPECT_EQ(e["texts"][0]["text"], want) << id;
   }
-  bool logged = false;
+  bool logged = false, took_over = false;
   for (const auto& [ns, m] : seen.log) {
     const std::string text = m["message"].get<std::string>();
     if (text.rfind("member-1-2 lost at tick ", 0) == 0) logged = std::stoi(text.substr(24)) >= 60;
+    if (text.rfind("member-2-1 leads group 2 from tick ", 0) == 0) took_over = std::stoi(text.substr(35)) > 40;
   }
   EXPECT_TRUE(logged);
+  EXPECT_TRUE(took_over);
   EXPECT_GE(compare_with_record(seen.tf, dir + "/run/run.pb"), 3);
+  EXPECT_GE(compare_status_with_record(seen.status, dir + "/run/run.pb"), 3);
+
+  // The record holds the same news for the replay: both robots lost, and the take-over.
+  const auto frames = record::read_record(dir + "/run/run.pb");
+  const record::Header& h = frames.front().header();
+  std::set<std::string> events;
+  for (const auto& f : frames) {
+    if (f.has_event()) events.insert(record::Event::Kind_Name(f.event().kind()) + " " + std::to_string(f.event().robot()));
+  }
+  EXPECT_EQ(events, (std::set<std::string>{"ROBOT_LOST 5", "ROBOT_LOST 6", "TAKE_OVER 7"}));
+
+  // Routes: every robot had one, on free cells of the map; frontiers: every group planned on some.
+  const auto scenario = [&] {
+    auto s = h.scenario();
+    return config::resolve_world(s, ".").truth;
+  }();
+  std::set<std::string> routed, planned;
+  for (const auto& [ns, m] : seen.routes) {
+    for (const auto& e : m["entities"]) {
+      const std::string id = e["id"].get<std::string>();
+      const std::vector<planner::Cell> cells = entity_cells(e, h);
+      if (id.rfind("route/", 0) == 0 && cells.size() >= 2) routed.insert(id);
+      for (const planner::Cell c : cells) EXPECT_TRUE(scenario.is_free(c)) << id << " at " << c.x << "," << c.y;
+    }
+  }
+  for (const auto& [ns, m] : seen.frontiers) {
+    for (const auto& e : m["entities"]) {
+      if (e["id"].get<std::string>().rfind("frontiers/", 0) == 0 && !e["cubes"].empty()) planned.insert(e["id"]);
+    }
+  }
+  EXPECT_EQ(routed.size(), 9U);
+  EXPECT_EQ(planned, (std::set<std::string>{"frontiers/0", "frontiers/1", "frontiers/2"}));
 }
 
 // `swarm view --attach`: the same view of a swarm it did not start (as a deployment's), found by
@@ -499,6 +643,52 @@ TEST(View, AttachedToARunningSwarmItFollowsTheRobots) {
   EXPECT_NE(no_scenario.output.find("--scenario"), std::string::npos) << no_scenario.output;
   const CommandResult neither = run_swarm("view");
   EXPECT_EQ(neither.exit_code, 2);
+}
+
+// A secure run (DDS-Security) watched live: `swarm run --secure --view` gives its viewer the
+// run's read-only certificate, and `swarm view --attach --security-dir RUN_DIR/security` joins the
+// running swarm with it. The certificate only subscribes: a writer with it is refused.
+TEST(View, ASecureRunIsWatchedWithAReadOnlyCertificate) {
+  const std::string dir = fresh_dir("view_secure");
+  const int port = 20000 + (::getpid() + 17) % 20000;
+  const std::string domain = std::to_string(41 + (::getpid() + 3) % 8);  // 41..48: left to tests (run_launch.hpp)
+  const std::string partition = "view-secure-" + std::to_string(::getpid());
+  // Real time, so that the attached viewer (which starts once the run's certificates exist) sees it.
+  BackgroundSwarm run({"run", "--map", "maze1", "--secure", "--realtime", "--tick-ms", "100", "--domain", domain,
+                       "--partition", partition, "--discovery", "simple", "--out", dir + "/run", "--view",
+                       "--view-port", std::to_string(port)},
+                      dir + "/run.log");
+  ASSERT_TRUE(run.started());
+  ASSERT_TRUE(wait_for(port)) << "no live view on port " << port << "; see " << dir << "/run.log";
+  const std::string certs = dir + "/run/security";
+  ASSERT_TRUE(std::filesystem::exists(certs + "/swarm-view.pem"));
+  const int attached_port = port + 1;
+  BackgroundSwarm viewer({"view", "--attach", "--scenario", dir + "/run/scenario.pbtxt", "--domain", domain,
+                          "--partition", partition, "--security-dir", certs, "--view-port", std::to_string(attached_port)},
+                         dir + "/view.log");
+  ASSERT_TRUE(wait_for(attached_port)) << "no attached view on port " << attached_port;
+  Followed seen, attached;
+  {
+    WsClient ws(port);
+    seen = follow(ws, 10);
+  }
+  {
+    WsClient ws(attached_port);
+    attached = follow(ws, 10);
+  }
+  ASSERT_EQ(run.wait(), 0) << "see " << dir << "/run.log";
+  EXPECT_GE(compare_with_record(seen.tf, dir + "/run/run.pb"), 3) << "swarm run --secure --view";
+  EXPECT_GE(compare_with_record(attached.tf, dir + "/run/run.pb"), 3) << "see " << dir << "/view.log";
+  EXPECT_EQ(viewer.stop(), 0);
+
+  // Read-only: `swarm probe` makes a writer, which the viewer's grant refuses.
+  const CommandResult writer = run_swarm("probe --seconds 0.5 --domain 40 --security-dir " + certs + " --identity swarm-view");
+  EXPECT_EQ(writer.exit_code, 2) << writer.output;
+  const CommandResult no_certificate =
+      run_swarm("view --attach --scenario " + dir + "/run/scenario.pbtxt --security-dir " + dir + " --view-port " +
+                std::to_string(attached_port));
+  EXPECT_EQ(no_certificate.exit_code, 2);
+  EXPECT_NE(no_certificate.output.find("swarm-view.pem"), std::string::npos) << no_certificate.output;
 }
 
 }  // namespace

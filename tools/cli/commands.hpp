@@ -7,6 +7,7 @@
 #include <ostream>
 #include <string>
 
+#include "run_launch.hpp"
 #include "view_server.hpp"
 #include <vector>
 
@@ -40,6 +41,8 @@ struct ViewOptions {
   std::string partition = "swarm";
   std::string discovery_server;  // HOST:PORT, or "" for simple discovery
   std::string profile;           // Fast DDS XML profile; "" = config::dds_profile_path()
+  std::string security_dir;      // DDS-Security: the swarm's certificates (scripts/make-certs.sh); "" = none
+  std::string identity = kViewerIdentity;  // the watcher's certificate in it (NAME.pem, NAME.key)
   ViewServerOptions server;
 };
 

@@ -47,6 +47,12 @@ json transforms_schema() {
 }
 json scene_schema() {
   const json cube = object({{"pose", pose_schema()}, {"size", vec3_schema()}, {"color", color_schema()}});
+  const json line = object({{"type", kInteger},
+                            {"pose", pose_schema()},
+                            {"thickness", kNumber},
+                            {"scale_invariant", kBool},
+                            {"points", array_of(vec3_schema())},
+                            {"color", color_schema()}});
   const json text = object({{"pose", pose_schema()},
                             {"billboard", kBool},
                             {"font_size", kNumber},
@@ -60,6 +66,7 @@ json scene_schema() {
                                                {"lifetime", time_schema()},
                                                {"frame_locked", kBool},
                                                {"cubes", array_of(cube)},
+                                               {"lines", array_of(line)},
                                                {"texts", array_of(text)}}))}});
 }
 json poses_schema() {
@@ -82,6 +89,16 @@ json log_schema() {
                  {"file", kString},
                  {"line", kInteger}});
 }
+
+// The page's palette (tools/view/page/index.html PALETTE): groups in turn; grey, the last, also for the lost.
+constexpr std::array<std::array<double, 3>, 8> kPalette = {{{31, 119, 180},
+                                                             {255, 127, 14},
+                                                             {44, 160, 44},
+                                                             {214, 39, 40},
+                                                             {148, 103, 189},
+                                                             {140, 86, 75},
+                                                             {227, 119, 194},
+                                                             {127, 127, 127}}};
 
 constexpr int kNumericInt8 = 2;  // foxglove.NumericType
 constexpr int kLogInfo = 2;      // foxglove.Log.Level
@@ -154,22 +171,25 @@ json foxglove_transforms(const std::vector<std::string>& names, const std::vecto
   return {{"transforms", std::move(transforms)}};
 }
 
+json group_colour(int group, double alpha) {
+  const auto& c = kPalette[static_cast<std::size_t>(group) % kPalette.size()];
+  return {{"r", c[0] / 255.0}, {"g", c[1] / 255.0}, {"b", c[2] / 255.0}, {"a", alpha}};
+}
+
 json foxglove_robots(const std::vector<std::string>& names, int robots_per_group, double resolution,
-                     const std::vector<bool>& lost) {
+                     const std::vector<bool>& lost, const std::vector<int>& took_over) {
   // The viewer page's palette (view/page/index.html), as fractions.
-  static constexpr std::array<std::array<double, 3>, 8> kPalette = {{{31, 119, 180},
-                                                                      {255, 127, 14},
-                                                                      {44, 160, 44},
-                                                                      {214, 39, 40},
-                                                                      {148, 103, 189},
-                                                                      {140, 86, 75},
-                                                                      {227, 119, 194},
-                                                                      {127, 127, 127}}};
+
   json entities = json::array();
   for (std::size_t r = 0; r < names.size(); ++r) {
     const bool gone = r < lost.size() && lost[r];
-    const auto& c = gone ? kPalette.back() : kPalette[(r / static_cast<std::size_t>(std::max(1, robots_per_group))) % kPalette.size()];
-    const json colour = {{"r", c[0] / 255.0}, {"g", c[1] / 255.0}, {"b", c[2] / 255.0}, {"a", gone ? 0.5 : 1.0}};
+    const int group = static_cast<int>(r / static_cast<std::size_t>(std::max(1, robots_per_group)));
+    const auto& grey = kPalette.back();
+    const json colour = gone ? json{{"r", grey[0] / 255.0}, {"g", grey[1] / 255.0}, {"b", grey[2] / 255.0}, {"a", 0.5}}
+                             : group_colour(group, 1.0);
+    std::string label = names[r];
+    if (gone) label += " (lost)";
+    else if (r < took_over.size() && took_over[r] >= 0) label += " (leads group " + std::to_string(took_over[r]) + ")";
     entities.push_back({{"timestamp", stamp(0)},
                         {"frame_id", names[r]},
                         {"id", names[r]},
@@ -183,7 +203,7 @@ json foxglove_robots(const std::vector<std::string>& names, int robots_per_group
                                                 {"font_size", 12.0},
                                                 {"scale_invariant", true},
                                                 {"color", colour},
-                                                {"text", gone ? names[r] + " (lost)" : names[r]}}})}});
+                                                {"text", label}}})}});
   }
   return {{"deletions", json::array()}, {"entities", std::move(entities)}};
 }
@@ -209,6 +229,38 @@ json foxglove_scan(const std::string& robot, const std::vector<float>& ranges_ce
           {"end_angle", beams > 0 ? planner::beam_angle(beams - 1, beams) : 0.0},
           {"ranges", std::move(metres)},
           {"intensities", json::array()}};
+}
+
+json foxglove_entity(const std::string& id, std::uint64_t ns) {
+  return {{"timestamp", stamp(ns)},
+          {"frame_id", "map"},
+          {"id", id},
+          {"lifetime", stamp(0)},
+          {"frame_locked", false},
+          {"cubes", json::array()},
+          {"lines", json::array()},
+          {"texts", json::array()}};
+}
+
+void add_cells(json& entity, const std::vector<Cell>& cells, const json& colour, const FoxgloveFrame& f) {
+  for (const Cell c : cells) {
+    json pose = identity_pose();
+    pose["position"] = centre(c, f);
+    entity["cubes"].push_back({{"pose", std::move(pose)},
+                               {"size", {{"x", f.resolution}, {"y", f.resolution}, {"z", f.resolution * 0.05}}},
+                               {"color", colour}});
+  }
+}
+
+void add_line(json& entity, const std::vector<Cell>& cells, const json& colour, const FoxgloveFrame& f) {
+  json points = json::array();
+  for (const Cell c : cells) points.push_back(centre(c, f));
+  entity["lines"].push_back({{"type", 0},  // LINE_STRIP
+                             {"pose", identity_pose()},
+                             {"thickness", f.resolution * 0.25},
+                             {"scale_invariant", false},
+                             {"points", std::move(points)},
+                             {"color", colour}});
 }
 
 json foxglove_log(const std::string& text, std::uint64_t ns) {

@@ -32,9 +32,17 @@ struct FoxgloveFrame {
 [[nodiscard]] nlohmann::json foxglove_transforms(const std::vector<std::string>& names, const std::vector<planner::Cell>& cells,
                                                  const FoxgloveFrame& f, std::uint64_t ns);
 // One cube and label per robot, locked to its frame, in its group's colour (robots_per_group a group);
-// a robot marked in `lost` grey, its label "NAME (lost)".
+// a robot marked in `lost` grey, its label "NAME (lost)"; one with took_over[r] = G >= 0 leads
+// group G in its first leader's place: "NAME (leads group G)".
 [[nodiscard]] nlohmann::json foxglove_robots(const std::vector<std::string>& names, int robots_per_group, double resolution,
-                                             const std::vector<bool>& lost = {});
+                                             const std::vector<bool>& lost = {}, const std::vector<int>& took_over = {});
+// A group's colour as a foxglove.Color (the page's palette).
+[[nodiscard]] nlohmann::json group_colour(int group, double alpha);
+// A foxglove.SceneUpdate entity in "map" with no primitives yet, and what add_cells (one flat cube per
+// cell) and add_line (a line strip through the cells' centres) put in it.
+[[nodiscard]] nlohmann::json foxglove_entity(const std::string& id, std::uint64_t ns);
+void add_cells(nlohmann::json& entity, const std::vector<planner::Cell>& cells, const nlohmann::json& colour, const FoxgloveFrame& f);
+void add_line(nlohmann::json& entity, const std::vector<planner::Cell>& cells, const nlohmann::json& colour, const FoxgloveFrame& f);
 // A route: its cells as poses in "map".
 [[nodiscard]] nlohmann::json foxglove_route(const std::vector<planner::Cell>& cells, const FoxgloveFrame& f, std::uint64_t ns);
 // A 360-degree scan in the robot's frame: beam i at 2 pi i / beams, ranges in cells.

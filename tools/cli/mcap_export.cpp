@@ -8,6 +8,7 @@
 #include "swarm/planner/sensing/raycast.hpp"
 #include "swarm/record/mcap_writer.hpp"
 #include "swarm/record/record.hpp"
+#include "view_data.hpp"
 
 namespace swarm::tools {
 namespace {
@@ -25,7 +26,8 @@ class Channels {
     if (it == channels_.end()) {
       auto s = schemas_.find(schema_name);
       if (s == schemas_.end()) {
-        s = schemas_.emplace(schema_name, out_.add_schema(schema_name, "jsonschema", foxglove_schema(schema_name).dump())).first;
+        const json schema = std::string(schema_name) == kStatusSchemaName ? status_schema() : foxglove_schema(schema_name);
+        s = schemas_.emplace(schema_name, out_.add_schema(schema_name, "jsonschema", schema.dump())).first;
       }
       it = channels_.emplace(topic, out_.add_channel(s->second, topic, "json")).first;
     }
@@ -76,7 +78,14 @@ McapExport export_mcap(const std::vector<record::Frame>& frames, const config::W
   const planner::OccupancyGrid* truth = world != nullptr ? &world->truth : nullptr;
   const int beams = static_cast<int>(h.scenario().lidar_beams());
   const auto range_cells = static_cast<float>(h.scenario().sensing_range_m() / frame.resolution);
-  channels.send("/robots", "foxglove.SceneUpdate", 0, foxglove_robots(names, static_cast<int>(h.robots_per_group()), frame.resolution));
+  const int per_group = static_cast<int>(std::max(1U, h.robots_per_group()));
+  channels.send("/robots", "foxglove.SceneUpdate", 0, foxglove_robots(names, per_group, frame.resolution));
+  // What the clock said so far, for /status and the robots' marks.
+  StatusFacts status;
+  std::vector<bool> lost(names.size(), false);
+  std::vector<int> took_over(names.size(), -1);
+  std::vector<int> leader_of(h.groups());
+  for (std::size_t g = 0; g < leader_of.size(); ++g) leader_of[g] = static_cast<int>(g) * per_group;
   if (truth != nullptr) channels.send("/map/truth", "foxglove.Grid", 0, foxglove_grid(*truth, 0));
   std::vector<float> ranges(static_cast<std::size_t>(std::max(beams, 0)));
   for (const record::Frame& f : frames) {
@@ -87,6 +96,17 @@ McapExport export_mcap(const std::vector<record::Frame>& frames, const config::W
       const std::uint64_t ns = f.poses().tick() * tick_ns;
       const std::vector<Cell> cells = cells_of(f.poses().xy());
       channels.send("/tf", "foxglove.FrameTransforms", ns, foxglove_transforms(names, cells, frame, ns));
+      if (f.poses().has_tally()) {
+        const record::Tally& t = f.poses().tally();
+        status.tick = f.poses().tick();
+        status.vertex_conflicts = t.vertex_conflicts();
+        status.edge_conflicts = t.edge_conflicts();
+        status.blocked_moves = t.blocked_moves();
+        status.progress_done = t.progress_done();
+        status.progress_total = t.progress_total();
+        status.sent_bytes.assign(t.sent_bytes().begin(), t.sent_bytes().end());
+        channels.send("/status", kStatusSchemaName, ns, status_message(status));
+      }
       if (truth == nullptr || beams <= 0) continue;
       for (std::size_t r = 0; r < cells.size() && r < names.size(); ++r) {
         planner::scan(*truth, cells[r], beams, range_cells, ranges.data());
@@ -96,9 +116,31 @@ McapExport export_mcap(const std::vector<record::Frame>& frames, const config::W
       const std::uint64_t ns = f.route().tick() * tick_ns;
       channels.send("/route/" + names.at(f.route().robot()), "foxglove.PosesInFrame", ns,
                     foxglove_route(cells_of(f.route().xy()), frame, ns));
+    } else if (f.has_event()) {
+      const record::Event& e = f.event();
+      const std::uint64_t ns = e.tick() * tick_ns;
+      if (e.robot() >= names.size()) continue;
+      TeamEvent kind = TeamEvent::TakeOver;
+      if (e.kind() == record::Event::TAKE_OVER) {
+        if (e.group() < leader_of.size()) {
+          took_over[static_cast<std::size_t>(leader_of[e.group()])] = -1;
+          leader_of[e.group()] = static_cast<int>(e.robot());
+        }
+        took_over[e.robot()] = static_cast<int>(e.robot()) % per_group == 0 ? -1 : static_cast<int>(e.group());
+      } else {
+        kind = e.kind() == record::Event::ROBOT_LOST ? TeamEvent::Lost : TeamEvent::Back;
+        lost[e.robot()] = kind == TeamEvent::Lost;
+        status.lost_robots += kind == TeamEvent::Lost ? 1 : -1;
+      }
+      channels.send("/log", "foxglove.Log", ns, foxglove_log(event_text(kind, names[e.robot()], static_cast<int>(e.group()), e.tick()), ns));
+      channels.send("/robots", "foxglove.SceneUpdate", ns, foxglove_robots(names, per_group, frame.resolution, lost, took_over));
     } else if (f.has_phase()) {
       const record::PhaseChange& p = f.phase();
       const std::uint64_t ns = p.tick() * tick_ns;
+      if (!p.ended()) {
+        status.phase = p.phase();
+        status.task = p.task();
+      }
       channels.send("/log", "foxglove.Log", ns,
                     foxglove_log("phase " + std::to_string(p.phase() + 1) + " (" + p.task() + ") " +
                                      (p.ended() ? (p.complete() ? "ended, complete" : "ended, incomplete") : "started"),

@@ -167,6 +167,15 @@ Command add_view(CLI::App& app) {
                   "With --attach: HOST:PORT of the swarm's Fast DDS discovery server (default: simple discovery)")
       ->needs(attach);
   cmd->add_option("--profile", o->profile, "With --attach: Fast DDS XML profile (default: as `swarm probe`)")->needs(attach);
+  cmd->add_option("--security-dir", o->security_dir,
+                  "With --attach, for a secure swarm: a folder with the swarm's CA, governance and a watcher's "
+                  "certificate (a `swarm run --secure`'s RUN_DIR/security, or scripts/make-certs.sh DIR --read-only "
+                  "swarm-view beside the deployment's CA)")
+      ->check(CLI::ExistingDirectory)
+      ->needs(attach);
+  cmd->add_option("--identity", o->identity, "With --security-dir: the watcher's certificate name")
+      ->capture_default_str()
+      ->needs(attach);
   cmd->add_option("--view-port", o->server.port, "The port to serve on")->capture_default_str()->check(CLI::Range(1, 65535));
   cmd->add_option("--view-bind", o->server.bind, "The address to serve on (loopback unless told otherwise)")
       ->capture_default_str();

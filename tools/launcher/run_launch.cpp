@@ -389,6 +389,9 @@ void make_certificates(RunLaunch& l, const swarm::scenario::Scenario& s) {
   for (const ProcessSpec& p : build_run_processes(l, s)) {
     if (!p.service) certs.argv.push_back(p.name);
   }
+  // A watcher's certificate too (swarm run --view, swarm view --attach): subscribe only.
+  certs.argv.push_back("--read-only");
+  certs.argv.push_back(kViewerIdentity);
   certs.log_path = l.run_dir + "/logs/make-certs.log";
   if (!run_processes({certs}, std::chrono::seconds(120)).ok) {
     throw std::runtime_error("could not make the run's certificates (scripts/make-certs.sh; see " + certs.log_path + ")");

@@ -88,6 +88,10 @@ struct RunOptions {
 };
 
 // Where and how the role processes of one run talk and write.
+// The certificate name of a watcher of a secure run (swarm run --view, swarm view --attach): every
+// --secure run's RUN_DIR/security has one, granted to subscribe only (scripts/make-certs.sh).
+inline constexpr const char* kViewerIdentity = "swarm-view";
+
 struct RunLaunch {
   std::string run_dir;        // absolute
   std::string scenario_path;  // RUN_DIR/scenario.pbtxt

@@ -13,12 +13,10 @@ LiveRunView::~LiveRunView() { stop(); }
 
 int LiveRunView::start(const RunOptions& options, const PreparedRun& run, std::ostream& out, std::ostream& err) {
   const RunLaunch& l = run.launch;
-  if (!l.security_dir.empty()) {
-    err << "swarm run: --view with --secure is not supported yet: the view has no certificate of the run's CA\n";
-    return 2;
-  }
-  LiveView::Setup setup =
-      LiveView::setup_for(run.world, observer_dds("swarm-view", l.domain_id, l.partition, l.dds_profile, l.discovery_server));
+  comm::DdsOptions dds = observer_dds("swarm-view", l.domain_id, l.partition, l.dds_profile, l.discovery_server);
+  dds.security_dir = l.security_dir;  // --secure: the watcher's read-only certificate (make-certs.sh)
+  dds.identity = kViewerIdentity;
+  LiveView::Setup setup = LiveView::setup_for(run.world, std::move(dds));
   try {
     view_ = std::make_unique<LiveView>(std::move(setup));
   } catch (const std::exception& e) {
@@ -39,6 +37,11 @@ int LiveRunView::start(const RunOptions& options, const PreparedRun& run, std::o
     server_.join();
     return status_ != 0 ? status_ : 1;
   }
+  out << "swarm run: to watch from another shell: swarm view --attach --scenario " << l.scenario_path << " --domain "
+      << l.domain_id << " --partition " << l.partition
+      << (l.discovery_server.empty() ? "" : " --discovery-server " + l.discovery_server)
+      << (l.security_dir.empty() ? "" : " --security-dir " + l.security_dir) << " --view-port " << options.view_port + 1
+      << std::endl;
   return 0;
 }
 

@@ -1,24 +1,43 @@
 #include "live_view.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include "swarm/app/convert.hpp"
 #include "swarm/comm/endpoint.hpp"
 #include "swarm/comm/topology.hpp"
 #include "swarm/record/record.hpp"
+#include "view_data.hpp"
 
 namespace swarm::tools {
 
 namespace {
-enum Channel : std::uint32_t { kTf = 1, kRobots = 2, kMap = 3, kTruth = 4, kLog = 5 };
+enum Channel : std::uint32_t { kTf = 1, kRobots = 2, kMap = 3, kTruth = 4, kLog = 5, kRoutes = 6, kFrontiers = 7, kStatus = 8 };
 // The cursor's slots: what a connection has had of each channel.
-enum Slot : std::size_t { kCellsSeen, kRobotsSeen, kMapSeen, kTruthSeen, kLogSeen, kSlots };
+enum Slot : std::size_t { kCellsSeen, kRobotsSeen, kMapSeen, kTruthSeen, kLogSeen, kRoutesSeen, kPlansSeen, kSlots };
+
+std::vector<planner::Cell> cells_of(const std::vector<std::int16_t>& xy) {
+  std::vector<planner::Cell> out;
+  for (std::size_t k = 0; k + 1 < xy.size(); k += 2) out.push_back({xy[k], xy[k + 1]});
+  return out;
+}
+
+std::vector<planner::Cell> at_steps(const std::vector<planner::Cell>& route, const std::vector<std::uint32_t>& steps) {
+  std::vector<planner::Cell> out;
+  for (const std::uint32_t s : steps) {
+    if (s < route.size()) out.push_back(route[s]);
+  }
+  return out;
+}
+
+// Pick and drop cells: an object's colour, and black for where things go.
+const nlohmann::json kPickColour = {{"r", 0.85}, {"g", 0.65}, {"b", 0.0}, {"a", 1.0}};
+const nlohmann::json kDropColour = {{"r", 0.0}, {"g", 0.0}, {"b", 0.0}, {"a", 1.0}};
 }  // namespace
 
 struct LiveView::Readers {
   std::unique_ptr<comm::Reader<msgs::Clock>> clock;
   std::unique_ptr<comm::Reader<msgs::RoundStart>> round;
   std::unique_ptr<comm::Reader<msgs::PhaseStart>> phase;
+  std::unique_ptr<comm::Reader<msgs::MotionCommand>> motion;
+  std::unique_ptr<comm::Reader<msgs::PlanReport>> plan;
 };
 
 LiveView::Setup LiveView::setup_for(const config::World& world, comm::DdsOptions dds) {
@@ -35,31 +54,26 @@ LiveView::Setup LiveView::setup_for(const config::World& world, comm::DdsOptions
   setup.truth = &world.truth;
   setup.tick_ns = std::uint64_t{s.tick_ms()} * 1'000'000U;
   setup.title = s.map() + ", seed " + std::to_string(s.seed());
+  setup.layout = mission_layout(world);
   return setup;
 }
 
 LiveView::LiveView(Setup setup)
     : setup_(std::move(setup)),
       frame_{setup_.frame.resolution(), setup_.frame.origin_x(), setup_.frame.origin_y()},
+      layout_(setup_.layout),
       map_(setup_.frame) {
+  const std::size_t robots = setup_.names.size();
+  const int groups = static_cast<int>(robots) / std::max(1, setup_.robots_per_group);
+  lost_.assign(robots, false);
+  took_over_.assign(robots, -1);
+  routes_.resize(robots);
+  plans_.resize(static_cast<std::size_t>(groups));
   participant_ = std::make_unique<comm::Participant>(setup_.dds);
   readers_ = std::make_unique<Readers>();
   readers_->clock = std::make_unique<comm::Reader<msgs::Clock>>(*participant_, comm::topic::kClock, [this](msgs::Clock&& c) {
-    std::vector<planner::Cell> cells;
-    for (const auto& r : c.robots()) cells.push_back({r.x(), r.y()});
     const std::lock_guard<std::mutex> lock(mutex_);
-    if (c.tick() < tick_ && cells_version_ > 0) return;  // an old clock repeated
-    tick_ = c.tick();
-    cells_ = std::move(cells);
-    ++cells_version_;
-    lost_.resize(c.robots().size(), false);
-    for (std::size_t r = 0; r < c.robots().size(); ++r) {
-      if (c.robots()[r].alive() || lost_[r]) continue;
-      lost_[r] = true;
-      ++lost_version_;
-      const std::string name = r < setup_.names.size() ? setup_.names[r] : "robot " + std::to_string(r);
-      log_.emplace_back(std::uint64_t{tick_} * setup_.tick_ns, name + " lost at tick " + std::to_string(tick_));
-    }
+    on_clock(c);
   });
   readers_->round = std::make_unique<comm::Reader<msgs::RoundStart>>(*participant_, comm::topic::kRound, [this](msgs::RoundStart&& r) {
     planner::OccupancyGrid g = setup_.frame;
@@ -78,7 +92,44 @@ LiveView::LiveView(Setup setup)
     const std::lock_guard<std::mutex> lock(mutex_);
     const std::string text = "phase " + std::to_string(p.phase() + 1) + " (" + p.task() + ") " + (p.settle() ? "settling" : "started");
     if (log_.empty() || log_.back().second != text) log_.emplace_back(std::uint64_t{tick_} * setup_.tick_ns, text);
+    if (static_cast<std::int64_t>(p.phase()) != phase_) {
+      // A new phase: the last one's frontiers are history (its routes stop as its robots do).
+      for (Plan& plan : plans_) {
+        if (plan.frontiers.empty() && plan.segments.empty()) continue;
+        plan = Plan{{}, {}, ++version_};
+        plans_version_ = version_;
+      }
+    }
+    phase_ = p.phase();
+    task_ = p.task();
+    settling_ = p.settle();
   });
+  readers_->motion =
+      std::make_unique<comm::Reader<msgs::MotionCommand>>(*participant_, comm::topic::kMotion, [this](msgs::MotionCommand&& m) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        if (m.robot() >= routes_.size()) return;
+        Route& r = routes_[m.robot()];
+        if (r.version > 0 && m.route_id() < r.id) return;  // overtaken on its way (sim::World::command)
+        r.id = m.route_id();
+        r.cells = cells_of(m.path_xy());
+        r.picks = at_steps(r.cells, m.pick_steps());
+        r.drops = at_steps(r.cells, m.drop_steps());
+        r.version = ++version_;
+        routes_version_ = version_;
+      });
+  readers_->plan =
+      std::make_unique<comm::Reader<msgs::PlanReport>>(*participant_, comm::topic::kPlanReport, [this](msgs::PlanReport&& p) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        if (p.group() >= plans_.size()) return;
+        Plan& plan = plans_[p.group()];
+        plan.frontiers = cells_of(p.group_frontiers_xy());
+        plan.segments.clear();
+        for (const auto& segment : p.global_segments_xy()) {
+          for (const planner::Cell c : cells_of(segment)) plan.segments.push_back(c);
+        }
+        plan.version = ++version_;
+        plans_version_ = version_;
+      });
 }
 
 LiveView::~LiveView() {
@@ -86,13 +137,96 @@ LiveView::~LiveView() {
   participant_.reset();
 }
 
+void LiveView::on_clock(const msgs::Clock& c) {
+  if (c.tick() < tick_ && cells_version_ > 0) return;  // an old clock repeated
+  tick_ = c.tick();
+  cells_.clear();
+  for (const auto& r : c.robots()) cells_.push_back({r.x(), r.y()});
+  cells_version_ = ++version_;
+  tally_ = c.tally();
+  sent_bytes_ = c.sent_bytes();
+  const auto name = [&](std::size_t r) { return r < setup_.names.size() ? setup_.names[r] : "robot " + std::to_string(r); };
+  const std::uint64_t ns = std::uint64_t{tick_} * setup_.tick_ns;
+  for (std::size_t r = 0; r < c.robots().size() && r < lost_.size(); ++r) {
+    if (c.robots()[r].alive() == !lost_[r]) continue;
+    lost_[r] = !c.robots()[r].alive();
+    ++lost_version_;
+    log_.emplace_back(ns, event_text(lost_[r] ? TeamEvent::Lost : TeamEvent::Back, name(r), 0, tick_));
+  }
+  // Take-overs: a group led by another robot than the last clock said, or, in the first clock this
+  // view sees (it may attach late), by another than its first leader.
+  for (std::size_t g = 0; g < c.leaders().size() && g < plans_.size(); ++g) {
+    const std::uint16_t now = c.leaders()[g];
+    const std::uint16_t before = g < leaders_.size() ? leaders_[g] : static_cast<std::uint16_t>(g * setup_.robots_per_group);
+    if (now == before || now >= took_over_.size()) continue;
+    if (before < took_over_.size()) took_over_[before] = -1;
+    took_over_[now] = now % setup_.robots_per_group == 0 ? -1 : static_cast<int>(g);
+    ++lost_version_;
+    log_.emplace_back(ns, event_text(TeamEvent::TakeOver, name(now), static_cast<int>(g), tick_));
+  }
+  leaders_ = c.leaders();
+}
+
+nlohmann::json LiveView::status_json() const {
+  StatusFacts s;
+  s.tick = tick_;
+  s.phase = phase_;
+  s.task = task_;
+  s.settling = settling_;
+  s.vertex_conflicts = tally_.vertex_conflicts();
+  s.edge_conflicts = tally_.edge_conflicts();
+  s.blocked_moves = tally_.blocked_moves();
+  s.progress_done = tally_.progress_done();
+  s.progress_total = tally_.progress_total();
+  s.sent_bytes = sent_bytes_;
+  for (const bool b : lost_) s.lost_robots += b ? 1 : 0;
+  return status_message(s);
+}
+
+nlohmann::json LiveView::routes_since(std::uint64_t seen, std::uint64_t ns) const {
+  nlohmann::json entities = nlohmann::json::array();
+  for (std::size_t r = 0; r < routes_.size(); ++r) {
+    const Route& route = routes_[r];
+    if (route.version <= seen) continue;
+    const int group = static_cast<int>(r) / std::max(1, setup_.robots_per_group);
+    nlohmann::json line = foxglove_entity("route/" + setup_.names[r], ns);
+    add_line(line, route.cells, group_colour(group, 0.6), frame_);
+    nlohmann::json picks = foxglove_entity("picks/" + setup_.names[r], ns);
+    add_cells(picks, route.picks, kPickColour, frame_);
+    nlohmann::json drops = foxglove_entity("drops/" + setup_.names[r], ns);
+    add_cells(drops, route.drops, kDropColour, frame_);
+    entities.push_back(std::move(line));
+    entities.push_back(std::move(picks));
+    entities.push_back(std::move(drops));
+  }
+  return {{"deletions", nlohmann::json::array()}, {"entities", std::move(entities)}};
+}
+
+nlohmann::json LiveView::frontiers_since(std::uint64_t seen, std::uint64_t ns) const {
+  nlohmann::json entities = nlohmann::json::array();
+  for (std::size_t g = 0; g < plans_.size(); ++g) {
+    const Plan& plan = plans_[g];
+    if (plan.version <= seen) continue;
+    nlohmann::json group = foxglove_entity("frontiers/" + std::to_string(g), ns);
+    add_cells(group, plan.frontiers, group_colour(static_cast<int>(g), 0.6), frame_);
+    nlohmann::json segments = foxglove_entity("segments/" + std::to_string(g), ns);
+    add_cells(segments, plan.segments, group_colour(static_cast<int>(g), 0.25), frame_);
+    entities.push_back(std::move(group));
+    entities.push_back(std::move(segments));
+  }
+  return {{"deletions", nlohmann::json::array()}, {"entities", std::move(entities)}};
+}
+
 std::vector<LiveChannel> LiveView::channels() const {
   std::vector<LiveChannel> out = {{kTf, "/tf", "foxglove.FrameTransforms", ""},
                                   {kRobots, "/robots", "foxglove.SceneUpdate", ""},
                                   {kMap, "/map", "foxglove.Grid", ""},
-                                  {kLog, "/log", "foxglove.Log", ""}};
+                                  {kLog, "/log", "foxglove.Log", ""},
+                                  {kRoutes, "/routes", "foxglove.SceneUpdate", ""},
+                                  {kFrontiers, "/frontiers", "foxglove.SceneUpdate", ""},
+                                  {kStatus, "/status", kStatusSchemaName, ""}};
   if (setup_.truth != nullptr) out.push_back({kTruth, "/map/truth", "foxglove.Grid", ""});
-  for (LiveChannel& c : out) c.schema = foxglove_schema(c.schema_name).dump();
+  for (LiveChannel& c : out) c.schema = (c.schema_name == kStatusSchemaName ? status_schema() : foxglove_schema(c.schema_name)).dump();
   return out;
 }
 
@@ -104,19 +238,27 @@ std::vector<LiveMessage> LiveView::since(std::vector<std::uint64_t>& cursor) con
     cursor[kTruthSeen] = 1;
   }
   const std::lock_guard<std::mutex> lock(mutex_);
+  const std::uint64_t ns = std::uint64_t{tick_} * setup_.tick_ns;
   if (lost_version_ > cursor[kRobotsSeen]) {
-    const std::uint64_t ns = std::uint64_t{tick_} * setup_.tick_ns;
-    out.push_back({kRobots, ns, foxglove_robots(setup_.names, setup_.robots_per_group, frame_.resolution, lost_).dump()});
+    out.push_back({kRobots, ns, foxglove_robots(setup_.names, setup_.robots_per_group, frame_.resolution, lost_, took_over_).dump()});
     cursor[kRobotsSeen] = lost_version_;
   }
   if (map_version_ > cursor[kMapSeen]) {
-    const std::uint64_t ns = map_tick_ * setup_.tick_ns;
-    out.push_back({kMap, ns, foxglove_grid(map_, ns).dump()});
+    const std::uint64_t map_ns = map_tick_ * setup_.tick_ns;
+    out.push_back({kMap, map_ns, foxglove_grid(map_, map_ns).dump()});
     cursor[kMapSeen] = map_version_;
   }
+  if (plans_version_ > cursor[kPlansSeen]) {
+    out.push_back({kFrontiers, ns, frontiers_since(cursor[kPlansSeen], ns).dump()});
+    cursor[kPlansSeen] = plans_version_;
+  }
+  if (routes_version_ > cursor[kRoutesSeen]) {
+    out.push_back({kRoutes, ns, routes_since(cursor[kRoutesSeen], ns).dump()});
+    cursor[kRoutesSeen] = routes_version_;
+  }
   if (cells_version_ > cursor[kCellsSeen]) {
-    const std::uint64_t ns = std::uint64_t{tick_} * setup_.tick_ns;
     out.push_back({kTf, ns, foxglove_transforms(setup_.names, cells_, frame_, ns).dump()});
+    out.push_back({kStatus, ns, status_json().dump()});
     cursor[kCellsSeen] = cells_version_;
   }
   for (std::size_t k = cursor[kLogSeen]; k < log_.size(); ++k) {
@@ -136,7 +278,9 @@ std::string LiveView::setup_json() const {
                             {"robots_per_group", setup_.robots_per_group},
                             {"groups", setup_.names.size() / static_cast<std::size_t>(std::max(1, setup_.robots_per_group))},
                             {"tick_ns", setup_.tick_ns},
-                            {"title", setup_.title}};
+                            {"title", setup_.title},
+                            {"links", link_names()},
+                            {"layout", layout_}};
   return j.dump();
 }
 

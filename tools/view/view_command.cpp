@@ -25,16 +25,28 @@ int attach(const ViewOptions& o, std::ostream& out, std::ostream& err) {
     err << me << ": " << e.what() << "\n";
     return 2;
   }
+  comm::DdsOptions dds = observer_dds("swarm-view", o.domain, o.partition, o.profile, o.discovery_server);
+  if (!o.security_dir.empty()) {
+    for (const std::string& file : {o.identity + ".pem", o.identity + ".key", std::string("ca.pem"), std::string("permissions.p7s")}) {
+      if (!std::filesystem::exists(std::filesystem::path(o.security_dir) / file)) {
+        err << me << ": --security-dir " << o.security_dir << " has no " << file
+            << " (make one with scripts/make-certs.sh DIR --read-only " << o.identity << ", with the swarm's CA in DIR)\n";
+        return 2;
+      }
+    }
+    dds.security_dir = o.security_dir;
+    dds.identity = o.identity;
+  }
   std::unique_ptr<LiveView> view;
   try {
-    view = std::make_unique<LiveView>(
-        LiveView::setup_for(world, observer_dds("swarm-view", o.domain, o.partition, o.profile, o.discovery_server)));
+    view = std::make_unique<LiveView>(LiveView::setup_for(world, std::move(dds)));
   } catch (const std::exception& e) {
     err << me << ": cannot join domain " << o.domain << ": " << e.what() << "\n";
     return 1;
   }
   out << me << ": domain " << o.domain << ", partition '" << o.partition << "'"
-      << (o.discovery_server.empty() ? "" : ", discovery server " + o.discovery_server) << "\n";
+      << (o.discovery_server.empty() ? "" : ", discovery server " + o.discovery_server)
+      << (o.security_dir.empty() ? "" : ", DDS-Security as " + o.identity) << "\n";
   const ViewRoutes routes = {{"/", {"text/html; charset=utf-8", view_page()}},
                              {"/live.json", {"application/json", view->setup_json()}}};
   return serve(o.server, routes, out, err, view.get());
@@ -53,7 +65,7 @@ int view_command(const ViewOptions& o, std::ostream& out, std::ostream& err) {
   if (!world) err << me << ": no ground truth to show: " << why << "\n";
   std::string json;
   try {
-    json = replay_json(frames, world ? &world->truth : nullptr).dump();
+    json = replay_json(frames, world ? &world->truth : nullptr, world ? mission_layout(*world) : nlohmann::json::array()).dump();
   } catch (const std::exception& e) {
     err << me << ": " << e.what() << "\n";
     return 2;

@@ -20,6 +20,9 @@ namespace {
 // stand on; a wider footprint reaches a cell from elsewhere, and the bound is then not given).
 class CoverJudge : public sim::PhaseJudge {
  public:
+  sim::Progress progress(const sim::World& world) const override {
+    return {static_cast<std::uint64_t>(world.covered_cells()), static_cast<std::uint64_t>(world.coverage_target_cells())};
+  }
   void start(sim::World& world, std::uint32_t tick) override {
     world.reset_coverage();
     curve_.emplace_back(tick, world.covered_fraction());

@@ -1,5 +1,7 @@
 #include "swarm/tasks/explore/explore_row.hpp"
 
+#include <cmath>
+
 #include "swarm/tasks/explore/explore_gcs.hpp"
 #include "swarm/tasks/explore/explore_leader.hpp"
 #include "swarm/tasks/mapf/mapf_settings.hpp"
@@ -10,6 +12,10 @@ namespace {
 // The simulator's judge: how much of the map the robots' scans covered, and when 99 % was.
 class ExploreJudge : public sim::PhaseJudge {
  public:
+  sim::Progress progress(const sim::World& world) const override {
+    const auto reachable = static_cast<std::uint64_t>(world.reachable_free_cells());
+    return {static_cast<std::uint64_t>(std::llround(world.explored_fraction() * static_cast<double>(reachable))), reachable};
+  }
   nlohmann::json judge(const sim::World& world, const sim::PhaseFacts& facts) const override {
     // The paper's measure of an explored map: 99 % of the free cells the robots can reach, seen.
     return {{record::kGroundTruthDone, world.explored_fraction() >= 0.99},

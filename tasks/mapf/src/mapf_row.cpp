@@ -20,6 +20,15 @@ namespace {
 class MapfJudge : public sim::PhaseJudge {
  public:
   explicit MapfJudge(std::vector<planner::Cell> goals) : goals_(std::move(goals)) {}
+  // Robots on their goals, out of every robot with one (unknown for goals drawn by the GCS).
+  sim::Progress progress(const sim::World& world) const override {
+    sim::Progress p;
+    for (std::size_t r = 0; r < world.robots().size() && r < goals_.size(); ++r) {
+      ++p.total;
+      p.done += world.robots()[r] == goals_[r] ? 1 : 0;
+    }
+    return p;
+  }
 
   nlohmann::json judge(const sim::World& world, const sim::PhaseFacts& f) const override {
     const bool moved = f.last_move_tick.has_value();

@@ -397,7 +397,8 @@ class LockstepClock : public Mailbox {
   // Publishes Clock(k) with the barrier counts and each group's leader (the succession rule of
   // leadership.hpp applied to `robots`); call after sending this tick's sensor data. The
   // stop waits up to 5 s for its acknowledgement when an agent is lost (it may be only cut off).
-  void publish_clock(std::uint32_t k, const std::vector<msgs::RobotState>& robots, bool stop);
+  // `tally` goes to watchers as it is; the clock adds every agent's sent bytes per link class.
+  void publish_clock(std::uint32_t k, const std::vector<msgs::RobotState>& robots, bool stop, const msgs::RunTally& tally = {});
   // Blocks until every living agent has finished tick k; returns true when the GCS reported the
   // mission complete. An agent whose heartbeat DDS declares lost is no longer waited for until
   // its Done messages come back (see losses()). Throws, naming the agents it waited for, after
@@ -433,6 +434,10 @@ class LockstepClock : public Mailbox {
   std::vector<std::chrono::steady_clock::time_point> last_heard_;  // per agent: its latest Done
   std::vector<std::uint32_t> next_undone_;                          // per agent: tick after its latest Done
   std::vector<AgentId> leaders_;  // each group's leader in the latest clock (leadership.hpp)
+  // Bytes sent per link class: each agent's current process's (its latest Done), and those of
+  // processes that restarted since.
+  std::vector<std::vector<std::uint64_t>> agent_bytes_;
+  std::vector<std::uint64_t> retired_bytes_ = std::vector<std::uint64_t>(kLinkClasses, 0);
   // Restarts: each agent's current writer of Done (an older one is a dead process), whether a new
   // process waits to be admitted, and from which tick and which count on each one's counts run.
   std::map<AgentId, WriterId> writer_of_;

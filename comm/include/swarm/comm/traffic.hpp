@@ -9,6 +9,7 @@
 #include <mutex>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace swarm::comm {
 
@@ -31,6 +32,8 @@ class TrafficAccount {
   void received(const std::string& family, const std::string& link, std::uint64_t bytes, std::uint32_t lost,
                 bool dropped);
   std::map<Key, TrafficCount> snapshot() const;
+  // Bytes sent so far per link class, indexed by comm::LinkClass (link.hpp): kLinkClasses entries.
+  std::vector<std::uint64_t> sent_bytes_by_link() const;
 
  private:
   mutable std::mutex mutex_;

@@ -95,6 +95,9 @@ class GcsNode {
   comm::LeaderLog leaders_;
   std::uint64_t not_from_a_leader_ = 0;
   bool from_leader(const msgs::Stamp& stamp);
+  // The clock's news for the record: robots lost or back, and leaders that took a group over.
+  void record_events(const msgs::Clock& clock);
+  std::size_t leader_changes_recorded_ = 0;  // of leaders_.changes()
   std::vector<std::uint32_t> last_heard_;
   std::uint32_t unreachable_after_ticks_ = 3;
   Outages unreachable_;  // per group

@@ -10,6 +10,7 @@
 //   judge(world, facts)      its numbers: merged into metrics.json phases[i].task; among them
 //                            record::kGroundTruthDone, whether the ground truth says the work is
 //                            done (null: it cannot tell), which the phase's completion needs
+//   progress(world)          the work done so far, for watchers (msgs::RunTally, every tick)
 #pragma once
 
 #include <cstdint>
@@ -34,9 +35,16 @@ struct PhaseFacts {
   std::vector<bool> alive;                       // per robot id, when judged
 };
 
+// A phase's work so far in its task's unit (cells, robots, objects); total 0 = not counted.
+struct Progress {
+  std::uint64_t done = 0;
+  std::uint64_t total = 0;
+};
+
 class PhaseJudge {
  public:
   virtual ~PhaseJudge() = default;
+  [[nodiscard]] virtual Progress progress(const World&) const { return {}; }
   virtual void start(World&, std::uint32_t /*tick*/) {}
   virtual void after_tick(const World&, std::uint32_t /*k*/) {}
   virtual void last_tick(const World&, std::uint32_t /*k*/) {}

@@ -51,6 +51,7 @@ class SimNode {
 
  private:
   std::vector<msgs::RobotState> states() const;
+  msgs::RunTally tally() const;  // for watchers: conflicts, blocked moves and the phase's progress
   // Phase `index` of the mission begins at `tick`: the motion model of its task, and its judge.
   void start_phase(std::uint32_t index, std::uint32_t tick);
   // The ground-truth numbers of the phase in force, frozen when the next one starts.
