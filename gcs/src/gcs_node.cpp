@@ -58,6 +58,17 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const 
       unreachable_after_ticks_(unreachable_after_ticks(setup.links)),
       unreachable_(setup.topology.groups()),
       robots_lost_(setup.topology.robots()) {
+  planned_ = std::make_unique<comm::Writer<msgs::PlannedRoute>>(agent.bus(), topic::kPlanned);
+  record_.on_append([this](const record::Frame& f) {
+    if (!f.has_route() || agent_.replaying()) return;
+    msgs::PlannedRoute p;
+    p.tick(f.route().tick());
+    p.phase(f.route().phase());
+    p.robot(static_cast<std::uint16_t>(f.route().robot()));
+    for (const std::int32_t v : f.route().xy()) p.path_xy().push_back(static_cast<std::int16_t>(v));
+    p.region_cells(f.route().region_cells());
+    planned_->write(p);
+  });
   // Every candidate leader (comm/leadership.hpp) writes the leaders' topics; only the leader of
   // the moment is heard. What the map patches carry is true whoever sent it, so a deposed
   // leader's late patches are fused too.

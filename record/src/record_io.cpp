@@ -51,7 +51,8 @@ RecordWriter::RecordWriter(RecordWriter&& other) noexcept
     : path_(std::move(other.path_)),
       out_(std::move(other.out_)),
       frames_(other.frames_),
-      bytes_(other.bytes_) {}
+      bytes_(other.bytes_),
+      observer_(std::move(other.observer_)) {}
 
 RecordWriter& RecordWriter::operator=(RecordWriter&& other) noexcept {
   if (this != &other) {
@@ -63,6 +64,7 @@ RecordWriter& RecordWriter::operator=(RecordWriter&& other) noexcept {
     out_ = std::move(other.out_);
     frames_ = other.frames_;
     bytes_ = other.bytes_;
+    observer_ = std::move(other.observer_);
   }
   return *this;
 }
@@ -79,6 +81,7 @@ void RecordWriter::append(const Frame& frame) {
   std::size_t prefix = 1;
   for (std::size_t v = size; v >= 0x80; v >>= 7) ++prefix;
   bytes_ += prefix + size;
+  if (observer_) observer_(frame);
 }
 
 void RecordWriter::flush() {

@@ -303,9 +303,9 @@ TEST(View, TheReplayPageDrawsTheRobotsAndTheWallsWhereTheRecordHasThem) {
   // With the routes in the cover phase: each robot's route sweeps its region, its cells tinted in
   // its group's colour at 0.18 over white, under the robots, which stay where the record has them.
   std::set<std::uint32_t> routed_groups;
-  std::uint32_t routed_at = 0;  // the tick of the cover phase's last route plan
+  std::uint32_t routed_at = 0;  // the tick of the cover phase's last division
   for (const auto& f : frames) {
-    if (!f.has_route() || f.route().phase() != 1) continue;
+    if (!f.has_route() || f.route().phase() != 1 || f.route().region_cells() == 0) continue;
     routed_groups.insert(f.route().robot() / h.robots_per_group());
     routed_at = std::max(routed_at, f.route().tick());
   }
@@ -613,6 +613,40 @@ TEST(View, ALiveViewMarksARobotLostWhenItDies) {
   }
   EXPECT_EQ(routed.size(), 9U);
   EXPECT_EQ(planned, (std::set<std::string>{"frontiers/0", "frontiers/1", "frontiers/2"}));
+}
+
+// A watched cover phase: /routes has the GCS's whole route for every robot (plan/NAME), the one the
+// record has as that robot's route in the phase's last division (region_cells > 0; the other
+// routes recorded are the traffic layer's windows, which /routes shows as route/NAME).
+TEST(View, ALiveViewShowsTheToursTheGcsPlanned) {
+  const std::string dir = fresh_dir("view_plans");
+  const int port = 20000 + (::getpid() + 19) % 20000;
+  BackgroundSwarm run({"run", "--map", "warehouse-5x8", "--mission", "explore,cover", "--out", dir + "/run", "--view",
+                       "--view-port", std::to_string(port)},
+                      dir + "/run.log");
+  ASSERT_TRUE(run.started());
+  ASSERT_TRUE(wait_for(port)) << "no live view on port " << port;
+  WsClient ws(port);
+  const Followed seen = follow(ws, std::numeric_limits<std::size_t>::max());  // until the run ends
+  ASSERT_EQ(run.wait(), 0) << "see " << dir << "/run.log";
+  const auto frames = record::read_record(dir + "/run/run.pb");
+  const record::Header& h = frames.front().header();
+  const std::vector<std::string> names = record::robot_names(h);
+  std::map<std::string, std::vector<planner::Cell>> recorded, shown;
+  for (const auto& f : frames) {
+    if (!f.has_route() || f.route().phase() != 1 || f.route().region_cells() == 0) continue;
+    std::vector<planner::Cell>& cells = recorded[names.at(f.route().robot())];
+    cells.clear();
+    for (int k = 0; k + 1 < f.route().xy_size(); k += 2) cells.push_back({f.route().xy(k), f.route().xy(k + 1)});
+  }
+  for (const auto& [ns, m] : seen.routes) {
+    for (const auto& e : m["entities"]) {
+      const std::string id = e["id"].get<std::string>();
+      if (id.rfind("plan/", 0) == 0) shown[id.substr(5)] = entity_cells(e, h);
+    }
+  }
+  ASSERT_EQ(recorded.size(), names.size());
+  for (const auto& [name, cells] : recorded) EXPECT_EQ(shown[name], cells) << name << ": " << shown[name].size() << " cells shown, " << cells.size() << " recorded";
 }
 
 // `swarm view --attach`: the same view of a swarm it did not start (as a deployment's), found by

@@ -38,6 +38,7 @@ struct LiveView::Readers {
   std::unique_ptr<comm::Reader<msgs::PhaseStart>> phase;
   std::unique_ptr<comm::Reader<msgs::MotionCommand>> motion;
   std::unique_ptr<comm::Reader<msgs::PlanReport>> plan;
+  std::unique_ptr<comm::Reader<msgs::PlannedRoute>> planned;
 };
 
 LiveView::Setup LiveView::setup_for(const config::World& world, comm::DdsOptions dds) {
@@ -55,6 +56,7 @@ LiveView::Setup LiveView::setup_for(const config::World& world, comm::DdsOptions
   setup.tick_ns = std::uint64_t{s.tick_ms()} * 1'000'000U;
   setup.title = s.map() + ", seed " + std::to_string(s.seed());
   setup.layout = mission_layout(world);
+  for (const auto& phase : config::mission_phases(s)) setup.tasks.push_back(config::task_name(phase));
   return setup;
 }
 
@@ -68,6 +70,7 @@ LiveView::LiveView(Setup setup)
   lost_.assign(robots, false);
   took_over_.assign(robots, -1);
   routes_.resize(robots);
+  plans_of_.resize(robots);
   plans_.resize(static_cast<std::size_t>(groups));
   participant_ = std::make_unique<comm::Participant>(setup_.dds);
   readers_ = std::make_unique<Readers>();
@@ -99,6 +102,11 @@ LiveView::LiveView(Setup setup)
         plan = Plan{{}, {}, ++version_};
         plans_version_ = version_;
       }
+      for (Route& planned : plans_of_) {
+        if (planned.cells.empty()) continue;
+        planned = Route{0, {}, {}, {}, ++version_};
+        routes_version_ = version_;
+      }
     }
     phase_ = p.phase();
     task_ = p.task();
@@ -129,6 +137,20 @@ LiveView::LiveView(Setup setup)
         }
         plan.version = ++version_;
         plans_version_ = version_;
+      });
+  readers_->planned =
+      std::make_unique<comm::Reader<msgs::PlannedRoute>>(*participant_, comm::topic::kPlanned, [this](msgs::PlannedRoute&& p) {
+        // A cover division's route (its region) or a mapf plan's path; not the traffic layer's
+        // windows, which the robots' motion commands show.
+        const bool mapf = p.phase() < setup_.tasks.size() && setup_.tasks[p.phase()] == "mapf";
+        if (p.region_cells() == 0 && !mapf) return;
+        const std::lock_guard<std::mutex> lock(mutex_);
+        if (p.robot() >= plans_of_.size()) return;
+        Route& planned = plans_of_[p.robot()];
+        planned.id = p.phase();
+        planned.cells = cells_of(p.path_xy());
+        planned.version = ++version_;
+        routes_version_ = version_;
       });
 }
 
@@ -183,21 +205,27 @@ nlohmann::json LiveView::status_json() const {
   return status_message(s);
 }
 
+void LiveView::add_route_entities(nlohmann::json& entities, const std::string& kind, std::size_t robot, const Route& r,
+                                  std::uint64_t ns) const {
+  const int group = static_cast<int>(robot) / std::max(1, setup_.robots_per_group);
+  const std::string& name = setup_.names[robot];
+  const std::string prefix = kind == "route" ? "" : kind + "_";
+  nlohmann::json line = foxglove_entity(kind + "/" + name, ns);
+  add_line(line, r.cells, group_colour(group, kind == "route" ? 0.6 : 0.3), frame_);
+  nlohmann::json picks = foxglove_entity(prefix + "picks/" + name, ns);
+  add_cells(picks, r.picks, kPickColour, frame_);
+  nlohmann::json drops = foxglove_entity(prefix + "drops/" + name, ns);
+  add_cells(drops, r.drops, kDropColour, frame_);
+  entities.push_back(std::move(line));
+  entities.push_back(std::move(picks));
+  entities.push_back(std::move(drops));
+}
+
 nlohmann::json LiveView::routes_since(std::uint64_t seen, std::uint64_t ns) const {
   nlohmann::json entities = nlohmann::json::array();
   for (std::size_t r = 0; r < routes_.size(); ++r) {
-    const Route& route = routes_[r];
-    if (route.version <= seen) continue;
-    const int group = static_cast<int>(r) / std::max(1, setup_.robots_per_group);
-    nlohmann::json line = foxglove_entity("route/" + setup_.names[r], ns);
-    add_line(line, route.cells, group_colour(group, 0.6), frame_);
-    nlohmann::json picks = foxglove_entity("picks/" + setup_.names[r], ns);
-    add_cells(picks, route.picks, kPickColour, frame_);
-    nlohmann::json drops = foxglove_entity("drops/" + setup_.names[r], ns);
-    add_cells(drops, route.drops, kDropColour, frame_);
-    entities.push_back(std::move(line));
-    entities.push_back(std::move(picks));
-    entities.push_back(std::move(drops));
+    if (routes_[r].version > seen) add_route_entities(entities, "route", r, routes_[r], ns);
+    if (plans_of_[r].version > seen) add_route_entities(entities, "plan", r, plans_of_[r], ns);
   }
   return {{"deletions", nlohmann::json::array()}, {"entities", std::move(entities)}};
 }

@@ -6,7 +6,10 @@
 //                progress, bytes sent per link class)
 //   round        the GCS's fused map (/map)
 //   phase        phase announcements (/status, /log)
-//   motion       each robot's route as commanded, with its pick and drop cells (/routes)
+//   motion       each robot's route as commanded, with its pick and drop cells (/routes:
+//                route/NAME, picks/NAME, drops/NAME)
+//   planned      the routes the GCS planned (cover's division: each robot's whole route over its
+//                region; mapf's timed paths with their waits): /routes plan/NAME
 //   plan_report  each group's frontier cells and the global segments it chose from (/frontiers)
 // /routes and /frontiers send only the robots and groups that changed since a connection's last
 // frame (a SceneUpdate entity replaces the one of the same id), so 200 robots stay cheap.
@@ -48,6 +51,7 @@ class LiveView : public LiveFeed {
     std::uint64_t tick_ns = 50'000'000;
     std::string title;  // e.g. "maze1, seed 1, explore"
     nlohmann::json layout = nlohmann::json::array();  // mission_layout(world)
+    std::vector<std::string> tasks;                     // the mission's phases' tasks
   };
   // The setup for watching a run of `world` (its map, team and tick length) over `dds`.
   static Setup setup_for(const config::World& world, comm::DdsOptions dds);
@@ -67,6 +71,9 @@ class LiveView : public LiveFeed {
     std::vector<planner::Cell> cells, picks, drops;
     std::uint64_t version = 0;  // version_ when it changed
   };
+  // The entities of one robot's route ("route") or plan ("plan") on /routes.
+  void add_route_entities(nlohmann::json& entities, const std::string& kind, std::size_t robot, const Route& r,
+                          std::uint64_t ns) const;
   struct Plan {
     std::vector<planner::Cell> frontiers, segments;
     std::uint64_t version = 0;
@@ -95,6 +102,7 @@ class LiveView : public LiveFeed {
   std::string task_;
   bool settling_ = false;
   std::vector<Route> routes_;  // per robot
+  std::vector<Route> plans_of_;  // per robot: the GCS's plan for it in this phase (id: the phase)
   std::vector<Plan> plans_;    // per group
   std::uint64_t routes_version_ = 0, plans_version_ = 0;
   planner::OccupancyGrid map_;

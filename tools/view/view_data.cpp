@@ -153,7 +153,8 @@ nlohmann::json replay_json(const std::vector<record::Frame>& frames, const plann
       j["events"].push_back({{"tick", e.tick()}, {"kind", kind}, {"robot", e.robot()}, {"group", e.group()}});
     } else if (f.has_route()) {
       const auto& r = f.route();
-      j["routes"].push_back({{"tick", r.tick()}, {"phase", r.phase()}, {"robot", r.robot()}, {"xy", xy_of(r.xy())}});
+      j["routes"].push_back(
+          {{"tick", r.tick()}, {"phase", r.phase()}, {"robot", r.robot()}, {"xy", xy_of(r.xy())}, {"region", r.region_cells()}});
     } else if (f.has_phase()) {
       const auto& p = f.phase();
       j["phases"].push_back({{"tick", p.tick()}, {"phase", p.phase()}, {"task", p.task()}, {"ended", p.ended()}, {"complete", p.complete()}});

@@ -5,7 +5,7 @@
 //    "truth": "0120..." | null,                      // the map file's cells, row-major from y = 0
 //    "maps":   [{"tick", "cells": "0120..."}],        // the GCS's fused map versions
 //    "poses":  [{"tick", "phase", "xy": [x0, y0, x1, y1, ...]}],
-//    "routes": [{"tick", "phase", "robot", "xy": [...]}],
+//    "routes": [{"tick", "phase", "robot", "xy": [...], "region": cells}],  // region > 0: a cover division's
 //    "plans":  [{"tick", "group", "frontiers": [x0, y0, ...], "segments": [x0, y0, ...]}],  // exploration
 //    "phases": [{"tick", "phase", "task", "ended", "complete"}],
 //    "tallies": [{"tick", "vertex", "edge", "blocked", "done", "total", "bytes": [per link class]}],

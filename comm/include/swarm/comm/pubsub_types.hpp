@@ -41,6 +41,7 @@ SWARM_PUBSUB(MemberStatus);
 SWARM_PUBSUB(GroupStatus);
 SWARM_PUBSUB(Heartbeat);
 SWARM_PUBSUB(PlanReport);
+SWARM_PUBSUB(PlannedRoute);
 SWARM_PUBSUB(AgentReport);
 SWARM_PUBSUB(PhaseStart);
 SWARM_PUBSUB(TaskOrder);

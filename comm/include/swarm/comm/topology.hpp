@@ -71,6 +71,7 @@ inline const std::string kRound = "round";
 inline const std::string kGroupStatus = "group_status";
 inline const std::string kHeartbeat = "heartbeat";
 inline const std::string kPlanReport = "plan_report";
+inline const std::string kPlanned = "planned";  // GCS -> watchers only (msgs::PlannedRoute)
 inline const std::string kReport = "report";
 inline const std::string kPhase = "phase";
 // The same announcement to the simulator, on the unemulated control link: the simulator is the

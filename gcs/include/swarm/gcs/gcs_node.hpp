@@ -86,6 +86,8 @@ class GcsNode {
   Progress progress_;
   record::RecordWriter record_;
   std::unique_ptr<comm::Reader<msgs::AgentReport>> reports_reader_;
+  // The route plans it records, shown to watchers (topic planned): outside the lockstep barrier.
+  std::unique_ptr<comm::Writer<msgs::PlannedRoute>> planned_;
   std::mutex reports_mutex_;
   std::map<comm::AgentId, msgs::AgentReport> reports_;
 

@@ -20,6 +20,7 @@
 
 #include <cstdint>
 #include <fstream>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,6 +51,9 @@ class RecordWriter {
   RecordWriter& operator=(RecordWriter&&) noexcept;
 
   void append(const Frame& frame);
+  // Called with every frame appended from now on, after it is written (the GCS shows its route
+  // plans to watchers).
+  void on_append(std::function<void(const Frame&)> observer) { observer_ = std::move(observer); }
   void flush();
   void close();  // idempotent; append after close throws
 
@@ -62,6 +66,7 @@ class RecordWriter {
   std::ofstream out_;
   std::size_t frames_ = 0;
   std::uint64_t bytes_ = 0;
+  std::function<void(const Frame&)> observer_;
 };
 
 // Reads every frame of a record file (or of DIR/run.pb when `path` is a directory). Throws
