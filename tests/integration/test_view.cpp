@@ -72,14 +72,15 @@ class BackgroundSwarm {
   pid_t pid_ = -1;
 };
 
-// A TCP connection to 127.0.0.1:port whose reads give up after 10 s: its socket, or -1.
+// A TCP connection to 127.0.0.1:port whose reads give up after 60 s (a run under a sanitizer may
+// take that long to start its first tick): its socket, or -1.
 int connect_loopback(int port) {
   const int s = ::socket(AF_INET, SOCK_STREAM, 0);
   sockaddr_in a{};
   a.sin_family = AF_INET;
   a.sin_port = htons(static_cast<std::uint16_t>(port));
   a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  timeval limit{10, 0};
+  timeval limit{60, 0};
   ::setsockopt(s, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof limit);
   if (::connect(s, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0) return s;
   ::close(s);
@@ -92,8 +93,9 @@ bool answers(int port) {
   return s >= 0;
 }
 
+// Whether something listens on `port` within 60 s (a run under a sanitizer is slow to start).
 bool wait_for(int port) {
-  for (int k = 0; k < 100; ++k) {
+  for (int k = 0; k < 600; ++k) {
     if (answers(port)) return true;
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
@@ -565,7 +567,7 @@ TEST(View, ALiveViewMarksARobotLostWhenItDies) {
   WsClient ws(port);
   const Followed seen = follow(ws, std::numeric_limits<std::size_t>::max());  // until the run ends
   ASSERT_EQ(run.wait(), 0) << "see " << dir << "/run.log";
-  ASSERT_GE(seen.robots.size(), 2U);
+  ASSERT_GE(seen.robots.size(), 2U) << seen.tf.size() << " /tf, " << seen.log.size() << " /log, " << seen.status.size() << " /status frames";
   const nlohmann::json& last = seen.robots.back().second["entities"];
   for (const auto& e : last) {
     const std::string id = e["id"].get<std::string>();
