@@ -60,11 +60,15 @@ std::string fake_bin(const TempDir& dir, const std::string& leader_script = "exi
     f.mutable_header()->set_height(10);
     f.mutable_header()->set_groups(1);
     f.mutable_header()->set_robots_per_group(2);
+    f.mutable_header()->mutable_scenario()->set_tick_ms(200);
     w.append(f);
     for (std::uint32_t t = 0; t < 10; ++t) {  // two robots standing for ticks 0..9
       swarm::record::Frame p;
       p.mutable_poses()->set_tick(t);
       for (int xy : {1, 1, 2, 1}) p.mutable_poses()->add_xy(xy);
+      // Bytes sent so far per link class (sim_robot, member_leader, leader_gcs, telemetry,
+      // control): 1000, 100 and 10 a tick on the first three.
+      for (std::uint64_t b : {1000U * t, 100U * t, 10U * t, 0U, 0U}) p.mutable_poses()->mutable_tally()->add_sent_bytes(b);
       w.append(p);
     }
     swarm::record::Frame s;
@@ -343,6 +347,12 @@ TEST(RunCommand, SuccessWritesTheRunDirectoryPictureAndSummary) {
   EXPECT_TRUE(contains(out.str(), "steps            368")) << out.str();
   EXPECT_TRUE(contains(out.str(), "run dir: " + run)) << out.str();
   EXPECT_TRUE(fs::exists(run + "/map.png"));
+  // Traffic over time in 1 s bins of 5 ticks of 200 ms: up to tick 4, then ticks 5..9; the
+  // simulator's sensing of the robots last, labelled as on the robot.
+  EXPECT_TRUE(fs::exists(run + "/traffic.png"));
+  EXPECT_EQ(slurp(run + "/traffic.csv"),
+            "second,member_leader_bytes_per_s,leader_gcs_bytes_per_s,telemetry_bytes_per_s,control_bytes_per_s,"
+            "sim_robot_on_robot_bytes_per_s\n1,400,40,0,0,4000\n2,500,50,0,0,5000\n");
   // The roles got one scenario file, written from the flags.
   const auto scenario = cfg::load_scenario(run + "/scenario.pbtxt");
   EXPECT_EQ(scenario.map(), "small");

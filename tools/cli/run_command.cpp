@@ -1,6 +1,7 @@
 #include "run_command.hpp"
 
 #include "live_run_view.hpp"
+#include "traffic_over_time.hpp"
 #include "mcap_export.hpp"
 
 #include "run_end.hpp"
@@ -219,6 +220,15 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err)
         << "\n";
     return 1;
   }
+  const std::string traffic_png = (std::filesystem::path(l.run_dir) / "traffic.png").string();
+  try {
+    const TrafficOverTime traffic = traffic_over_time(frames);
+    write_traffic_csv(traffic, (std::filesystem::path(l.run_dir) / "traffic.csv").string());
+    write_traffic_png(traffic, traffic_png);
+  } catch (const std::exception& e) {
+    err << "swarm run: every process exited normally, but the traffic over time failed: " << e.what() << "\n";
+    return 1;
+  }
   if (!options.mcap_path.empty()) {
     try {
       (void)export_mcap(frames, &run.world, options.mcap_path);
@@ -241,6 +251,7 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err)
       << ", " << s.groups() << " x " << s.robots_per_group() << " robots, seed " << s.seed()
       << "\n"
       << summary << "  map picture      " << png << "\n"
+      << "  traffic / s      " << traffic_png << " (and traffic.csv)\n"
       << (options.mcap_path.empty() ? std::string() : "  mcap             " + options.mcap_path + "\n")
       << "run dir: " << l.run_dir << "\n";
   if (!complete) {
