@@ -102,6 +102,7 @@ const char* writer_profile(EndpointKind kind) {
   return kind == EndpointKind::Heartbeat ? "swarm_heartbeat_writer" : "swarm_writer";
 }
 const char* reader_profile(EndpointKind kind) {
+  if (kind == EndpointKind::Watch) return "swarm_watch_reader";
   return kind == EndpointKind::Heartbeat ? "swarm_heartbeat_reader" : "swarm_reader";
 }
 

@@ -77,7 +77,7 @@ LiveView::LiveView(Setup setup)
   readers_->clock = std::make_unique<comm::Reader<msgs::Clock>>(*participant_, comm::topic::kClock, [this](msgs::Clock&& c) {
     const std::lock_guard<std::mutex> lock(mutex_);
     on_clock(c);
-  });
+  }, comm::EndpointKind::Watch);
   readers_->round = std::make_unique<comm::Reader<msgs::RoundStart>>(*participant_, comm::topic::kRound, [this](msgs::RoundStart&& r) {
     planner::OccupancyGrid g = setup_.frame;
     try {
@@ -90,7 +90,7 @@ LiveView::LiveView(Setup setup)
     map_ = std::move(g);
     map_tick_ = r.fused_tick();
     ++map_version_;
-  });
+  }, comm::EndpointKind::Watch);
   readers_->phase = std::make_unique<comm::Reader<msgs::PhaseStart>>(*participant_, comm::topic::kPhase, [this](msgs::PhaseStart&& p) {
     const std::lock_guard<std::mutex> lock(mutex_);
     const std::string text = "phase " + std::to_string(p.phase() + 1) + " (" + p.task() + ") " + (p.settle() ? "settling" : "started");
@@ -111,7 +111,7 @@ LiveView::LiveView(Setup setup)
     phase_ = p.phase();
     task_ = p.task();
     settling_ = p.settle();
-  });
+  }, comm::EndpointKind::Watch);
   readers_->motion =
       std::make_unique<comm::Reader<msgs::MotionCommand>>(*participant_, comm::topic::kMotion, [this](msgs::MotionCommand&& m) {
         const std::lock_guard<std::mutex> lock(mutex_);
@@ -124,7 +124,7 @@ LiveView::LiveView(Setup setup)
         r.drops = at_steps(r.cells, m.drop_steps());
         r.version = ++version_;
         routes_version_ = version_;
-      });
+      }, comm::EndpointKind::Watch);
   readers_->plan =
       std::make_unique<comm::Reader<msgs::PlanReport>>(*participant_, comm::topic::kPlanReport, [this](msgs::PlanReport&& p) {
         const std::lock_guard<std::mutex> lock(mutex_);
@@ -137,7 +137,7 @@ LiveView::LiveView(Setup setup)
         }
         plan.version = ++version_;
         plans_version_ = version_;
-      });
+      }, comm::EndpointKind::Watch);
   readers_->planned =
       std::make_unique<comm::Reader<msgs::PlannedRoute>>(*participant_, comm::topic::kPlanned, [this](msgs::PlannedRoute&& p) {
         // A cover division's route (its region) or a mapf plan's path; not the traffic layer's
@@ -151,7 +151,7 @@ LiveView::LiveView(Setup setup)
         planned.cells = cells_of(p.path_xy());
         planned.version = ++version_;
         routes_version_ = version_;
-      });
+      }, comm::EndpointKind::Watch);
 }
 
 LiveView::~LiveView() {

@@ -39,7 +39,9 @@ using WriterId = std::uint64_t;
 //   Data      - reliable, keep-all, volatile (swarm_writer / swarm_reader);
 //   Heartbeat - as Data, plus a 1 s MANUAL_BY_TOPIC liveliness lease (swarm_heartbeat_*): the
 //               lockstep Done messages, whose writer going quiet means the agent is lost.
-enum class EndpointKind : std::uint8_t { Data, Heartbeat };
+// Watch: a reader outside the run (swarm view), best effort, so that the run's reliable writers
+// neither resend to it nor wait for its acknowledgements; it may miss a sample.
+enum class EndpointKind : std::uint8_t { Data, Heartbeat, Watch };
 
 // What a bus needs to know about a message type, without naming it (pubsub_types.hpp makes one
 // per generated type).
