@@ -1,6 +1,6 @@
-// DARP division and STC coverage paths on the instances of ../shared/benchmarks/darp, side by side
-// with the reference Python implementation's figures on exactly those instances and starts (that
-// folder's README.md: github.com/alice-st/DARP, one thread, 2-core 2.3 GHz Xeon).
+// DARP division and STC coverage paths on the instances of data/darp, side by side with the
+// reference Python implementation's figures on exactly those instances and starts (data/README.md:
+// github.com/alice-st/DARP, one thread, 2-core 2.3 GHz Xeon).
 // Run: swarm bench darp [--benchmark_filter=terminal]   (data: $SWARM_BENCHMARKS_DIR/darp)
 //
 // Counters per benchmark:
@@ -40,7 +40,7 @@ struct Reference {
   int turns;       // sum over robots, best mode; 0 = not run
 };
 
-// ../shared/benchmarks/darp/README.md, "Reference figures".
+// data/README.md, "darp/".
 const std::map<std::string, Reference> kReference = {
     {"empty-50-4", {true, 51, 0.073, 0.82, 108 + 100 + 110 + 106}},
     {"empty-100-4", {true, 84, 0.21, 3.9, 214 + 200 + 226 + 212}},

@@ -149,7 +149,7 @@ TEST(DivisionRepair, RandomMapsAlwaysEndBalancedOrExplained) {
   EXPECT_GT(repaired, 0);  // the instances do defeat DARP's 100 iterations some of the time
 }
 
-// The shared DARP instances (../shared/benchmarks/darp): the reference fails three of the eight;
+// The DARP instances of data/darp: the reference fails three of the eight;
 // the default method converges on all of them.
 TEST(DivisionRepair, EverySharedInstanceConverges) {
   const std::string dir = swarm::test::benchmarks_dir() + "/darp/";

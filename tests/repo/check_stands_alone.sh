@@ -6,9 +6,8 @@
 #   tests/repo/check_stands_alone.sh [SOURCE_DIR]      (ctest: repo_stands_alone, label repo)
 #
 # Exit 1, printing FILE:LINE: what is wrong, when a tracked file
-#   1. names a path into the shared folder beside the checkout (".." then "/shared"), except its
-#      benchmarks/ folder: that is test data, not a document, which CMake looks for there and
-#      SWARM_BENCHMARKS_DIR moves (docs/design.md, "Test data outside the repository");
+#   1. names a path into the shared folder beside the checkout (".." then "/shared"); test data is
+#      in data/ (docs/design.md, "Test data");
 #   2. cites a Markdown file named DESIGN, PAPERS or STYLE (upper case, as the shared documents
 #      were) by a path that is not a file inside the repository, taken from the repository's root
 #      or from the citing file's folder.
@@ -29,7 +28,6 @@ fi
 cd "$root"
 
 shared_re='\.\./shared'
-allowed_re='\.\./shared/benchmarks'
 doc_re='[A-Za-z0-9_./-]*(DESIGN|PAPERS|STYLE)\.md'
 
 files=()
@@ -72,8 +70,8 @@ while IFS= read -r hit; do
   rest=${hit#*:}
   line=${rest%%:*}
   text=${rest#*:}
-  # Leave out the allowed folder, and document citations (check 2 reports those).
-  stripped=$(sed -E -e "s#${allowed_re}##g" -e "s#${shared_re}/${doc_re}##g" <<<"$text")
+  # Leave out document citations (check 2 reports those).
+  stripped=$(sed -E -e "s#${shared_re}/${doc_re}##g" <<<"$text")
   if grep -qE "$shared_re" <<<"$stripped"; then
     text=$(sed -E 's/^[[:space:]]+//' <<<"$text")
     [[ ${#text} -gt 120 ]] && text="${text:0:117}..."

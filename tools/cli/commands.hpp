@@ -56,7 +56,7 @@ int view_command(const ViewOptions& options, std::ostream& out, std::ostream& er
 // casting rays/s, A*) and swarm-bench-mission (lockstep ticks/s of the default 11-process mission)
 // from `bin_dir`, one after the other; or the one suite named: planner, mission, tour (the tour GA,
 // exact orders, plowing and Group-k), mapf (the MAPF solvers on the MovingAI benchmark; minutes),
-// darp (DARP and STC on ../shared/benchmarks/darp beside the reference's figures).
+// darp (DARP and STC on data/darp beside the reference's figures).
 // 0 when they ran, 1 when one failed, 2 when one is not built.
 int bench_command(const std::string& bin_dir, const std::vector<std::string>& args,
                   std::ostream& err);

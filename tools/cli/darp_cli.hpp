@@ -15,7 +15,7 @@ inline CLI::App* add_darp_flags(CLI::App& app, DarpOptions& o) {
       "darp", "Divide a map among robots (DARP) and plan their coverage paths (STC): a picture and numbers");
   c->add_option("--map", o.map, "Built-in map, map_server YAML or MovingAI .map")->required();
   c->add_option("--robots", o.robots, "Robot cells \"x,y;x,y\" (x = column, y = row from the top)");
-  c->add_option("--robots-file", o.robots_file, "One \"x y\" line per robot (as ../shared/benchmarks/darp)");
+  c->add_option("--robots-file", o.robots_file, "One \"x y\" line per robot (as data/darp)");
   c->add_option("--count", o.count, "Place N robots (with --placement and --seed)");
   c->add_option("--placement", o.placement, "spread | bunched")->capture_default_str();
   c->add_option("--seed", o.seed, "Placement and DARP random factors")->capture_default_str();

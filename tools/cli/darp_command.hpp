@@ -2,7 +2,7 @@
 // robots in, a picture and numbers out (planner/coverage/darp.hpp, planner/coverage/stc.hpp, planner/coverage/coverage_plan.hpp).
 //
 //   swarm darp --map terminal --count 6 --placement bunched --seed 3 --init bfs-kmeans
-//   swarm darp --map ../shared/benchmarks/darp/terminal-6.map --robots-file ../shared/benchmarks/darp/terminal-6.robots
+//   swarm darp --map data/darp/terminal-6.map --robots-file data/darp/terminal-6.robots
 //   swarm darp --map my_building.yaml --robots "10,12;40,30" --distance geodesic --out runs/d
 //
 // Coordinates (robots in, paths and assignment out) are the input file's own: x = column, y = row

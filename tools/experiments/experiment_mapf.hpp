@@ -31,7 +31,7 @@ struct MapfExperimentOptions {
   int runs = 10;                             // (a): random instances per robot count (paper: 100)
   double cbs_limit_s = 10;                   // (a): time limit of every solver (paper's CBS: 600)
   std::vector<std::string> paper_solvers = {"cbs", "ga", "ga1", "ecbs", "lacam"};
-  std::string movingai_dir = "../shared/benchmarks/movingai";  // (b)
+  std::string movingai_dir = "data/movingai";  // (b)
   std::vector<std::string> maps;             // (b): map stems; empty = every .map in the folder
   std::vector<int> agents = {10, 20, 30, 40, 50, 100};  // (b): agent counts
   int scenarios = 5;                         // (b): random-1 .. random-N

@@ -1,5 +1,5 @@
-// Where tests find data: the team's MovingAI benchmark maps in shared/benchmarks beside the
-// checkout (set at configure time; $SWARM_BENCHMARKS_DIR overrides), and the source tree's own
+// Where tests find data: the MovingAI benchmark maps and DARP instances in data/ (set at configure
+// time; $SWARM_BENCHMARKS_DIR overrides), and the source tree's own
 // files (built-in maps, scenarios).
 #pragma once
 

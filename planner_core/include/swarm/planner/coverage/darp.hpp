@@ -27,7 +27,7 @@
 // best division seen (fewest split regions, then smallest max |k_r - s_r|).
 //
 // Overflow. The reference multiplies float64 metrics forever and overflows after ~20,000
-// iterations (../shared/benchmarks/darp/README.md). Here every metric is kept as its logarithm,
+// iterations (data/README.md). Here every metric is kept as its logarithm,
 // so the multiplications are additions (of log m_r, C_r and u), and after every update all the
 // values of a cell are shifted by the same amount, that cell's smallest value: which robot is
 // cheapest at a cell never depends on such a shift, and every cell's values then hold only the
