@@ -5,12 +5,21 @@ function(swarm_target_defaults target)
   # -ffp-contract=off: no fused multiply-add, so floating-point results (K-Means, RNG draws) are
   # bit-identical on x86 and ARM; lockstep determinism promises that.
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wno-unused-parameter -ffp-contract=off)
+  # A folder may lower Release's -O3 (SWARM_RELEASE_OPT, set in its CMakeLists.txt): the algorithms
+  # (planner_core, comm) and the benchmarks keep -O3; the roles' glue takes -O2, and the tests and
+  # the command line -O1, which compile in a third less time and run as fast where it matters
+  # (their loops are the libraries'). Other build types keep their own flags.
+  if(SWARM_RELEASE_OPT)
+    target_compile_options(${target} PRIVATE $<$<CONFIG:Release>:-O${SWARM_RELEASE_OPT}>)
+  endif()
 endfunction()
 
-# swarm_add_gtest(NAME <name> SOURCES <files...> LIBS <targets...> [LABELS <labels...>])
-# One GoogleTest executable registered with ctest; tests are discovered at build time.
+# swarm_add_gtest(NAME <name> SOURCES <files...> LIBS <targets...> [LABELS <labels...>] [COST <n>])
+# One GoogleTest executable registered with ctest; tests are discovered at build time. COST: what
+# ctest schedules first when it has no timings yet (a clean clone): the longest tests, so that
+# they do not end the run alone.
 function(swarm_add_gtest)
-  cmake_parse_arguments(T "" "NAME;TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
+  cmake_parse_arguments(T "" "NAME;TIMEOUT;COST" "SOURCES;LIBS;LABELS" ${ARGN})
   add_executable(${T_NAME} ${T_SOURCES})
   swarm_target_defaults(${T_NAME})
   target_link_libraries(${T_NAME} PRIVATE ${T_LIBS} swarm::test_support GTest::gtest GTest::gtest_main)
@@ -21,6 +30,9 @@ function(swarm_add_gtest)
   if(NOT T_TIMEOUT)
     set(T_TIMEOUT 120)
   endif()
+  if(NOT T_COST)
+    set(T_COST 0)
+  endif()
   gtest_discover_tests(${T_NAME} TEST_LIST ${T_NAME}_TESTS DISCOVERY_TIMEOUT 30)
   # gtest_discover_tests flattens list-valued PROPERTIES (LABELS "unit;dds" would become the
   # words "unit dds", i.e. label unit and a stray argument), so labels and timeout are set from a
@@ -28,7 +40,7 @@ function(swarm_add_gtest)
   set(props ${CMAKE_CURRENT_BINARY_DIR}/${T_NAME}_properties.cmake)
   file(WRITE ${props}
        "foreach(t IN LISTS ${T_NAME}_TESTS)\n"
-       "  set_tests_properties(\"\${t}\" PROPERTIES LABELS \"${T_LABELS}\" TIMEOUT ${T_TIMEOUT})\n"
+       "  set_tests_properties(\"\${t}\" PROPERTIES LABELS \"${T_LABELS}\" TIMEOUT ${T_TIMEOUT} COST ${T_COST})\n"
        "endforeach()\n")
   set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${props})
 endfunction()

@@ -28,7 +28,10 @@ if [[ -n $prepare_pid ]] && ! wait "$prepare_pid"; then
   # Not fatal here: the deploy tests make what is missing themselves and report the failure.
   echo "test.sh: preparing the deploy base image failed (see $prepare_log); the deploy tests retry" >&2
 fi
-(cd build && ctest --output-on-failure --timeout 600 -j "${SWARM_TEST_JOBS:-2}" "$@")
+# Three at a time on 2 cores: most tests wait on DDS round trips, real time or Docker more than
+# they compute (at -j 2 the cores were about a third busy), and every lockstep run counts ticks,
+# not seconds; the deploy chain, the longest, starts first (tests/deploy/CMakeLists.txt).
+(cd build && ctest --output-on-failure --timeout 600 -j "${SWARM_TEST_JOBS:-3}" "$@")
 if (($# == 0)) && [[ ${SWARM_SKIP_FUZZ:-0} != 1 ]]; then
   scripts/fuzz.sh --smoke
 fi

@@ -31,11 +31,12 @@
 
 #include "swarm/comm/participant.hpp"
 #include "swarm/config/scenario.hpp"
+#include "swarm_test/domains.hpp"
 
 namespace swarm::comm {
 namespace {
 
-constexpr int kDomain = 47;
+constexpr int kDomain = swarm::test::domain::kLockstep;
 // Agent ids of Topology(1, 2): robot 0 leads group 0, robot 1 is its member.
 constexpr AgentId kLeader = 0;
 constexpr AgentId kMember = 1;

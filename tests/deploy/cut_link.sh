@@ -18,10 +18,7 @@ net=$(docker network ls -q --filter "label=com.docker.compose.project=$project" 
 net_name=$(docker network inspect -f '{{.Name}}' "$net")
 address() { docker inspect -f "{{with index .NetworkSettings.Networks \"$net_name\"}}{{.IPAddress}}{{end}}" "$cid"; }
 
-for _ in $(seq 120); do
-  docker logs "$gcs" 2>&1 | grep -Eq '^tick +([4-9][0-9]|[0-9]{3,}) ' && break
-  sleep 0.5
-done
+bash "$(dirname "$0")/wait_for_tick.sh" 40
 before=$(address)
 start=$SECONDS
 docker network disconnect "$net" "$cid"

@@ -7,7 +7,7 @@
 # Usage: kill_robots.sh SOURCE_DIR BIN_DIR OUT_DIR
 set -euo pipefail
 src=$1 bin=$2 out=$3
-kill_cmd='sleep 8; docker kill $(docker ps -q --filter label=com.docker.compose.project=$COMPOSE_PROJECT_NAME --filter label=com.docker.compose.service=member-1-2) $(docker ps -q --filter label=com.docker.compose.project=$COMPOSE_PROJECT_NAME --filter label=com.docker.compose.service=leader-2)'
+kill_cmd="bash '$src/tests/deploy/wait_for_tick.sh' 20; "'docker kill $(docker ps -q --filter label=com.docker.compose.project=$COMPOSE_PROJECT_NAME --filter label=com.docker.compose.service=member-1-2) $(docker ps -q --filter label=com.docker.compose.project=$COMPOSE_PROJECT_NAME --filter label=com.docker.compose.service=leader-2)'
 rc=0
 bash "$src/deploy/compose-test.sh" --prebuilt "$bin" --image swarm:ctest \
   --scenario "$src/scenarios/deploy_faults.pbtxt" --out "$out" \

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The GCS's container dies mid-mission and is started again: `docker kill` of the gcs container
-# 8 s into the real-time mission, `docker start` of the same container 3 s later. Its entrypoint
+# once the real-time mission has reached tick 20, `docker start` of the same container 3 s later. Its entrypoint
 # sees the run's journal on the results volume and starts swarm-gcs with --resume: it replays the
 # journal, the simulator admits it back, the leaders send it what it missed, and the mission
 # completes; metrics.json (written by the new process) records the restart.
@@ -8,7 +8,7 @@
 set -euo pipefail
 src=$1 bin=$2 out=$3
 gcs='$(docker ps -aq --filter label=com.docker.compose.project=$COMPOSE_PROJECT_NAME --filter label=com.docker.compose.service=gcs)'
-restart_cmd="sleep 8; docker kill $gcs; sleep 3; docker start $gcs"
+restart_cmd="bash '$src/tests/deploy/wait_for_tick.sh' 20; docker kill $gcs; sleep 3; docker start $gcs"
 rc=0
 bash "$src/deploy/compose-test.sh" --prebuilt "$bin" --image swarm:ctest \
   --scenario "$src/scenarios/deploy_faults.pbtxt" --out "$out" --after-up "$restart_cmd" || rc=$?

@@ -18,6 +18,7 @@
 #include "swarm/comm/endpoint.hpp"
 #include "swarm/comm/participant.hpp"
 #include "swarm/config/scenario.hpp"
+#include "swarm_test/domains.hpp"
 
 namespace swarm::test {
 namespace {
@@ -62,14 +63,14 @@ RogueView run_with_a_rogue(const std::string& name, const std::string& flags, in
 }
 
 TEST(Security, ARogueParticipantSeesNothingOfASecureRun) {
-  const RogueView secure = run_with_a_rogue("secure", "--secure", 44);
+  const RogueView secure = run_with_a_rogue("secure", "--secure", domain::kSecureRogue);
   EXPECT_EQ(secure.clock_samples, 0);
   EXPECT_EQ(secure.matched_writers, 0);
   EXPECT_EQ(secure.matched_readers, 0);
   EXPECT_TRUE(std::filesystem::exists(std::string(SWARM_TEST_RUNS_DIR) + "/secure/run/security/gcs.pem"));
 
   // The control: without --secure the same rogue reads the clock.
-  const RogueView open = run_with_a_rogue("insecure", "--discovery simple", 45);
+  const RogueView open = run_with_a_rogue("insecure", "--discovery simple", domain::kOpenRogue);
   EXPECT_GT(open.clock_samples, 0);
   EXPECT_GT(open.matched_writers, 0);
 }
@@ -80,7 +81,7 @@ TEST(Security, EachRoleLogsEveryPeerItAuthenticated) {
   const std::string dir = fresh_dir("secure-log");
   ::setenv("SWARM_DDS_LOG", "security", 1);
   const CommandResult r = run_swarm("run --secure --map small --groups 1 --robots-per-group 2 --max-ticks 20 "
-                                    "--domain 46 --partition secure-log --out " + dir + "/run");
+                                    "--domain " + std::to_string(domain::kSecureLog) + " --partition secure-log --out " + dir + "/run");
   ::unsetenv("SWARM_DDS_LOG");
   ASSERT_EQ(r.exit_code, 3) << r.output;  // ran to its 20 ticks: incomplete, as meant
   const std::vector<std::string> roles = {"sim", "gcs", "leader-0", "member-0-1"};
