@@ -254,6 +254,7 @@ bool GcsNode::step(const msgs::Clock& clock) {
   tally.set_progress_done(clock.tally().progress_done());
   tally.set_progress_total(clock.tally().progress_total());
   for (const std::uint64_t b : clock.sent_bytes()) tally.add_sent_bytes(b);
+  for (const std::int16_t v : clock.tally().objects()) tally.add_objects(v);
   record_.append(poses);
   record_events(clock);
 

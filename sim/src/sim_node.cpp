@@ -112,6 +112,7 @@ msgs::RunTally SimNode::tally() const {
   const Progress p = phases_.back().judge_part->progress(world_);
   t.progress_done(static_cast<std::uint32_t>(p.done));
   t.progress_total(static_cast<std::uint32_t>(p.total));
+  for (const int v : p.objects) t.objects().push_back(static_cast<std::int16_t>(v));
   return t;
 }
 

@@ -251,4 +251,14 @@ std::vector<std::uint32_t> World::carried_by(int robot) const {
   return out;
 }
 
+std::vector<int> World::object_states() const {
+  std::vector<int> out;
+  out.reserve(objects_.size() * 3);
+  for (const Object& o : objects_) {
+    const Cell at = o.carrier >= 0 ? robots_[static_cast<std::size_t>(o.carrier)] : o.cell;
+    out.insert(out.end(), {at.x, at.y, o.delivered ? kDelivered : o.carrier >= 0 ? o.carrier : kLying});
+  }
+  return out;
+}
+
 }  // namespace swarm::sim

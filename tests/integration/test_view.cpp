@@ -24,6 +24,7 @@
 #include "run_swarm.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/record/record.hpp"
+#include "swarm_test/domains.hpp"
 #include "swarm_test/files.hpp"
 
 extern char** environ;
@@ -200,6 +201,18 @@ std::array<int, 3> rgb_at(const cv::Mat& png, double x, double y) {
   return {p[2], p[1], p[0]};
 }
 
+// Headless Chromium's screenshot of the page on `port` with `query` (600 x 400), read back; empty
+// if it failed (its output in DIR/chromium.log).
+cv::Mat screenshot(int port, const std::string& query, const std::string& dir, const std::string& name) {
+  const std::string png = dir + "/" + name + ".png";
+  const std::string chromium = "chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars "
+                               "--window-size=600,400 --virtual-time-budget=5000 --screenshot=" + png +
+                               " 'http://127.0.0.1:" + std::to_string(port) + "/?" + query + "' > " + dir +
+                               "/chromium.log 2>&1";
+  if (std::system(chromium.c_str()) != 0) return {};
+  return cv::imread(png, cv::IMREAD_COLOR);
+}
+
 TEST(View, TheReplayPageDrawsTheRobotsAndTheWallsWhereTheRecordHasThem) {
   ASSERT_EQ(::access("/usr/bin/chromium", X_OK), 0) << "chromium is missing: run scripts/install-deps.sh";
   const std::string dir = fresh_dir("view_replay");
@@ -226,15 +239,9 @@ TEST(View, TheReplayPageDrawsTheRobotsAndTheWallsWhereTheRecordHasThem) {
   EXPECT_NE(taken.output.find("cannot listen on 127.0.0.1:" + std::to_string(port)), std::string::npos) << taken.output;
 
   const int scale = 16;
-  const std::string png = dir + "/view.png";
-  const std::string url = "http://127.0.0.1:" + std::to_string(port) + "/?tick=" + std::to_string(poses->tick()) +
-                          "&scale=" + std::to_string(scale) + "&labels=0&routes=0&frontiers=0&truth=1";
-  const std::string chromium = "chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars "
-                               "--window-size=600,400 --virtual-time-budget=5000 --screenshot=" + png + " '" + url +
-                               "' > " + dir + "/chromium.log 2>&1";
-  ASSERT_EQ(std::system(chromium.c_str()), 0) << "see " << dir << "/chromium.log";
-  const cv::Mat shot = cv::imread(png, cv::IMREAD_COLOR);
-  ASSERT_FALSE(shot.empty());
+  const std::string at_tick = "tick=" + std::to_string(poses->tick()) + "&scale=" + std::to_string(scale);
+  const cv::Mat shot = screenshot(port, at_tick + "&labels=0&routes=0&frontiers=0&truth=1", dir, "view");
+  ASSERT_FALSE(shot.empty()) << "see " << dir << "/chromium.log";
   ASSERT_GE(shot.cols, static_cast<int>(h.width()) * scale);
   ASSERT_GE(shot.rows, static_cast<int>(h.height()) * scale);
 
@@ -264,15 +271,8 @@ TEST(View, TheReplayPageDrawsTheRobotsAndTheWallsWhereTheRecordHasThem) {
     if (f.has_plan() && f.plan().tick() <= poses->tick()) plan_of[f.plan().group()] = &f.plan();
   }
   ASSERT_FALSE(plan_of.empty());
-  const std::string dots_png = dir + "/frontiers.png";
-  const std::string with_frontiers = "chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars "
-                                     "--window-size=600,400 --virtual-time-budget=5000 --screenshot=" + dots_png + " '" +
-                                     "http://127.0.0.1:" + std::to_string(port) + "/?tick=" + std::to_string(poses->tick()) +
-                                     "&scale=" + std::to_string(scale) + "&labels=0&routes=0&truth=1' > " + dir +
-                                     "/chromium.log 2>&1";
-  ASSERT_EQ(std::system(with_frontiers.c_str()), 0) << "see " << dir << "/chromium.log";
-  const cv::Mat dots = cv::imread(dots_png, cv::IMREAD_COLOR);
-  ASSERT_FALSE(dots.empty());
+  const cv::Mat dots = screenshot(port, at_tick + "&labels=0&routes=0&truth=1", dir, "frontiers");
+  ASSERT_FALSE(dots.empty()) << "see " << dir << "/chromium.log";
   std::map<int, int> claims;  // cell index -> how many groups' frontiers hold it
   for (const auto& [g, plan] : plan_of) {
     for (int k = 0; k + 1 < plan->group_frontiers_xy_size(); k += 2) ++claims[world.truth.index({plan->group_frontiers_xy(k), plan->group_frontiers_xy(k + 1)})];
@@ -312,14 +312,9 @@ TEST(View, TheReplayPageDrawsTheRobotsAndTheWallsWhereTheRecordHasThem) {
     routed_at = std::max(routed_at, f.route().tick());
   }
   ASSERT_FALSE(routed_groups.empty()) << "no cover routes in the record";
-  const std::string regions_png = dir + "/regions.png";
-  const std::string with_regions = "chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars "
-                                   "--window-size=600,400 --virtual-time-budget=5000 --screenshot=" + regions_png + " '" +
-                                   "http://127.0.0.1:" + std::to_string(port) + "/?tick=" + std::to_string(routed_at + 1) +
-                                   "&scale=" + std::to_string(scale) + "&labels=0&truth=1' > " + dir + "/chromium.log 2>&1";
-  ASSERT_EQ(std::system(with_regions.c_str()), 0) << "see " << dir << "/chromium.log";
-  const cv::Mat regions = cv::imread(regions_png, cv::IMREAD_COLOR);
-  ASSERT_FALSE(regions.empty());
+  const cv::Mat regions = screenshot(port, "tick=" + std::to_string(routed_at + 1) + "&scale=" + std::to_string(scale) +
+                                     "&labels=0&truth=1", dir, "regions");
+  ASSERT_FALSE(regions.empty()) << "see " << dir << "/chromium.log";
   for (const std::uint32_t g : routed_groups) {
     int tinted = 0;
     for (int y = 0; y < static_cast<int>(h.height()) * scale; ++y) {
@@ -436,8 +431,29 @@ int compare_status_with_record(const std::vector<std::pair<std::uint64_t, nlohma
     EXPECT_EQ(t.sent_bytes_size(), static_cast<int>(links.size()));
     if (t.sent_bytes_size() != static_cast<int>(links.size())) continue;
     for (std::size_t l = 0; l < links.size(); ++l) EXPECT_EQ(m["sent_bytes"][links[l]], t.sent_bytes(static_cast<int>(l))) << links[l];
+    EXPECT_EQ(m["objects"], nlohmann::json(std::vector<int>(t.objects().begin(), t.objects().end())));
   }
   return compared;
+}
+
+// `swarm run ARGS --out DIR/run --view` on `port`, followed over the protocol from its start to
+// its end, which must be exit 0 (a failure is reported and nothing is returned).
+Followed watch_whole_run(const std::string& dir, int port, std::vector<std::string> args) {
+  args.insert(args.begin(), "run");
+  args.insert(args.end(), {"--out", dir + "/run", "--view", "--view-port", std::to_string(port)});
+  BackgroundSwarm run(std::move(args), dir + "/run.log");
+  if (!run.started() || !wait_for(port)) {
+    ADD_FAILURE() << "no live view on port " << port << "; see " << dir << "/run.log";
+    return {};
+  }
+  WsClient ws(port);
+  Followed seen = follow(ws, std::numeric_limits<std::size_t>::max());
+  const int exit_code = run.wait();
+  if (exit_code != 0) {
+    ADD_FAILURE() << "the run exited " << exit_code << "; see " << dir << "/run.log";
+    return {};
+  }
+  return seen;
 }
 
 // The cells of a SceneUpdate entity's cubes or first line, by the map's frame.
@@ -457,6 +473,86 @@ std::vector<planner::Cell> entity_cells(const nlohmann::json& e, const record::H
 // `swarm run --view`: a client speaking Foxglove's protocol sees every robot where the record has
 // it at that tick, then goes away mid-run without a close; the run's record is byte for byte the
 // one of the same run unwatched.
+// A collect phase replayed: the simulator's tally gives each object's cell and holder every tick,
+// which the page draws: a gold diamond on each object's cell while it lies there, a small one on
+// the robot that carries it, nothing once it is delivered.
+TEST(View, TheReplayShowsEachObjectLyingCarriedOrGone) {
+  ASSERT_EQ(::access("/usr/bin/chromium", X_OK), 0) << "chromium is missing: run scripts/install-deps.sh";
+  const std::string dir = fresh_dir("view_objects");
+  const CommandResult run = run_swarm("run --map warehouse-5x8 --mission collect --out " + dir + "/run");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto frames = record::read_record(dir + "/run/run.pb");
+  const record::Header& h = frames.front().header();
+  const record::Poses* first = nullptr;    // the phase's first tick: every object lying
+  const record::Poses* carried = nullptr;  // the first tick a robot carries one
+  const record::Poses* last = nullptr;     // the last tick: every object delivered
+  for (const auto& f : frames) {
+    if (!f.has_poses() || f.poses().tally().objects_size() == 0) continue;
+    const record::Poses& p = f.poses();
+    const auto& o = p.tally().objects();
+    ASSERT_EQ(o.size() % 3, 0);
+    if (first == nullptr) first = &p;
+    for (int k = 0; k + 2 < o.size(); k += 3) {
+      if (o[k + 2] < 0) continue;
+      // Carried: on its robot's cell.
+      EXPECT_EQ(o[k], p.xy(2 * o[k + 2])) << "tick " << p.tick();
+      EXPECT_EQ(o[k + 1], p.xy(2 * o[k + 2] + 1)) << "tick " << p.tick();
+      if (carried == nullptr) carried = &p;
+    }
+    last = &p;
+  }
+  ASSERT_NE(first, nullptr) << "no tally has the objects";
+  ASSERT_NE(carried, nullptr) << "no object was ever carried";
+  for (int k = 0; k + 2 < first->tally().objects_size(); k += 3) EXPECT_EQ(first->tally().objects(k + 2), -1);
+  for (int k = 0; k + 2 < last->tally().objects_size(); k += 3) EXPECT_EQ(last->tally().objects(k + 2), -2) << "object " << k / 3;
+
+  const int port = 20000 + (::getpid() + 23) % 20000;
+  BackgroundSwarm viewer({"view", dir + "/run", "--view-port", std::to_string(port)}, dir + "/view.log");
+  ASSERT_TRUE(viewer.started());
+  ASSERT_TRUE(wait_for(port)) << "swarm view did not answer on port " << port;
+  const int scale = 16;
+  constexpr std::array<int, 3> kGold = {217, 166, 0};
+  const auto shot_at = [&](const record::Poses& p) {
+    return screenshot(port, "tick=" + std::to_string(p.tick()) + "&scale=" + std::to_string(scale) + "&labels=0&routes=0",
+                      dir, "objects-" + std::to_string(p.tick()));
+  };
+  const auto centre_of = [&](const cv::Mat& m, int x, int y) {
+    return rgb_at(m, (x + 0.5) * scale, (static_cast<int>(h.height()) - 1 - y + 0.5) * scale);
+  };
+  const auto robot_on = [](const record::Poses& p, int x, int y) {
+    for (int k = 0; k + 1 < p.xy_size(); k += 2) {
+      if (p.xy(k) == x && p.xy(k + 1) == y) return true;
+    }
+    return false;
+  };
+  const cv::Mat lying = shot_at(*first);
+  ASSERT_FALSE(lying.empty()) << "see " << dir << "/chromium.log";
+  for (int k = 0; k + 2 < first->tally().objects_size(); k += 3) {
+    const int x = first->tally().objects(k), y = first->tally().objects(k + 1);
+    if (!robot_on(*first, x, y)) EXPECT_EQ(centre_of(lying, x, y), kGold) << "object " << k / 3 << " at " << x << "," << y;
+  }
+  const cv::Mat picked = shot_at(*carried);
+  ASSERT_FALSE(picked.empty()) << "see " << dir << "/chromium.log";
+  const auto& now = carried->tally().objects();
+  for (int k = 0; k + 2 < now.size(); k += 3) {
+    if (now[k + 2] < 0) continue;
+    EXPECT_EQ(centre_of(picked, now[k], now[k + 1]), kGold) << "carried object " << k / 3;
+    // Where it lay, nothing gold, unless another object still lies there.
+    const int x0 = first->tally().objects(k), y0 = first->tally().objects(k + 1);
+    bool other = false;
+    for (int j = 0; j + 2 < now.size(); j += 3) other = other || (j != k && now[j] == x0 && now[j + 1] == y0 && now[j + 2] == -1);
+    if (!other && !robot_on(*carried, x0, y0)) EXPECT_NE(centre_of(picked, x0, y0), kGold) << "object " << k / 3 << " still drawn where it lay";
+  }
+  const cv::Mat done = shot_at(*last);
+  ASSERT_FALSE(done.empty()) << "see " << dir << "/chromium.log";
+  int gold = 0;
+  for (int y = 0; y < done.rows; ++y) {
+    for (int x = 0; x < done.cols; ++x) gold += rgb_at(done, x, y) == kGold ? 1 : 0;
+  }
+  EXPECT_EQ(gold, 0) << "delivered objects are still drawn";
+  EXPECT_EQ(viewer.stop(), 0);
+}
+
 TEST(View, ALiveRunIsWatchedOverFoxglovesProtocolAndNotChangedByIt) {
   const std::string dir = fresh_dir("view_live");
   const CommandResult plain = run_swarm("run --map maze1 --seed 3 --out " + dir + "/plain");
@@ -558,15 +654,9 @@ TEST(View, TheLivePageDrawsTheMapAndEveryRobot) {
 // record's tallies, /routes the robots' routes on free cells, /frontiers the groups' frontiers.
 TEST(View, ALiveViewMarksARobotLostWhenItDies) {
   const std::string dir = fresh_dir("view_lost");
-  const int port = 20000 + (::getpid() + 11) % 20000;
-  BackgroundSwarm run({"run", "--map", "maze1", "--kill", "member-1-2@60", "--kill", "leader-2@40", "--out", dir + "/run",
-                       "--view", "--view-port", std::to_string(port)},
-                      dir + "/run.log");
-  ASSERT_TRUE(run.started());
-  ASSERT_TRUE(wait_for(port)) << "no live view on port " << port;
-  WsClient ws(port);
-  const Followed seen = follow(ws, std::numeric_limits<std::size_t>::max());  // until the run ends
-  ASSERT_EQ(run.wait(), 0) << "see " << dir << "/run.log";
+  const Followed seen = watch_whole_run(dir, 20000 + (::getpid() + 11) % 20000,
+                                        {"--map", "maze1", "--kill", "member-1-2@60", "--kill", "leader-2@40"});
+  ASSERT_FALSE(seen.tf.empty());
   ASSERT_GE(seen.robots.size(), 2U) << seen.tf.size() << " /tf, " << seen.log.size() << " /log, " << seen.status.size() << " /status frames";
   const nlohmann::json& last = seen.robots.back().second["entities"];
   for (const auto& e : last) {
@@ -622,15 +712,9 @@ TEST(View, ALiveViewMarksARobotLostWhenItDies) {
 // routes recorded are the traffic layer's windows, which /routes shows as route/NAME).
 TEST(View, ALiveViewShowsTheToursTheGcsPlanned) {
   const std::string dir = fresh_dir("view_plans");
-  const int port = 20000 + (::getpid() + 19) % 20000;
-  BackgroundSwarm run({"run", "--map", "warehouse-5x8", "--mission", "explore,cover", "--out", dir + "/run", "--view",
-                       "--view-port", std::to_string(port)},
-                      dir + "/run.log");
-  ASSERT_TRUE(run.started());
-  ASSERT_TRUE(wait_for(port)) << "no live view on port " << port;
-  WsClient ws(port);
-  const Followed seen = follow(ws, std::numeric_limits<std::size_t>::max());  // until the run ends
-  ASSERT_EQ(run.wait(), 0) << "see " << dir << "/run.log";
+  const Followed seen = watch_whole_run(dir, 20000 + (::getpid() + 19) % 20000,
+                                        {"--map", "warehouse-5x8", "--mission", "explore,cover"});
+  ASSERT_FALSE(seen.tf.empty());
   const auto frames = record::read_record(dir + "/run/run.pb");
   const record::Header& h = frames.front().header();
   const std::vector<std::string> names = record::robot_names(h);
@@ -656,7 +740,7 @@ TEST(View, ALiveViewShowsTheToursTheGcsPlanned) {
 TEST(View, AttachedToARunningSwarmItFollowsTheRobots) {
   const std::string dir = fresh_dir("view_attach");
   const int port = 20000 + (::getpid() + 13) % 20000;
-  const std::string domain = std::to_string(41 + ::getpid() % 8);  // 41..48: left to tests (run_launch.hpp)
+  const std::string domain = std::to_string(domain::kViewAttach);
   const std::string partition = "view-attach-" + std::to_string(::getpid());
   const std::string scenario = source_path("scenarios/default.pbtxt");
   BackgroundSwarm viewer({"view", "--attach", "--scenario", scenario, "--domain", domain, "--partition", partition,
@@ -687,7 +771,7 @@ TEST(View, AttachedToARunningSwarmItFollowsTheRobots) {
 TEST(View, ASecureRunIsWatchedWithAReadOnlyCertificate) {
   const std::string dir = fresh_dir("view_secure");
   const int port = 20000 + (::getpid() + 17) % 20000;
-  const std::string domain = std::to_string(41 + (::getpid() + 3) % 8);  // 41..48: left to tests (run_launch.hpp)
+  const std::string domain = std::to_string(domain::kViewSecure);
   const std::string partition = "view-secure-" + std::to_string(::getpid());
   // Real time, so that the attached viewer (which starts once the run's certificates exist) sees it.
   BackgroundSwarm run({"run", "--map", "maze1", "--secure", "--realtime", "--tick-ms", "100", "--domain", domain,

@@ -274,6 +274,7 @@ TEST(WorldCollect, PickDeliverAndWrongDrop) {
   // Both picked at (1, 0) and (2, 0); at (3, 0) type 0 is delivered and type 1 dropped there (its
   // destination is (5, 0)); at (4, 0) nothing is carried any more.
   EXPECT_EQ(w.collect().objects, 2);
+  EXPECT_EQ(w.object_states(), (std::vector<int>{3, 0, World::kDelivered, 3, 0, World::kLying}));
   EXPECT_EQ(w.collect().picked, 2);
   EXPECT_EQ(w.collect().delivered, 1);
   EXPECT_EQ(w.collect().wrong_drops, 1);
@@ -288,14 +289,21 @@ TEST(WorldCollect, ALostRobotsLoadLiesBesideItForAnotherToDeliver) {
   World w(open_room(3, 2), {{0, 0}, {2, 1}}, kLidar);
   w.set_motion(swarm::planner::MotionModel::eight());
   w.set_objects({{{1, 0}, 0}}, {{0, 1}});
+  EXPECT_EQ(w.object_states(), (std::vector<int>{1, 0, World::kLying}));
   w.command(0, 1, {{0, 0}, {1, 0}}, {1}, {});
   w.move();
   EXPECT_EQ(w.collect().picked, 1);
+  EXPECT_EQ(w.object_states(), (std::vector<int>{1, 0, 0}));  // carried by robot 0, on its cell
   // Robot 0 is lost on (1, 0): its load goes to the first free cell beside it no robot holds.
   EXPECT_EQ(swarm::planner::put_down_cell(w.truth(), {1, 0}, w.robots()), (Cell{0, 0}));
   w.put_down(0);
+  EXPECT_EQ(w.object_states(), (std::vector<int>{0, 0, World::kLying}));
   w.command(1, 2, {{2, 1}, {1, 1}, {0, 0}, {0, 1}}, {2}, {3});
-  for (int k = 0; k < 3; ++k) w.move();
+  w.move();
+  w.move();
+  EXPECT_EQ(w.object_states(), (std::vector<int>{0, 0, 1}));  // robot 1 picked it up at (0, 0)
+  w.move();
+  EXPECT_EQ(w.object_states(), (std::vector<int>{0, 1, World::kDelivered}));
   EXPECT_EQ(w.collect().picked, 2);
   EXPECT_EQ(w.collect().delivered, 1);
   EXPECT_EQ(w.collect().wrong_drops, 0);

@@ -67,3 +67,40 @@ TEST(TextTable, AlignsColumnsCountingUtf8Characters) {
             "  baseline        208.0 ± 3.0\n");
   EXPECT_EQ(display_width("± ↔"), 3u);
 }
+
+TEST(Stats, StudentsTQuantileFromTheTableAndBeyondIt) {
+  EXPECT_DOUBLE_EQ(t_quantile_975(1), 12.706);
+  EXPECT_DOUBLE_EQ(t_quantile_975(4), 2.776);
+  EXPECT_DOUBLE_EQ(t_quantile_975(30), 2.042);
+  // Published values: 2.040 (31), 2.021 (40), 2.000 (60), 1.980 (120).
+  EXPECT_NEAR(t_quantile_975(31), 2.040, 1e-3);
+  EXPECT_NEAR(t_quantile_975(40), 2.021, 1e-3);
+  EXPECT_NEAR(t_quantile_975(60), 2.000, 1e-3);
+  EXPECT_NEAR(t_quantile_975(120), 1.980, 1e-3);
+  EXPECT_TRUE(std::isnan(t_quantile_975(0)));
+}
+
+TEST(Stats, APairedDifferenceWithItsConfidenceInterval) {
+  // Differences 2, 3, 1, 3, 1: mean 2, sample std 1, standard error 1 / sqrt 5 = 0.44721; t(4) =
+  // 2.776, so 2 +- 1.24146 = [0.75854, 3.24146]; of the reference's mean 11: 18.18 % [6.896, 29.468].
+  const PairedDifference d = paired_difference({12, 15, 11, 14, 13}, {10, 12, 10, 11, 12});
+  EXPECT_EQ(d.n, 5u);
+  EXPECT_DOUBLE_EQ(d.mean, 2.0);
+  EXPECT_NEAR(d.low, 0.75854, 1e-4);
+  EXPECT_NEAR(d.high, 3.24146, 1e-4);
+  EXPECT_NEAR(d.mean_pct, 18.1818, 1e-4);
+  EXPECT_NEAR(d.low_pct, 6.8958, 1e-3);
+  EXPECT_NEAR(d.high_pct, 29.4678, 1e-3);
+  EXPECT_TRUE(d.significant);
+  EXPECT_EQ(format_paired_pct(d), "+18.2 % [+6.9, +29.5]");
+  // Differences 1, -1, 2, -2: mean 0, the interval around it; not significant.
+  const PairedDifference none = paired_difference({11, 9, 12, 8}, {10, 10, 10, 10});
+  EXPECT_DOUBLE_EQ(none.mean, 0.0);
+  EXPECT_LT(none.low, 0.0);
+  EXPECT_GT(none.high, 0.0);
+  EXPECT_FALSE(none.significant);
+  EXPECT_EQ(format_paired_pct(none).substr(format_paired_pct(none).size() - 7), " (n.s.)");
+  // One pair, or unpaired lists: no interval.
+  EXPECT_EQ(format_paired_pct(paired_difference({1}, {2})), "-");
+  EXPECT_EQ(format_paired_pct(paired_difference({1, 2}, {2})), "-");
+}

@@ -105,6 +105,7 @@ McapExport export_mcap(const std::vector<record::Frame>& frames, const config::W
         status.progress_done = t.progress_done();
         status.progress_total = t.progress_total();
         status.sent_bytes.assign(t.sent_bytes().begin(), t.sent_bytes().end());
+        status.objects.assign(t.objects().begin(), t.objects().end());
         channels.send("/status", kStatusSchemaName, ns, status_message(status));
       }
       if (truth == nullptr || beams <= 0) continue;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 
 namespace swarm::tools {
@@ -54,6 +55,48 @@ std::string format_percent_change(const std::optional<double>& pct) {
   // Never print "-0.0 %".
   const double v = std::fabs(*pct) < 0.05 ? 0.0 : *pct;
   std::snprintf(buf, sizeof buf, "%+.1f %%", v);
+  return buf;
+}
+
+double t_quantile_975(std::size_t df) {
+  static constexpr double kTable[] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
+                                      2.201,  2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086,
+                                      2.080,  2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
+  if (df == 0) return std::numeric_limits<double>::quiet_NaN();
+  if (df <= std::size(kTable)) return kTable[df - 1];
+  const double z = 1.959964, n = static_cast<double>(df);
+  const double z3 = z * z * z, z5 = z3 * z * z;
+  return z + (z3 + z) / (4 * n) + (5 * z5 + 16 * z3 + 3 * z) / (96 * n * n);
+}
+
+PairedDifference paired_difference(const std::vector<double>& values, const std::vector<double>& reference) {
+  PairedDifference d;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  d.mean = d.low = d.high = d.mean_pct = d.low_pct = d.high_pct = nan;
+  if (values.size() != reference.size() || values.size() < 2) return d;
+  std::vector<double> diff;
+  for (std::size_t i = 0; i < values.size(); ++i) diff.push_back(values[i] - reference[i]);
+  const Summary s = summarize(diff);
+  d.n = s.n;
+  const double half = t_quantile_975(s.n - 1) * s.std / std::sqrt(static_cast<double>(s.n));
+  d.mean = s.mean;
+  d.low = s.mean - half;
+  d.high = s.mean + half;
+  d.significant = d.low > 0 || d.high < 0;
+  const double base = summarize(reference).mean;
+  if (base != 0 && std::isfinite(base)) {
+    d.mean_pct = 100 * d.mean / base;
+    d.low_pct = 100 * d.low / base;
+    d.high_pct = 100 * d.high / base;
+  }
+  return d;
+}
+
+std::string format_paired_pct(const PairedDifference& d) {
+  if (d.n < 2 || !std::isfinite(d.low_pct)) return "-";
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%+.1f %% [%+.1f, %+.1f]%s", d.mean_pct, d.low_pct, d.high_pct,
+                d.significant ? "" : " (n.s.)");
   return buf;
 }
 

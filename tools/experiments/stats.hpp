@@ -31,6 +31,25 @@ struct Summary {
 // "29.45 % faster on average" is the mean of the per-map percent changes.
 [[nodiscard]] std::optional<double> mean_of(const std::vector<std::optional<double>>& values);
 
+// Student's t quantile 0.975 with `df` degrees of freedom (df >= 1): the half-width of a 95 %
+// confidence interval is this times the standard error. Exact to 3 decimals for df <= 30 (table),
+// within 0.001 beyond (Cornish-Fisher expansion around the normal quantile).
+[[nodiscard]] double t_quantile_975(std::size_t df);
+
+// A paired comparison: `values[i]` and `reference[i]` measured on the same seed (the same run but
+// for the setting compared). The mean of the differences with its 95 % confidence interval
+// (Student's t, n - 1 degrees of freedom), and the same as percent of the reference's mean.
+// `significant` when the interval excludes 0. n < 2 (or different lengths): no interval (NaN).
+struct PairedDifference {
+  std::size_t n = 0;
+  double mean = 0, low = 0, high = 0;                  // value - reference
+  double mean_pct = 0, low_pct = 0, high_pct = 0;      // of the reference's mean
+  bool significant = false;
+};
+[[nodiscard]] PairedDifference paired_difference(const std::vector<double>& values, const std::vector<double>& reference);
+// "+4.0 % [+0.3, +7.7]", with " (n.s.)" when the interval includes 0; "-" without an interval.
+[[nodiscard]] std::string format_paired_pct(const PairedDifference& d);
+
 // "368.0 ± 25.8" with `decimals` digits after the point; "-" when s.n == 0.
 [[nodiscard]] std::string format_mean_std(const Summary& s, int decimals);
 // "-40.3 %" / "+2.0 %" with one decimal; "-" for nullopt.

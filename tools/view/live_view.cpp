@@ -201,6 +201,7 @@ nlohmann::json LiveView::status_json() const {
   s.progress_done = tally_.progress_done();
   s.progress_total = tally_.progress_total();
   s.sent_bytes = sent_bytes_;
+  s.objects.assign(tally_.objects().begin(), tally_.objects().end());
   for (const bool b : lost_) s.lost_robots += b ? 1 : 0;
   return status_message(s);
 }

@@ -70,7 +70,8 @@ nlohmann::json status_schema() {
             {"edge_conflicts", integer},
             {"blocked_moves", integer},
             {"lost_robots", integer},
-            {"sent_bytes", bytes}}}};
+            {"sent_bytes", bytes},
+            {"objects", {{"type", "array"}, {"items", integer}}}}}};
 }
 
 nlohmann::json status_message(const StatusFacts& s) {
@@ -87,7 +88,8 @@ nlohmann::json status_message(const StatusFacts& s) {
           {"edge_conflicts", s.edge_conflicts},
           {"blocked_moves", s.blocked_moves},
           {"lost_robots", s.lost_robots},
-          {"sent_bytes", std::move(bytes)}};
+          {"sent_bytes", std::move(bytes)},
+          {"objects", s.objects}};
 }
 
 std::string event_text(TeamEvent e, const std::string& robot, int group, std::uint32_t tick) {
@@ -140,7 +142,8 @@ nlohmann::json replay_json(const std::vector<record::Frame>& frames, const plann
                                 {"blocked", t.blocked_moves()},
                                 {"done", t.progress_done()},
                                 {"total", t.progress_total()},
-                                {"bytes", std::vector<std::uint64_t>(t.sent_bytes().begin(), t.sent_bytes().end())}});
+                                {"bytes", std::vector<std::uint64_t>(t.sent_bytes().begin(), t.sent_bytes().end())},
+                                {"objects", xy_of(t.objects())}});
       }
     } else if (f.has_plan()) {
       const auto& p = f.plan();

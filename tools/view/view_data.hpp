@@ -8,7 +8,8 @@
 //    "routes": [{"tick", "phase", "robot", "xy": [...], "region": cells}],  // region > 0: a cover division's
 //    "plans":  [{"tick", "group", "frontiers": [x0, y0, ...], "segments": [x0, y0, ...]}],  // exploration
 //    "phases": [{"tick", "phase", "task", "ended", "complete"}],
-//    "tallies": [{"tick", "vertex", "edge", "blocked", "done", "total", "bytes": [per link class]}],
+//    "tallies": [{"tick", "vertex", "edge", "blocked", "done", "total", "bytes": [per link class],
+//                 "objects": [x, y, holder, ...]}],  // collect: each object's cell and carrier (-1 lying, -2 delivered)
 //    "events": [{"tick", "kind": "lost" | "back" | "take_over", "robot", "group"}],
 //    "links":  [link class names], "layout": mission_layout(world),
 //    "end":    {"tick", "complete"} | null}
@@ -41,7 +42,8 @@ namespace swarm::tools {
 
 // The live view's /status channel (JSON; not a Foxglove type, so Foxglove shows it as raw fields
 // and plots them): {"tick", "phase", "task", "settling", "progress_done", "progress_total",
-// "vertex_conflicts", "edge_conflicts", "blocked_moves", "lost_robots", "sent_bytes": {LINK: bytes}}.
+// "vertex_conflicts", "edge_conflicts", "blocked_moves", "lost_robots", "sent_bytes": {LINK: bytes},
+// "objects": [x, y, holder, ...]} (collect: each object's cell and carrier, -1 lying, -2 delivered).
 inline constexpr const char* kStatusSchemaName = "swarm.Status";
 [[nodiscard]] nlohmann::json status_schema();
 struct StatusFacts {
@@ -53,6 +55,7 @@ struct StatusFacts {
   std::uint32_t progress_done = 0, progress_total = 0;
   std::vector<std::uint64_t> sent_bytes;  // per comm::LinkClass
   int lost_robots = 0;
+  std::vector<int> objects;  // collect: x, y, holder per object (msgs::RunTally.objects)
 };
 [[nodiscard]] nlohmann::json status_message(const StatusFacts& s);
 

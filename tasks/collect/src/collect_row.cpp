@@ -20,7 +20,8 @@ class CollectJudge : public sim::PhaseJudge {
  public:
   explicit CollectJudge(CollectWorld world) : world_(std::move(world)) {}
   sim::Progress progress(const sim::World& world) const override {
-    return {static_cast<std::uint64_t>(world.collect().delivered), static_cast<std::uint64_t>(world.collect().objects)};
+    return {static_cast<std::uint64_t>(world.collect().delivered), static_cast<std::uint64_t>(world.collect().objects),
+            world.object_states()};
   }
   void start(sim::World& world, std::uint32_t tick) override {
     world.set_objects(world_.objects, world_.destinations);

@@ -36,9 +36,11 @@ struct PhaseFacts {
 };
 
 // A phase's work so far in its task's unit (cells, robots, objects); total 0 = not counted.
+// Collect also says where its objects are (World::object_states), so watchers see them picked.
 struct Progress {
   std::uint64_t done = 0;
   std::uint64_t total = 0;
+  std::vector<int> objects;
 };
 
 class PhaseJudge {

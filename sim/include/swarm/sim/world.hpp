@@ -102,6 +102,10 @@ class World {
   const CollectCounts& collect() const { return collect_; }
   // The numbers of the objects robot `robot` carries (what its gripper senses), ascending.
   std::vector<std::uint32_t> carried_by(int robot) const;
+  // Where each object is, for watchers: x, y and holder per object in order, the holder being the
+  // robot carrying it (then x, y are that robot's cell), kLying or kDelivered.
+  static constexpr int kLying = -1, kDelivered = -2;
+  std::vector<int> object_states() const;
   // Every robot performs its next action.
   void move();
   // Scans from the robot's cell and records what it saw in the explored map.
