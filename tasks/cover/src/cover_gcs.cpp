@@ -256,25 +256,12 @@ CoverGcsTask::Division CoverGcsTask::divide_by_tours(const GcsContext& ctx, cons
 std::pair<int, int> CoverGcsTask::rehearsed_ticks(const GcsContext& ctx, const std::vector<std::vector<Cell>>& routes,
                                                   const std::vector<int>& robots) const {
   const comm::Topology& t = ctx.setup.topology;
-  // As the layer plans (tasks/mapf/mapf_windows.cpp): the robots' cells free, everyone but
-  // `robots` standing still, every route cell a goal, the same windows and seed.
-  planner::OccupancyGrid map = known_;
-  std::vector<planner::traffic::Agent> agents(static_cast<std::size_t>(t.robots()));
+  // As the layer plans (tasks/mapf/mapf_windows.cpp): every route cell a goal, the same windows and seed.
   std::size_t longest = 0;
-  for (int r = 0; r < t.robots(); ++r) {
-    map.set(ctx.cell_of(r), planner::CellState::Free);
-    agents[static_cast<std::size_t>(r)].at = ctx.cell_of(r);
-    agents[static_cast<std::size_t>(r)].fixed = true;
-  }
-  for (const int r : robots) {
-    auto& a = agents[static_cast<std::size_t>(r)];
-    a.fixed = false;
-    a.goals = routes[static_cast<std::size_t>(r)];
-    longest = std::max(longest, a.goals.size());
-  }
+  for (const int r : robots) longest = std::max(longest, routes[static_cast<std::size_t>(r)].size());
   const int window = static_cast<int>(config_.traffic_window_steps());
   const planner::traffic::Rehearsal plan =
-      planner::traffic::rehearse(map, planner::MotionModel::four(), std::move(agents), window,
+      planner::traffic::rehearse(layer_map(ctx, known_), planner::MotionModel::four(), layer_agents(ctx, robots, routes), window,
                                  traffic_config(ctx.setup.world.scenario.seed(), phase_), 4 * static_cast<int>(longest) + 4 * window);
   if (!plan.finished) return {plan.makespan, plan.makespan};
   // A dependency's cost, from the robot waited for leaving to the other entering: the plan's own

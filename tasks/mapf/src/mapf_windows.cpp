@@ -21,6 +21,26 @@ planner::traffic::Config traffic_config(std::uint64_t seed, std::uint32_t phase)
   return planner::traffic::Config{planner::mix_seed({seed, 9100 + std::uint64_t{phase}})};
 }
 
+planner::OccupancyGrid layer_map(const GcsContext& ctx, planner::OccupancyGrid known) {
+  for (int r = 0; r < ctx.setup.topology.robots(); ++r) known.set(ctx.cell_of(r), planner::CellState::Free);
+  return known;
+}
+
+std::vector<planner::traffic::Agent> layer_agents(const GcsContext& ctx, const std::vector<int>& moving,
+                                                  const std::vector<std::vector<planner::Cell>>& goals) {
+  std::vector<planner::traffic::Agent> agents(static_cast<std::size_t>(ctx.setup.topology.robots()));
+  for (std::size_t r = 0; r < agents.size(); ++r) {
+    agents[r].at = ctx.cell_of(static_cast<int>(r));
+    agents[r].fixed = true;
+  }
+  for (const int r : moving) {
+    auto& agent = agents[static_cast<std::size_t>(r)];
+    agent.fixed = false;
+    agent.goals = goals[static_cast<std::size_t>(r)];
+  }
+  return agents;
+}
+
 MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, Lifelong lifelong)
     : config_(config),
       phase_(phase),
@@ -54,10 +74,7 @@ void MapfGcsTask::plan_window(GcsContext& ctx, const char* why) {
     sequences_.resize(static_cast<std::size_t>(t.robots()));
   }
   if (!traffic_ || map_grows_) {
-    // The robots stand on free cells whatever the known map says of them (a fused map may not
-    // have seen a cell under a robot).
-    planner::OccupancyGrid map = known_;
-    for (int r = 0; r < t.robots(); ++r) map.set(ctx.cell_of(r), planner::CellState::Free);
+    planner::OccupancyGrid map = layer_map(ctx, known_);
     if (traffic_) {
       traffic_->set_map(map);
     } else {
@@ -66,19 +83,13 @@ void MapfGcsTask::plan_window(GcsContext& ctx, const char* why) {
           traffic_config(ctx.setup.world.scenario.seed(), phase_));
     }
   }
-  std::vector<planner::traffic::Agent> agents(static_cast<std::size_t>(t.robots()));
-  for (int r = 0; r < t.robots(); ++r) {
-    agents[static_cast<std::size_t>(r)].at = ctx.cell_of(r);
-    agents[static_cast<std::size_t>(r)].fixed = true;
-  }
+  std::vector<std::vector<planner::Cell>> goals(sequences_.size());
   for (const int r : may_move) {
-    auto& agent = agents[static_cast<std::size_t>(r)];
-    agent.fixed = false;
-    for (const Stop& s : sequences_[static_cast<std::size_t>(r)]) agent.goals.push_back(s.cell);
+    for (const Stop& s : sequences_[static_cast<std::size_t>(r)]) goals[static_cast<std::size_t>(r)].push_back(s.cell);
   }
   planner::traffic::Window w;
   try {
-    w = traffic_->plan(agents, window_);
+    w = traffic_->plan(layer_agents(ctx, may_move, goals), window_);
   } catch (const std::invalid_argument& e) {
     failed_ = true;
     failure_ = std::string("no traffic window (") + why + "): " + e.what();

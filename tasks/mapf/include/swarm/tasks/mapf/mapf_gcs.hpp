@@ -62,6 +62,13 @@ inline constexpr std::int32_t kHoldStop = 1;
 // The traffic planner's settings for a phase of a run: one seed per phase, so that a rehearsal of
 // the layer (planner/traffic/rehearsal.hpp) plans what the driver will.
 planner::traffic::Config traffic_config(std::uint64_t seed, std::uint32_t phase);
+// What the layer plans a window on, from where the robots stand: `known` with every robot's cell
+// free (a fused map may not have seen a cell under a robot) ...
+planner::OccupancyGrid layer_map(const GcsContext& ctx, planner::OccupancyGrid known);
+// ... and every robot standing still at its cell but those in `moving`, each given its goals
+// (goals[r], in order). The driver plans with these, and a rehearsal must too to plan the same.
+std::vector<planner::traffic::Agent> layer_agents(const GcsContext& ctx, const std::vector<int>& moving,
+                                                  const std::vector<std::vector<planner::Cell>>& goals);
 // Order Work's first value for a window that continues a plan (see the contract above).
 inline constexpr std::int32_t kContinues = -1;
 
