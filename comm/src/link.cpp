@@ -41,6 +41,7 @@ std::uint32_t LinkSender::deliver_tick(LinkClass link, std::uint32_t tick, std::
   const LinkParams& p = table_[link];
   const std::uint32_t lag = from_clock_master ? 0 : 1;
   std::uint32_t ready = tick + lag;
+  last_queued_.reset();
   if (p.bandwidth_bytes_per_s > 0) {
     // Token bucket of one message: the link is busy until the previous message has gone out.
     double& busy = busy_until_s_[static_cast<int>(link)];
@@ -49,6 +50,7 @@ std::uint32_t LinkSender::deliver_tick(LinkClass link, std::uint32_t tick, std::
     // Acted on in the tick during which its last byte arrives (an unlimited link's message,
     // "arriving" at once, is acted on at tick + lag).
     const auto done_tick = static_cast<std::uint32_t>(std::ceil(busy / table_.tick_seconds - 1e-9));
+    last_queued_ = done_tick > ready ? done_tick - ready : 0;
     ready = std::max(ready, done_tick);
   }
   std::uint32_t jitter = 0;

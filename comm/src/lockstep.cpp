@@ -45,6 +45,7 @@ msgs::AgentReport Mailbox::make_report(const std::string& role, const std::strin
     t.received_bytes(c.received_bytes);
     t.lost_transmissions(c.lost_transmissions);
     t.dropped_messages(c.dropped_messages);
+    t.queued_ticks(c.queued_ticks);
     report.traffic().push_back(t);
   }
   return report;

@@ -2,15 +2,22 @@
 
 #include "swarm/comm/link.hpp"
 
+#include <algorithm>
+
 namespace swarm::comm {
 
 void TrafficAccount::sent(const std::string& family, const std::string& link, std::uint64_t bytes,
-                          std::size_t receivers) {
+                          std::size_t receivers, std::optional<std::uint32_t> queued) {
   std::lock_guard<std::mutex> lock(mutex_);
   TrafficCount& c = counts_[{family, link}];
   c.sent_messages += 1;
   c.addressed_messages += receivers;
   c.sent_bytes += bytes;
+  if (queued) {
+    const std::size_t bin = std::min<std::size_t>(*queued, kQueueBins - 1);
+    if (c.queued_ticks.size() <= bin) c.queued_ticks.resize(bin + 1, 0);
+    ++c.queued_ticks[bin];
+  }
 }
 
 void TrafficAccount::received(const std::string& family, const std::string& link, std::uint64_t bytes,

@@ -475,6 +475,8 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
       bl.bytes += tt.sent_bytes();
       bl.lost_transmissions += tt.lost_transmissions();
       bl.dropped_messages += tt.dropped_messages();
+      if (bl.queued_ticks.size() < tt.queued_ticks().size()) bl.queued_ticks.resize(tt.queued_ticks().size(), 0);
+      for (std::size_t d = 0; d < tt.queued_ticks().size(); ++d) bl.queued_ticks[d] += tt.queued_ticks()[d];
       m.traffic.total_messages += tt.sent_messages();
       m.traffic.total_bytes += tt.sent_bytes();
     }

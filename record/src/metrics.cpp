@@ -129,6 +129,18 @@ std::vector<std::pair<std::uint32_t, double>> curve_from(const json& j, const st
 
 }  // namespace
 
+std::optional<std::uint32_t> queue_quantile(const std::vector<std::uint64_t>& queued_ticks, double q) {
+  std::uint64_t total = 0;
+  for (const std::uint64_t n : queued_ticks) total += n;
+  if (total == 0) return std::nullopt;
+  std::uint64_t below = 0;
+  for (std::size_t d = 0; d < queued_ticks.size(); ++d) {
+    below += queued_ticks[d];
+    if (static_cast<double>(below) >= q * static_cast<double>(total)) return static_cast<std::uint32_t>(d);
+  }
+  return static_cast<std::uint32_t>(queued_ticks.size() - 1);
+}
+
 json to_json(const MotionNumbers& m) {
   json out = counts_json(m.total);
   out["vertex_conflict_events"] = m.vertex_conflict_events;
@@ -165,7 +177,10 @@ json to_json(const RunMetrics& m) {
     by_link[link] = {{"messages", l.messages},
                      {"bytes", l.bytes},
                      {"lost_transmissions", l.lost_transmissions},
-                     {"dropped_messages", l.dropped_messages}};
+                     {"dropped_messages", l.dropped_messages},
+                     {"queued_ticks", l.queued_ticks},
+                     {"queue_median_ticks", opt(queue_quantile(l.queued_ticks, 0.5))},
+                     {"queue_p95_ticks", opt(queue_quantile(l.queued_ticks, 0.95))}};
   }
   json rounds = json::array();
   for (const auto& [r, t] : m.rounds) rounds.push_back({{"round", r}, {"tick", t}});
@@ -300,7 +315,9 @@ RunMetrics metrics_from_json(const json& j, const std::string& source) {
   for (const auto& [link, l] : by_link.raw().items()) {
     const Fields lf(l, by_link.where() + "." + link);
     m.traffic.by_link[link] = {lf.get<std::uint64_t>("messages"), lf.get<std::uint64_t>("bytes"),
-                               lf.get<std::uint64_t>("lost_transmissions"), lf.get<std::uint64_t>("dropped_messages")};
+                               lf.get<std::uint64_t>("lost_transmissions"), lf.get<std::uint64_t>("dropped_messages"),
+                               lf.raw().contains("queued_ticks") ? lf.get<std::vector<std::uint64_t>>("queued_ticks")
+                                                                 : std::vector<std::uint64_t>{}};
   }
   const Fields total = traffic.object("total");
   m.traffic.total_messages = total.get<std::uint64_t>("messages");

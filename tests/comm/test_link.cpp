@@ -101,14 +101,24 @@ TEST(Link, BandwidthQueuesMessagesBehindEachOther) {
   table.tick_seconds = 0.2;
   table[LinkClass::MemberLeader].bandwidth_bytes_per_s = 100.0;
   LinkSender agent(table);
+  // What the cap added to each, beyond tick + 1: 1, 2 and 4 ticks.
   EXPECT_EQ(agent.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 0, false), 2u);
+  EXPECT_EQ(agent.last_queued_ticks(), 1u);
   EXPECT_EQ(agent.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 1, false), 3u);
+  EXPECT_EQ(agent.last_queued_ticks(), 2u);
   EXPECT_EQ(agent.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 2, false), 5u);
-  // Each link class has its own bucket: an unlimited class is not held up by the queue.
+  EXPECT_EQ(agent.last_queued_ticks(), 4u);
+  // Each link class has its own bucket: an unlimited class is not held up by the queue, and has
+  // no queue to report.
   EXPECT_EQ(agent.deliver_tick(LinkClass::LeaderGcs, 0, 30, kTopic, 0, false), 1u);
+  EXPECT_FALSE(agent.last_queued_ticks().has_value());
   // Once the queue has drained (0.9 s < tick 10 = 2.0 s) a message starts at its own tick:
-  // 2.0 + 0.3 = 2.3 s = 11.5 ticks -> boundary 12.
+  // 2.0 + 0.3 = 2.3 s = 11.5 ticks -> boundary 12, 1 tick after tick + 1.
   EXPECT_EQ(agent.deliver_tick(LinkClass::MemberLeader, 10, 30, kTopic, 3, false), 12u);
+  EXPECT_EQ(agent.last_queued_ticks(), 1u);
+  // A message small enough to be out within its tick waits for nothing: 10 B = 0.1 s at tick 20.
+  EXPECT_EQ(agent.deliver_tick(LinkClass::MemberLeader, 20, 10, kTopic, 4, false), 21u);
+  EXPECT_EQ(agent.last_queued_ticks(), 0u);
 
   LinkSender sim(table);
   EXPECT_EQ(sim.deliver_tick(LinkClass::MemberLeader, 0, 30, kTopic, 0, true), 2u);

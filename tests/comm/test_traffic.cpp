@@ -71,5 +71,19 @@ TEST(Traffic, ConcurrentCountingLosesNothing) {
   EXPECT_EQ(c.dropped_messages, 0u);
 }
 
+TEST(Traffic, ABandwidthCapsQueueIsCountedPerTicksWaited) {
+  TrafficAccount account;
+  account.sent("round", "leader_gcs", 100);  // uncapped: no histogram
+  for (const std::uint32_t waited : {0U, 0U, 2U, 5U, 500U}) account.sent("patch_gcs", "leader_gcs", 10, 1, waited);
+  const auto counts = account.snapshot();
+  EXPECT_TRUE(counts.at({"round", "leader_gcs"}).queued_ticks.empty());
+  const std::vector<std::uint64_t>& q = counts.at({"patch_gcs", "leader_gcs"}).queued_ticks;
+  ASSERT_EQ(q.size(), kQueueBins);  // 500 ticks lands in the last bin
+  EXPECT_EQ(q[0], 2u);
+  EXPECT_EQ(q[2], 1u);
+  EXPECT_EQ(q[5], 1u);
+  EXPECT_EQ(q[kQueueBins - 1], 1u);
+}
+
 }  // namespace
 }  // namespace swarm::comm

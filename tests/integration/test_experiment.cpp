@@ -48,7 +48,9 @@ TEST(ExperimentExplore, EveryRunCompletesAndReportRebuildsTheSameTableAndCsv) {
     EXPECT_TRUE(fs::exists(dir + "/" + f)) << f;
   }
   // A progress line per run, then the table.
-  EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '['), 6) << result.output;
+  std::size_t progress_lines = 0;
+  for (std::size_t at = result.output.find("/6] "); at != std::string::npos; at = result.output.find("/6] ", at + 1)) ++progress_lines;
+  EXPECT_EQ(progress_lines, 6U) << result.output;
   EXPECT_TRUE(contains(result.output, "6 runs: 6 ok (6 complete), 0 failed")) << result.output;
 
   const auto lines = split(slurp(dir + "/results.csv"), '\n');
@@ -57,7 +59,10 @@ TEST(ExperimentExplore, EveryRunCompletesAndReportRebuildsTheSameTableAndCsv) {
   const std::vector<std::string> expected = {
       "run", "map", "method", "seed", "status", "complete", "steps", "steps_to_99",
       "planning_rounds", "explored_percent", "ticks_run", "wall_seconds", "traffic_bytes",
-      "map_bytes", "map_bytes_per_robot_second", "log", "failure"};
+      "map_bytes", "map_bytes_per_robot_second", "radio_bytes", "sim_robot_on_robot_bytes", "leader_gcs_bytes", "leader_gcs_peak_bytes_per_s",
+      "leader_gcs_queue_median_ticks", "leader_gcs_queue_p95_ticks", "member_leader_bytes",
+      "member_leader_peak_bytes_per_s", "member_leader_queue_median_ticks", "member_leader_queue_p95_ticks", "log",
+      "failure"};
   EXPECT_EQ(header, expected);
   auto col = [&](const char* name) {
     return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
@@ -107,6 +112,53 @@ TEST(ExperimentExplore, EveryRunCompletesAndReportRebuildsTheSameTableAndCsv) {
   EXPECT_TRUE(contains(plain.output, "6 runs: 6 ok (6 complete), 0 failed")) << plain.output;
 }
 
+// A bandwidth experiment in small settings (map small, 2 seeds, the member<->leader link capped at
+// 1 and 1/8 of its mean demand): the uncapped runs run first and measure the demand, each capped
+// run gets its share of it, its messages queue, and the table names the knee. Every run writes its
+// traffic over time. `swarm report` rebuilds the same outputs.
+TEST(ExperimentBandwidth, CapsAreSetFromTheMeasuredDemandAndTheKneeIsNamed) {
+  const std::string dir = fresh_dir("experiment_bandwidth") + "/exp";
+  const CommandResult result =
+      run_swarm("experiment bandwidth --maps small --seeds 2 --jobs 2 --encodings ZSTD_RUN_LENGTH "
+                "--cap-links member_leader --cap-bases mean --cap-fractions 1,0.125 --scenario " +
+                source_path("scenarios/small.pbtxt") + " --out " + dir);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, "demand per sender, measured uncapped on small: member_leader mean ")) << result.output;
+  EXPECT_TRUE(contains(result.output, "knee, member_leader, small, group-frontier, ZSTD_RUN_LENGTH: ")) << result.output;
+  EXPECT_TRUE(contains(result.output, "6 runs: 6 ok")) << result.output;
+
+  const auto lines = split(slurp(dir + "/results.csv"), '\n');
+  ASSERT_EQ(lines.size(), 1u + 6u);
+  const auto header = split(lines[0], ',');
+  auto col = [&](const char* name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  int capped = 0;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    auto cells = split(lines[i], ',');
+    cells.resize(header.size());
+    EXPECT_EQ(cells[col("status")], "ok") << lines[i];
+    EXPECT_TRUE(fs::exists(dir + "/" + cells[col("run")] + "/traffic.csv")) << lines[i];
+    EXPECT_TRUE(fs::exists(dir + "/" + cells[col("run")] + "/traffic.png")) << lines[i];
+    EXPECT_FALSE(cells[col("member_leader_peak_bytes_per_s")].empty()) << lines[i];
+    if (cells[col("cap_link")].empty()) {
+      EXPECT_TRUE(cells[col("member_leader_queue_median_ticks")].empty()) << "uncapped runs queue nothing: " << lines[i];
+      continue;
+    }
+    ++capped;
+    EXPECT_EQ(cells[col("cap_link")], "member_leader");
+    EXPECT_GT(std::stod(cells[col("member_leader_bandwidth_bytes_per_s")]), 0) << lines[i];
+    EXPECT_FALSE(cells[col("member_leader_queue_p95_ticks")].empty()) << lines[i];
+  }
+  EXPECT_EQ(capped, 4);
+
+  const std::string out = dir + "/../report";
+  const CommandResult r = run_swarm("report " + dir + " --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(slurp(out + "/table.txt"), slurp(dir + "/table.txt"));
+  EXPECT_EQ(slurp(out + "/results.csv"), slurp(dir + "/results.csv"));
+}
+
 TEST(ExperimentBadInput, ExitsTwoSayingWhatIsAccepted) {
   const std::string dir = fresh_dir("experiment_bad_input");
   struct Case {
@@ -120,6 +172,9 @@ TEST(ExperimentBadInput, ExitsTwoSayingWhatIsAccepted) {
       {"experiment explore --seeds 0 --out " + dir + "/c", "--seeds 0"},
       {"experiment loss --seeds 0 --out " + dir + "/c", "--seeds 0"},
       {"experiment bandwidth --out /proc/swarm-cannot-write-here", "--out DIR"},
+      {"experiment bandwidth --cap-links radio --out " + dir + "/d", "--cap-links: unknown 'radio'; accepted: leader_gcs, member_leader"},
+      {"experiment bandwidth --cap-fractions 0 --out " + dir + "/d", "--cap-fractions 0.000: a share of the demand must be above 0"},
+      {"experiment bandwidth --encodings GZIP --out " + dir + "/d", "--encodings: unknown map encoding 'GZIP'"},
       {"report " + dir, "holds no runs"},
       {"report " + dir + "/missing", "is not a directory"},
       {"experiment", "A subcommand is required"},

@@ -25,13 +25,35 @@ TEST(Metrics, RoundTripsThroughJson) {
   m.motion.per_robot["leader-0"].blocked_moves = 2;
   m.motion.per_robot["leader-0"].longest_blocked_ticks = 5;
   m.phases[0].task = {{"planning_rounds", 18}};
+  m.traffic.by_link["leader_gcs"].queued_ticks = {3, 0, 1};
   const RunMetrics back = metrics_from_json(to_json(m), "test");
+  EXPECT_EQ(back.traffic.by_link.at("leader_gcs").queued_ticks, (std::vector<std::uint64_t>{3, 0, 1}));
   EXPECT_EQ(to_json(back), to_json(m));
   EXPECT_EQ(back.schema_version, kMetricsSchemaVersion);
   EXPECT_EQ(back.agents_lost[0].stopped_answering_at_tick, 99u);
   EXPECT_FALSE(back.agents_lost[0].rejoined_at_tick.has_value());
   EXPECT_EQ(back.motion.per_robot.at("leader-0").blocked_moves, 2u);
   EXPECT_EQ(back.motion.per_robot.at("leader-0").longest_blocked_ticks, 5u);
+}
+
+TEST(Metrics, QueueQuantilesOfAHistogramOfTicksWaited) {
+  // 10 messages: 5 waited 0 ticks, 3 waited 1, 1 waited 4, 1 waited 9. Half are within 0; 95 % (9.5
+  // messages) only within 9.
+  const std::vector<std::uint64_t> q = {5, 3, 0, 0, 1, 0, 0, 0, 0, 1};
+  EXPECT_EQ(queue_quantile(q, 0.5), 0u);
+  EXPECT_EQ(queue_quantile(q, 0.8), 1u);
+  EXPECT_EQ(queue_quantile(q, 0.9), 4u);
+  EXPECT_EQ(queue_quantile(q, 0.95), 9u);
+  EXPECT_FALSE(queue_quantile({}, 0.5).has_value());
+  EXPECT_FALSE(queue_quantile({0, 0}, 0.5).has_value());
+  // In metrics.json: null on an uncapped link.
+  RunMetrics m = swarm::test::run_metrics("maze1", "baseline", 7, 345, 18);
+  m.traffic.by_link["member_leader"] = {};
+  m.traffic.by_link["leader_gcs"].queued_ticks = q;
+  const nlohmann::json j = to_json(m)["traffic"]["by_link"];
+  EXPECT_TRUE(j["member_leader"]["queue_p95_ticks"].is_null());
+  EXPECT_EQ(j["leader_gcs"]["queue_median_ticks"], 0);
+  EXPECT_EQ(j["leader_gcs"]["queue_p95_ticks"], 9);
 }
 
 TEST(Metrics, AMissingKeyOrAnotherVersionIsNamed) {

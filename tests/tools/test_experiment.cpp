@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -11,6 +12,7 @@
 #include "swarm_test/files.hpp"
 #include "swarm_test/metrics_fixture.hpp"
 #include "experiment.hpp"
+#include "experiment_analysis.hpp"
 #include "experiment_command.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm_test/text.hpp"
@@ -94,7 +96,14 @@ TEST(ExperimentPlan, SweepsShareTheirZeroPoint) {
   EXPECT_EQ(lat.runs.size(), 5u + 4u - 1u);  // (0, 0) once
   EXPECT_EQ(lat.runs[1].dir, "runs/maze1-group-frontier-lg10-ml0-s1");
   const ExperimentPlan bw = make_plan(ExperimentKind::kBandwidth, {"maze1"}, {"group-frontier"}, 1, base, "");
-  EXPECT_EQ(bw.runs.size(), 3u + 4u - 1u);  // the default encoding uncapped: shared by both parts
+  // The encodings uncapped (the default one shared by both parts), then 2 links x 2 bases x 5 shares.
+  EXPECT_EQ(bw.runs.size(), 3u + 20u);
+  EXPECT_EQ(std::count_if(bw.runs.begin(), bw.runs.end(), [](const ExperimentRun& r) { return r.setting.waits_for_demand(); }), 20);
+  EXPECT_EQ(bw.runs[3].dir, "runs/maze1-group-frontier-zstd-run-length-lg-mean200-s1");
+  SweepChoices absolute;
+  absolute.leader_gcs_caps_bytes_per_s = {4000, 16000};
+  const ExperimentPlan abs = make_plan(ExperimentKind::kBandwidth, {"maze1"}, {"group-frontier"}, 1, base, "", absolute);
+  EXPECT_EQ(abs.runs.size(), 3u + 2u);  // the unlimited reference is the uncapped default encoding
   const ExperimentPlan loss = make_plan(ExperimentKind::kLoss, {"maze1"}, {"baseline"}, 2, base, "");
   EXPECT_EQ(loss.runs.size(), 3u * 2u);
   EXPECT_EQ(loss.runs[2].dir, "runs/maze1-baseline-loss5-s1");
@@ -149,15 +158,19 @@ TEST(ExperimentAnalysis, ExploreTableCsvAndFailedRuns) {
   while (std::getline(csv, line)) lines.push_back(line);
   ASSERT_EQ(lines.size(), 1u + plan.runs.size());
   for (const std::string& l : lines) {
-    EXPECT_EQ(std::count(l.begin(), l.end(), ','), 16) << l;  // 17 columns, no quoted commas here
+    EXPECT_EQ(std::count(l.begin(), l.end(), ','), 26) << l;  // 27 columns, no quoted commas here
   }
   EXPECT_EQ(lines[0],
             "run,map,method,seed,status,complete,steps,steps_to_99,planning_rounds,explored_percent,"
-            "ticks_run,wall_seconds,traffic_bytes,map_bytes,map_bytes_per_robot_second,log,failure");
-  // open gf seed 1: 200*0.9 + 4 = 184 steps; map bytes 1500 / (9 robots x 185 ticks x 0.2 s).
+            "ticks_run,wall_seconds,traffic_bytes,map_bytes,map_bytes_per_robot_second,radio_bytes,"
+            "sim_robot_on_robot_bytes,leader_gcs_bytes,leader_gcs_peak_bytes_per_s,leader_gcs_queue_median_ticks,leader_gcs_queue_p95_ticks,"
+            "member_leader_bytes,member_leader_peak_bytes_per_s,member_leader_queue_median_ticks,"
+            "member_leader_queue_p95_ticks,log,failure");
+  // open gf seed 1: 200*0.9 + 4 = 184 steps; map bytes 1500 / (9 robots x 185 ticks x 0.2 s); no
+  // traffic per link in these fabricated runs.
   EXPECT_EQ(lines[1], "runs/open-group-frontier-s1,open,group-frontier,1,ok,true,184,174,9,99.90,185,"
-                      "2.50,101499,1500,4.5,,");
-  EXPECT_EQ(lines[8], "runs/maze1-baseline-s2,maze1,baseline,2,failed,,,,,,,,,,,"
+                      "2.50,101499,1500,4.5,101499,0,,,,,,,,,,");
+  EXPECT_EQ(lines[8], "runs/maze1-baseline-s2,maze1,baseline,2,failed,,,,,,,,,,,,,,,,,,,,,"
                       "runs/maze1-baseline-s2/logs/leader-1.log,process leader-1 failed (exit code 3)");
 
   // Table: means, the change against the baseline and the failed run marked and listed.
@@ -166,8 +179,9 @@ TEST(ExperimentAnalysis, ExploreTableCsvAndFailedRuns) {
   EXPECT_TRUE(contains(o.table, "604.0 ± 0.0*")) << o.table;  // maze1 baseline: seed 1 only
   EXPECT_TRUE(contains(o.table, "1/2 (1 failed)")) << o.table;
   EXPECT_TRUE(contains(o.table, "FAILED runs/maze1-baseline-s2: process leader-1 failed")) << o.table;
-  // open: 186 vs 206 = -9.7 %; maze1: 546 vs 604 = -9.6 %.
-  EXPECT_TRUE(contains(o.table, "-9.7 %")) << o.table;
+  // open: 186 vs 206 = -9.7 %, both seeds 20 fewer, so an interval of width 0; maze1: 546 vs 604 =
+  // -9.6 %, but only seed 1 has both runs: no interval.
+  EXPECT_TRUE(contains(o.table, "-9.7 % [-9.7, -9.7]")) << o.table;
   EXPECT_TRUE(contains(o.table, "-9.6 %")) << o.table;
   EXPECT_TRUE(contains(o.table, "fewer steps than baseline on every map: yes")) << o.table;
   EXPECT_TRUE(contains(o.table, ">= 25 % fewer steps than baseline on the maze maps (maze1, mean of the per-map changes): NO"))
@@ -349,4 +363,93 @@ TEST(ExperimentCommand, BadInputExits2SayingWhatIsAccepted) {
   EXPECT_EQ(code, 2);
   EXPECT_TRUE(contains(msg, "--out DIR")) << msg;
   EXPECT_FALSE(fs::exists(dir.file("out")));
+}
+
+// The knee on a synthetic link whose only traffic is a fixed rate of 1,000 B/s: a cap at or above
+// it costs nothing; below it the run slows as the rate over the cap (every message waits for the
+// bucket). Caps from 4,000 down to 125: the knee is the smallest cap within 5 % of uncapped
+// steps, 1,000 (at 500 the run takes twice as long).
+TEST(ExperimentAnalysis, TheKneeOfAFixedRateLinkIsItsRate) {
+  const double rate = 1000, uncapped = 300;
+  std::vector<swarm::tools::analysis::KneePoint> points;
+  for (const double cap : {4000.0, 2000.0, 1000.0, 500.0, 250.0, 125.0}) {
+    points.push_back({cap, uncapped * std::max(1.0, rate / cap), true});
+  }
+  EXPECT_EQ(swarm::tools::analysis::knee_of(points, uncapped, 5.0), 1000.0);
+  // 5 % is the tolerance: a cap 4 % slower still counts; 6 % does not.
+  EXPECT_EQ(swarm::tools::analysis::knee_of({{2000, 300, true}, {1000, 312, true}, {500, 318, true}}, 300, 5.0), 1000.0);
+  // An incomplete run ends the knee's walk down, whatever its steps; so does a largest cap already too slow.
+  EXPECT_EQ(swarm::tools::analysis::knee_of({{2000, 300, true}, {1000, 300, false}, {500, 300, true}}, 300, 5.0), 2000.0);
+  EXPECT_FALSE(swarm::tools::analysis::knee_of({{2000, 400, true}, {1000, 300, true}}, 300, 5.0).has_value());
+}
+
+// A bandwidth experiment on fabricated runs: the uncapped runs' traffic gives the demand per sender
+// (the member<->leader link's bytes over the run and its busiest whole second, shared by its 9
+// senders), each capped run its cap, and the table each cap's steps against the uncapped ones of
+// the same seeds, the queue and the knee.
+TEST(ExperimentAnalysis, BandwidthCapsFollowTheMeasuredDemand) {
+  TempDir dir;
+  swarm::scenario::Scenario base;
+  SweepChoices choices;
+  choices.encodings = {swarm::scenario::ZSTD_RUN_LENGTH};
+  choices.cap_links = {"member_leader"};
+  choices.cap_bases = {"mean", "peak"};
+  choices.cap_fractions = {1.0, 0.125};
+  ExperimentPlan plan = make_plan(ExperimentKind::kBandwidth, {"maze1"}, {"group-frontier"}, 2, base, "", choices);
+  ASSERT_EQ(plan.runs.size(), 2u + 8u);
+  // Uncapped: 300 + seed steps (301 ticks of 0.2 s = 60.2 s); member_leader 54,180 bytes, i.e. 900 B/s,
+  // 100 B/s per sender; its busiest whole second 2,700 B/s, 300 per sender.
+  for (ExperimentRun& r : plan.runs) {
+    if (r.setting.waits_for_demand()) continue;
+    const std::string run = dir.str() + "/" + r.dir;
+    auto m = swarm::test::run_metrics("maze1", "group-frontier", r.seed, 299 + static_cast<std::uint32_t>(r.seed), 15);
+    m.traffic.by_link["member_leader"].bytes = static_cast<std::uint64_t>(900 * 0.2 * (300 + r.seed));
+    spit(run + "/metrics.json", swarm::record::to_json(m).dump(2));
+    spit(run + "/scenario.pbtxt", "map: \"maze1\"\ntick_seconds: 0.2\n");
+    spit(run + "/traffic.csv", "second,member_leader_bytes_per_s,leader_gcs_bytes_per_s,sim_robot_on_robot_bytes_per_s\n"
+                               "1,900,10,5000\n2,2700,10,5000\n3,900,10,5000\n3.2,9000,10,5000\n");
+    r.status = RunStatus::kOk;
+  }
+  const std::vector<std::string> missing = resolve_demand(plan, load_rows(dir.str(), plan));
+  EXPECT_TRUE(missing.empty());
+  const ExperimentPlan::Demand& d = plan.demand.at("maze1").at("member_leader");
+  EXPECT_EQ(d.runs, 2u);
+  // Seed 1: 54,180 B / 60.2 s / 9 = 100 B/s; seed 2 the same rate. The last bin (0.2 s) is not a whole second.
+  EXPECT_NEAR(d.mean_bytes_per_s, 100.0, 1e-9);
+  EXPECT_NEAR(d.peak_bytes_per_s, 300.0, 1e-9);
+  for (const ExperimentRun& r : plan.runs) {
+    ASSERT_FALSE(r.setting.waits_for_demand()) << r.dir;
+    if (!r.setting.demand) continue;
+    const double want = r.setting.demand->fraction * (r.setting.demand->basis == "mean" ? 100.0 : 300.0);
+    EXPECT_NEAR(*r.setting.member_leader_bandwidth_bytes_per_s, want, 1e-9) << r.dir;
+  }
+  // Capped: x1 of either basis costs 1 % more steps; x1/8 of the mean 60 %; x1/8 of the peak
+  // (37.5 B/s) 40 %. Queues: the median message waited 2 ticks under x1/8, 0 under x1.
+  for (ExperimentRun& r : plan.runs) {
+    if (!r.setting.demand) continue;
+    const bool eighth = r.setting.demand->fraction < 1;
+    const double slower = !eighth ? 1.01 : r.setting.demand->basis == "mean" ? 1.6 : 1.4;
+    const auto steps = static_cast<std::uint32_t>(std::lround(static_cast<double>(299 + r.seed) * slower));
+    auto m = swarm::test::run_metrics("maze1", "group-frontier", r.seed, steps, 15);
+    m.traffic.by_link["member_leader"].bytes = 50000;
+    m.traffic.by_link["member_leader"].queued_ticks = eighth ? std::vector<std::uint64_t>{10, 10, 30, 50} : std::vector<std::uint64_t>{100};
+    const std::string run = dir.str() + "/" + r.dir;
+    spit(run + "/metrics.json", swarm::record::to_json(m).dump(2));
+    spit(run + "/scenario.pbtxt", "map: \"maze1\"\ntick_seconds: 0.2\n");
+    r.status = RunStatus::kOk;
+  }
+  write_manifest(dir.str(), plan);
+  const ExperimentPlan back = read_manifest(dir.str());
+  EXPECT_EQ(back.demand.at("maze1").at("member_leader").peak_bytes_per_s, 300.0);
+  const ExperimentOutputs o = analyze_experiment(back, load_rows(dir.str(), back));
+  EXPECT_TRUE(contains(o.table, "member_leader cap, mean x, maze1, group-frontier")) << o.table;
+  EXPECT_TRUE(contains(o.table, "12.5 B/s")) << o.table;  // x1/8 of 100 B/s
+  EXPECT_TRUE(contains(o.table, "37.5 B/s")) << o.table;  // x1/8 of 300 B/s
+  // x1/8 of the mean: seeds 1 and 2, 480 vs 300 and 482 vs 301 steps (+180, +181): +60.1 % of
+  // 300.5, and an interval that excludes 0 (t with 1 degree of freedom: 180.5 +- 6.35 steps).
+  EXPECT_TRUE(contains(o.table, "+60.1 % [+58.0, +62.2]")) << o.table;
+  EXPECT_TRUE(contains(o.table, "2.0 / 3.0")) << o.table;  // median / p95 ticks queued under x1/8
+  EXPECT_TRUE(contains(o.table, "knee, member_leader, maze1, group-frontier, ZSTD_RUN_LENGTH: 100 B/s per sender")) << o.table;
+  EXPECT_TRUE(contains(o.table, "(1.00 x its mean demand, 0.33 x its peak)")) << o.table;
+  EXPECT_TRUE(contains(o.csv, "member_leader_queue_p95_ticks")) << o.csv;
 }

@@ -222,9 +222,7 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err)
   }
   const std::string traffic_png = (std::filesystem::path(l.run_dir) / "traffic.png").string();
   try {
-    const TrafficOverTime traffic = traffic_over_time(frames);
-    write_traffic_csv(traffic, (std::filesystem::path(l.run_dir) / "traffic.csv").string());
-    write_traffic_png(traffic, traffic_png);
+    write_traffic_files(frames, l.run_dir);
   } catch (const std::exception& e) {
     err << "swarm run: every process exited normally, but the traffic over time failed: " << e.what() << "\n";
     return 1;

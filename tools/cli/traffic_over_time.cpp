@@ -97,4 +97,10 @@ void write_traffic_png(const TrafficOverTime& t, const std::string& path) {
   write_figure_png(f, path);
 }
 
+void write_traffic_files(const std::vector<record::Frame>& frames, const std::string& run_dir) {
+  const TrafficOverTime t = traffic_over_time(frames);
+  write_traffic_csv(t, run_dir + "/traffic.csv");
+  write_traffic_png(t, run_dir + "/traffic.png");
+}
+
 }  // namespace swarm::tools

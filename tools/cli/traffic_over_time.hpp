@@ -36,5 +36,8 @@ void write_traffic_csv(const TrafficOverTime& t, const std::string& path);
 // Two panels: the radio links (member_leader, leader_gcs, telemetry, control) and, apart, the
 // simulator's sensing of the robots; the phases' starts marked. Throws when it cannot be written.
 void write_traffic_png(const TrafficOverTime& t, const std::string& path);
+// RUN_DIR/traffic.csv and RUN_DIR/traffic.png of a run's record (`swarm run` and every run of an
+// experiment write them). Throws as the three above do.
+void write_traffic_files(const std::vector<record::Frame>& frames, const std::string& run_dir);
 
 }  // namespace swarm::tools

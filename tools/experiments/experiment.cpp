@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -59,6 +60,10 @@ json setting_json(const RunSetting& s) {
   if (s.leader_gcs_bandwidth_bytes_per_s) {
     j["leader_gcs_bandwidth_bytes_per_s"] = *s.leader_gcs_bandwidth_bytes_per_s;
   }
+  if (s.member_leader_bandwidth_bytes_per_s) {
+    j["member_leader_bandwidth_bytes_per_s"] = *s.member_leader_bandwidth_bytes_per_s;
+  }
+  if (s.demand) j["demand"] = {{"link", s.demand->link}, {"basis", s.demand->basis}, {"fraction", s.demand->fraction}};
   if (s.loss) j["loss"] = *s.loss;
   return j;
 }
@@ -73,6 +78,20 @@ RunSetting setting_from_json(const json& j, const std::string& where) {
   if (j.contains("leader_gcs_bandwidth_bytes_per_s")) {
     s.leader_gcs_bandwidth_bytes_per_s = j["leader_gcs_bandwidth_bytes_per_s"];
   }
+  if (j.contains("member_leader_bandwidth_bytes_per_s")) {
+    s.member_leader_bandwidth_bytes_per_s = j["member_leader_bandwidth_bytes_per_s"];
+  }
+  if (j.contains("demand")) {
+    const json& d = j["demand"];
+    s.demand = DemandCap{d.at("link").get<std::string>(), d.at("basis").get<std::string>(), d.at("fraction").get<double>()};
+    const auto known = [](const auto& names, const std::string& v) {
+      return std::find(std::begin(names), std::end(names), v) != std::end(names);
+    };
+    if (!known(kCappedLinks, s.demand->link) || !known(kDemandBases, s.demand->basis) || !(s.demand->fraction > 0)) {
+      throw cfg::ConfigError(where + ": a demand cap needs link leader_gcs or member_leader, basis mean or peak "
+                             "and a fraction above 0");
+    }
+  }
   if (j.contains("loss")) s.loss = j["loss"];
   return s;
 }
@@ -84,6 +103,7 @@ json parameters_json(const ExperimentPlan& p) {
             {"maps", p.maps},
             {"methods", p.methods},
             {"seeds", p.seeds}};
+  if (!p.mission.empty()) j["mission"] = p.mission;
   switch (p.kind) {
     case ExperimentKind::kLatency:
       j["planning_interval_ticks"] = p.planning_interval_ticks;
@@ -95,7 +115,19 @@ json parameters_json(const ExperimentPlan& p) {
       for (auto e : p.encodings) names.push_back(encoding_name(e));
       j["encodings"] = names;
       j["leader_gcs_caps_bytes_per_s"] = p.leader_gcs_caps_bytes_per_s;
+      j["cap_fractions"] = p.cap_fractions;
+      j["cap_links"] = p.cap_links;
+      j["cap_bases"] = p.cap_bases;
       j["cap_encoding"] = encoding_name(p.cap_encoding);
+      json demand = json::object();
+      for (const auto& [map, links] : p.demand) {
+        for (const auto& [link, d] : links) {
+          demand[map][link] = {{"mean_bytes_per_s", d.mean_bytes_per_s},
+                               {"peak_bytes_per_s", d.peak_bytes_per_s},
+                               {"runs", d.runs}};
+        }
+      }
+      j["demand_per_sender"] = demand;
       break;
     }
     case ExperimentKind::kLoss:
@@ -126,7 +158,11 @@ std::string setting_tag(const RunSetting& s) {
     });
     add(e);
   }
-  if (s.leader_gcs_bandwidth_bytes_per_s) {
+  if (s.demand) {
+    char percent[32];
+    std::snprintf(percent, sizeof percent, "%g", 100 * s.demand->fraction);
+    add((s.demand->link == "leader_gcs" ? "lg-" : "ml-") + s.demand->basis + percent);
+  } else if (s.leader_gcs_bandwidth_bytes_per_s) {
     add(*s.leader_gcs_bandwidth_bytes_per_s > 0
             ? "cap" + format_number(*s.leader_gcs_bandwidth_bytes_per_s, 0)
             : "nocap");
@@ -141,7 +177,8 @@ std::vector<std::string> setting_columns(ExperimentKind kind) {
     case ExperimentKind::kLatency:
       return {"leader_gcs_delay_ticks", "member_leader_delay_ticks"};
     case ExperimentKind::kBandwidth:
-      return {"map_encoding", "leader_gcs_bandwidth_bytes_per_s"};
+      return {"map_encoding", "leader_gcs_bandwidth_bytes_per_s", "member_leader_bandwidth_bytes_per_s",
+              "cap_link", "cap_basis", "cap_fraction"};
     case ExperimentKind::kLoss:
       return {"loss"};
     case ExperimentKind::kExplore:
@@ -158,8 +195,11 @@ std::vector<std::string> setting_values(ExperimentKind kind, const RunSetting& s
               opt(s.member_leader_delay_ticks, [](auto v) { return std::to_string(v); })};
     case ExperimentKind::kBandwidth:
       return {opt(s.map_encoding, [](auto v) { return encoding_name(v); }),
-              opt(s.leader_gcs_bandwidth_bytes_per_s,
-                  [](double v) { return format_number(v, 0); })};
+              opt(s.leader_gcs_bandwidth_bytes_per_s, [](double v) { return format_number(v, 1); }),
+              opt(s.member_leader_bandwidth_bytes_per_s, [](double v) { return format_number(v, 1); }),
+              opt(s.demand, [](const DemandCap& d) { return d.link; }),
+              opt(s.demand, [](const DemandCap& d) { return d.basis; }),
+              opt(s.demand, [](const DemandCap& d) { return format_number(d.fraction, 3); })};
     case ExperimentKind::kLoss:
       return {opt(s.loss, [](double v) { return format_number(v, 2); })};
     case ExperimentKind::kExplore:
@@ -190,11 +230,22 @@ std::string make_csv(const ExperimentPlan& plan, const std::vector<RunRow>& rows
       cells.push_back(format_number(n.traffic_bytes, 0));
       cells.push_back(format_number(n.map_bytes, 0));
       cells.push_back(format_number(n.map_bytes_per_robot_second(), 1));
+      cells.push_back(format_number(n.radio_bytes(), 0));
+      cells.push_back(format_number(n.on_robot_bytes(), 0));
+      for (const char* link : kCappedLinks) {
+        const auto l = n.links.find(link);
+        const auto opt = [](const std::optional<double>& v, int decimals) { return v ? format_number(*v, decimals) : ""; };
+        cells.push_back(l == n.links.end() ? "" : format_number(l->second.bytes, 0));
+        cells.push_back(l == n.links.end() ? "" : opt(l->second.peak_bytes_per_s, 1));
+        cells.push_back(l == n.links.end() ? "" : opt(l->second.queue_median_ticks, 0));
+        cells.push_back(l == n.links.end() ? "" : opt(l->second.queue_p95_ticks, 0));
+      }
       cells.push_back("");
       cells.push_back("");
     } else {
       cells.push_back("failed");
-      for (int i = 0; i < 10; ++i) cells.push_back("");  // complete .. map_bytes_per_robot_second
+      // complete .. sim_robot_on_robot_bytes, then four per capped link
+      for (std::size_t i = 0; i < 12 + 4 * std::size(kCappedLinks); ++i) cells.push_back("");
       cells.push_back(r.run.log);
       cells.push_back(r.run.failure);
     }
@@ -227,6 +278,17 @@ json runs_json(const ExperimentPlan& plan, const std::vector<RunRow>& rows) {
       j["traffic_bytes"] = n.traffic_bytes;
       j["map_bytes"] = n.map_bytes;
       j["map_bytes_per_robot_second"] = n.map_bytes_per_robot_second();
+      j["conflicts"] = n.conflicts;
+      j["delivered"] = analysis::optional_json(n.delivered);
+      j["radio_bytes"] = n.radio_bytes();
+      j["sim_robot_on_robot_bytes"] = n.on_robot_bytes();
+      for (const auto& [link, l] : n.links) {
+        j["links"][link] = {{"bytes", l.bytes},
+                            {"peak_bytes_per_s", analysis::optional_json(l.peak_bytes_per_s)},
+                            {"queue_median_ticks", analysis::optional_json(l.queue_median_ticks)},
+                            {"queue_p95_ticks", analysis::optional_json(l.queue_p95_ticks)},
+                            {"dropped_messages", l.dropped_messages}};
+      }
     } else {
       j["failure"] = r.run.failure;
       j["log"] = r.run.log;
@@ -296,6 +358,18 @@ RunSetting RunSetting::encoding_and_cap(swarm::scenario::MapEncoding e, double b
   return s;
 }
 
+RunSetting RunSetting::demand_cap(swarm::scenario::MapEncoding e, DemandCap cap) {
+  RunSetting s;
+  s.map_encoding = e;
+  s.demand = std::move(cap);
+  return s;
+}
+
+bool RunSetting::waits_for_demand() const {
+  if (!demand) return false;
+  return demand->link == "leader_gcs" ? !leader_gcs_bandwidth_bytes_per_s : !member_leader_bandwidth_bytes_per_s;
+}
+
 RunSetting RunSetting::every_link_loss(double loss) {
   RunSetting s;
   s.loss = loss;
@@ -311,6 +385,9 @@ void RunSetting::apply(swarm::scenario::Scenario& s) const {
   if (map_encoding) s.set_map_encoding(*map_encoding);
   if (leader_gcs_bandwidth_bytes_per_s) {
     links->mutable_leader_gcs()->set_bandwidth_bytes_per_s(*leader_gcs_bandwidth_bytes_per_s);
+  }
+  if (member_leader_bandwidth_bytes_per_s) {
+    links->mutable_member_leader()->set_bandwidth_bytes_per_s(*member_leader_bandwidth_bytes_per_s);
   }
   if (loss) {
     links->mutable_sim_robot()->set_loss(*loss);
@@ -345,7 +422,8 @@ std::uint32_t default_seeds(ExperimentKind kind) {
 
 ExperimentPlan make_plan(ExperimentKind kind, std::vector<std::string> maps,
                          std::vector<std::string> methods, std::uint32_t seeds,
-                         const swarm::scenario::Scenario& base, const std::string& scenario_path) {
+                         const swarm::scenario::Scenario& base, const std::string& scenario_path,
+                         const SweepChoices& choices) {
   ExperimentPlan p;
   p.kind = kind;
   p.scenario = scenario_path;
@@ -364,7 +442,15 @@ ExperimentPlan make_plan(ExperimentKind kind, std::vector<std::string> maps,
     case ExperimentKind::kBandwidth:
       p.encodings = {swarm::scenario::RAW_CELLS, swarm::scenario::RUN_LENGTH,
                      swarm::scenario::ZSTD_RUN_LENGTH};
-      p.leader_gcs_caps_bytes_per_s = {4000, 16000, 64000, 0};
+      if (!choices.encodings.empty()) p.encodings = choices.encodings;
+      // Caps from the measured demand (the uncapped runs first): twice it down to an eighth, on
+      // both radio link classes, of the mean and of the peak.
+      p.cap_fractions = choices.cap_fractions.empty() ? std::vector<double>{2.0, 1.0, 0.5, 0.25, 0.125} : choices.cap_fractions;
+      p.cap_links = choices.cap_links.empty() ? std::vector<std::string>(std::begin(kCappedLinks), std::end(kCappedLinks))
+                                              : choices.cap_links;
+      p.cap_bases = choices.cap_bases.empty() ? std::vector<std::string>(std::begin(kDemandBases), std::end(kDemandBases))
+                                              : choices.cap_bases;
+      p.leader_gcs_caps_bytes_per_s = choices.leader_gcs_caps_bytes_per_s;
       p.cap_encoding = base.map_encoding();
       break;
     case ExperimentKind::kLoss:
@@ -448,6 +534,7 @@ ExperimentPlan read_manifest(const std::string& dir) {
     p.maps = j.at("maps").get<std::vector<std::string>>();
     p.methods = j.at("methods").get<std::vector<std::string>>();
     p.seeds = j.at("seeds").get<std::uint32_t>();
+    p.mission = j.value("mission", std::vector<std::string>{});
     p.planning_interval_ticks = j.value("planning_interval_ticks", 0u);
     p.leader_gcs_delays_ticks =
         j.value("leader_gcs_delays_ticks", std::vector<std::uint32_t>{});
@@ -457,6 +544,16 @@ ExperimentPlan read_manifest(const std::string& dir) {
       p.encodings.push_back(parse_encoding(e, path));
     }
     p.leader_gcs_caps_bytes_per_s = j.value("leader_gcs_caps_bytes_per_s", std::vector<double>{});
+    p.cap_fractions = j.value("cap_fractions", std::vector<double>{});
+    p.cap_links = j.value("cap_links", std::vector<std::string>{});
+    p.cap_bases = j.value("cap_bases", std::vector<std::string>{});
+    const json demand = j.value("demand_per_sender", json::object());
+    for (const auto& [map, links] : demand.items()) {
+      for (const auto& [link, d] : links.items()) {
+        p.demand[map][link] = {d.at("mean_bytes_per_s").get<double>(), d.at("peak_bytes_per_s").get<double>(),
+                               d.value("runs", std::size_t{0})};
+      }
+    }
     if (j.contains("cap_encoding")) p.cap_encoding = parse_encoding(j["cap_encoding"], path);
     p.losses = j.value("losses", std::vector<double>{});
     for (const json& r : j.at("runs")) {
@@ -486,14 +583,71 @@ double RunNumbers::map_bytes_per_robot_second() const {
   return robot_seconds > 0 ? map_bytes / robot_seconds : 0.0;
 }
 
+double RunNumbers::on_robot_bytes() const {
+  const auto l = links.find("sim_robot");
+  return l == links.end() ? 0.0 : l->second.bytes;
+}
+
+double RunNumbers::radio_bytes() const { return traffic_bytes - on_robot_bytes(); }
+
+double RunNumbers::senders(const std::string& link) const {
+  if (link == "leader_gcs") return groups + 1.0;
+  if (link == "member_leader") return robots;
+  return 0;
+}
+
+double RunNumbers::mean_bytes_per_s_per_sender(const std::string& link) const {
+  const auto l = links.find(link);
+  const double seconds = ticks_run * tick_seconds;
+  return l == links.end() || seconds <= 0 || senders(link) <= 0 ? 0.0 : l->second.bytes / seconds / senders(link);
+}
+
+std::optional<double> RunNumbers::peak_bytes_per_s_per_sender(const std::string& link) const {
+  const auto l = links.find(link);
+  if (l == links.end() || !l->second.peak_bytes_per_s || senders(link) <= 0) return std::nullopt;
+  return *l->second.peak_bytes_per_s / senders(link);
+}
+
 bool RunNumbers::ended_early() const {
-  return complete && explored_fraction < kCompleteExploredFraction;
+  return explores && complete && explored_fraction < kCompleteExploredFraction;
 }
 
 const std::vector<std::string>& map_topics() {
   static const std::vector<std::string> topics = {"patch_up", "patch_down", "patch_gcs", "round"};
   return topics;
 }
+
+namespace {
+// Each link's busiest whole second in RUN_DIR/traffic.csv (tools/cli/traffic_over_time.hpp: columns
+// "second", "<link>_bytes_per_s", the on-robot link "..._on_robot_bytes_per_s"); nothing when the
+// run has no such file. The last bin, often shorter than a second, is left out.
+std::map<std::string, double> peak_rates(const std::string& run_dir) {
+  std::map<std::string, double> peak;
+  std::ifstream in(fs::path(run_dir) / "traffic.csv");
+  std::string line;
+  if (!in || !std::getline(in, line)) return peak;
+  std::vector<std::string> links;
+  std::stringstream head(line);
+  for (std::string c; std::getline(head, c, ',');) {
+    const std::string suffix = "_bytes_per_s";
+    links.push_back(c.size() > suffix.size() && c.ends_with(suffix) ? c.substr(0, c.size() - suffix.size()) : "");
+  }
+  double last_second = 0;
+  while (std::getline(in, line)) {
+    std::stringstream row(line);
+    std::vector<double> v;
+    for (std::string c; std::getline(row, c, ',');) v.push_back(std::strtod(c.c_str(), nullptr));
+    if (v.empty()) continue;
+    const bool whole = v[0] - last_second > 0.999;
+    last_second = v[0];
+    if (!whole) continue;
+    for (std::size_t k = 1; k < v.size() && k < links.size(); ++k) {
+      if (!links[k].empty()) peak[links[k]] = std::max(peak[links[k]], v[k]);
+    }
+  }
+  return peak;
+}
+}  // namespace
 
 std::optional<RunNumbers> load_run_numbers(const std::string& run_dir, std::string& why) {
   swarm::record::RunMetrics m;
@@ -515,9 +669,22 @@ std::optional<RunNumbers> load_run_numbers(const std::string& run_dir, std::stri
   n.robots_per_group = m.robots_per_group;
   n.robots = m.robots;
   n.traffic_bytes = static_cast<double>(m.traffic.total_bytes);
+  n.explores = m.phases.empty() || m.phases.front().name == "explore";
+  n.conflicts = static_cast<double>(m.motion.vertex_conflict_events + m.motion.edge_conflict_events);
+  for (const auto& p : m.phases) {
+    if (p.name == "collect" && p.task.contains("delivered")) n.delivered = n.delivered.value_or(0) + p.task["delivered"].get<double>();
+  }
   for (const std::string& topic : map_topics()) {
     if (auto it = m.traffic.by_topic.find(topic); it != m.traffic.by_topic.end()) n.map_bytes += it->second.bytes;
   }
+  for (const auto& [link, l] : m.traffic.by_link) {
+    RunNumbers::Link& out = n.links[link];
+    out.bytes = static_cast<double>(l.bytes);
+    out.dropped_messages = static_cast<double>(l.dropped_messages);
+    if (const auto q = swarm::record::queue_quantile(l.queued_ticks, 0.5)) out.queue_median_ticks = *q;
+    if (const auto q = swarm::record::queue_quantile(l.queued_ticks, 0.95)) out.queue_p95_ticks = *q;
+  }
+  for (const auto& [link, peak] : peak_rates(run_dir)) n.links[link].peak_bytes_per_s = peak;
   // tick_seconds is a scenario field, not a metric.
   const std::string scenario_path = (fs::path(run_dir) / "scenario.pbtxt").string();
   std::ifstream sin(scenario_path, std::ios::binary);
@@ -534,6 +701,43 @@ std::optional<RunNumbers> load_run_numbers(const std::string& run_dir, std::stri
     return std::nullopt;
   }
   return n;
+}
+
+std::vector<std::string> resolve_demand(ExperimentPlan& plan, const std::vector<RunRow>& rows) {
+  std::vector<std::string> missing;
+  const auto uncapped = [&](const RunSetting& s) {
+    return !s.demand && !s.member_leader_bandwidth_bytes_per_s && s.leader_gcs_bandwidth_bytes_per_s.value_or(0) <= 0 &&
+           s.map_encoding == plan.cap_encoding;
+  };
+  for (const std::string& map : plan.maps) {
+    const std::string label = map_label(map);
+    for (const std::string& link : plan.cap_links) {
+      std::vector<double> mean, peak;
+      for (const RunRow& r : rows) {
+        if (r.run.map != map || !r.numbers || r.numbers->ended_early() || !uncapped(r.run.setting)) continue;
+        const auto p = r.numbers->peak_bytes_per_s_per_sender(link);
+        if (!p) continue;
+        mean.push_back(r.numbers->mean_bytes_per_s_per_sender(link));
+        peak.push_back(*p);
+      }
+      const ExperimentPlan::Demand d{summarize(mean).mean, summarize(peak).mean, mean.size()};
+      if (mean.empty() || !(d.mean_bytes_per_s > 0) || !(d.peak_bytes_per_s > 0)) {
+        if (std::find(missing.begin(), missing.end(), label) == missing.end()) missing.push_back(label);
+        continue;
+      }
+      plan.demand[label][link] = d;
+    }
+  }
+  for (ExperimentRun& run : plan.runs) {
+    if (!run.setting.waits_for_demand()) continue;
+    const auto m = plan.demand.find(map_label(run.map));
+    if (m == plan.demand.end() || !m->second.count(run.setting.demand->link)) continue;
+    const ExperimentPlan::Demand& d = m->second.at(run.setting.demand->link);
+    const double rate = run.setting.demand->fraction * (run.setting.demand->basis == "peak" ? d.peak_bytes_per_s : d.mean_bytes_per_s);
+    (run.setting.demand->link == "leader_gcs" ? run.setting.leader_gcs_bandwidth_bytes_per_s
+                                              : run.setting.member_leader_bandwidth_bytes_per_s) = rate;
+  }
+  return missing;
 }
 
 std::vector<RunRow> load_rows(const std::string& experiment_dir, const ExperimentPlan& plan) {
@@ -610,9 +814,14 @@ std::vector<std::string> csv_header(ExperimentKind kind) {
   for (auto& c : setting_columns(kind)) h.push_back(c);
   for (const char* c : {"status", "complete", "steps", "steps_to_99", "planning_rounds",
                         "explored_percent", "ticks_run", "wall_seconds", "traffic_bytes",
-                        "map_bytes", "map_bytes_per_robot_second", "log", "failure"}) {
+                        "map_bytes", "map_bytes_per_robot_second", "radio_bytes", "sim_robot_on_robot_bytes"}) {
     h.push_back(c);
   }
+  for (const std::string link : kCappedLinks) {
+    for (const char* c : {"_bytes", "_peak_bytes_per_s", "_queue_median_ticks", "_queue_p95_ticks"}) h.push_back(link + c);
+  }
+  h.push_back("log");
+  h.push_back("failure");
   return h;
 }
 

@@ -28,6 +28,7 @@
 #include <ctime>
 #include <optional>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -43,18 +44,38 @@ enum class ExperimentKind { kExplore, kLatency, kBandwidth, kLoss };
 [[nodiscard]] std::string kind_name(ExperimentKind kind);
 [[nodiscard]] std::optional<ExperimentKind> parse_kind(const std::string& name);
 
+// The link classes a bandwidth experiment caps, and what a cap set from the demand is based on.
+inline constexpr const char* kCappedLinks[] = {"leader_gcs", "member_leader"};
+inline constexpr const char* kDemandBases[] = {"mean", "peak"};
+
+// A cap set from what the link class carried uncapped: `fraction` of its measured rate per
+// sender, the mean over the run ("mean") or the busiest second ("peak").
+struct DemandCap {
+  std::string link;   // kCappedLinks
+  std::string basis;  // kDemandBases
+  double fraction = 0;
+  friend bool operator==(const DemandCap&, const DemandCap&) = default;
+};
+
 // Scenario fields one run sets on top of its base scenario (besides map, method and seed);
 // unset = the base scenario's value.
 struct RunSetting {
   std::optional<std::uint32_t> leader_gcs_delay_ticks;
   std::optional<std::uint32_t> member_leader_delay_ticks;
   std::optional<swarm::scenario::MapEncoding> map_encoding;
-  std::optional<double> leader_gcs_bandwidth_bytes_per_s;  // 0 = unlimited
+  std::optional<double> leader_gcs_bandwidth_bytes_per_s;     // 0 = unlimited
+  std::optional<double> member_leader_bandwidth_bytes_per_s;  // 0 = unlimited
+  // Bandwidth: the cap on demand.link is this share of the measured demand; its bytes per second
+  // are set once the uncapped runs have measured it (unset until then: the run waits).
+  std::optional<DemandCap> demand;
   std::optional<double> loss;                              // the same on every link
 
   static RunSetting delays(std::uint32_t leader_gcs, std::uint32_t member_leader);
   static RunSetting encoding_and_cap(swarm::scenario::MapEncoding e, double bytes_per_s);
+  static RunSetting demand_cap(swarm::scenario::MapEncoding e, DemandCap cap);
   static RunSetting every_link_loss(double loss);
+  // A demand cap whose bytes per second are not known yet.
+  [[nodiscard]] bool waits_for_demand() const;
 
   void apply(swarm::scenario::Scenario& s) const;
   friend bool operator==(const RunSetting&, const RunSetting&) = default;
@@ -82,15 +103,28 @@ struct ExperimentPlan {
   std::vector<std::string> maps;
   std::vector<std::string> methods;
   std::uint32_t seeds = 0;  // seeds 1..seeds
+  // The phases every run drives (`swarm run --mission`); empty = the base scenario's. Steps are
+  // then the whole mission's ticks, and the tables add conflicts (and delivered objects).
+  std::vector<std::string> mission;
   // latency: a planning interval (the base scenario's replan threshold) and the swept delays.
   std::uint32_t planning_interval_ticks = 0;
   std::vector<std::uint32_t> leader_gcs_delays_ticks;
   std::vector<std::uint32_t> member_leader_delays_ticks;
-  // bandwidth: the encodings compared (no cap) and the leader<->GCS caps swept (0 = unlimited)
-  // with cap_encoding.
+  // bandwidth: the encodings compared (no cap); then with cap_encoding either absolute
+  // leader<->GCS caps (leader_gcs_caps_bytes_per_s, 0 = unlimited), or, when that is empty, caps
+  // on each of kCappedLinks at cap_fractions of its measured mean and peak rate per sender
+  // (demand, per map label and link, measured on the uncapped cap_encoding runs).
   std::vector<swarm::scenario::MapEncoding> encodings;
   std::vector<double> leader_gcs_caps_bytes_per_s;
+  std::vector<double> cap_fractions;
+  std::vector<std::string> cap_links;  // of kCappedLinks
+  std::vector<std::string> cap_bases;  // of kDemandBases
   swarm::scenario::MapEncoding cap_encoding = swarm::scenario::RUN_LENGTH;
+  struct Demand {
+    double mean_bytes_per_s = 0, peak_bytes_per_s = 0;  // per sender
+    std::size_t runs = 0;                               // the uncapped runs it was measured on
+  };
+  std::map<std::string, std::map<std::string, Demand>> demand;
   // loss: the loss probabilities swept (every link).
   std::vector<double> losses;
   // false for `swarm report` on plain run directories (no experiment.json).
@@ -104,12 +138,20 @@ struct ExperimentPlan {
 [[nodiscard]] std::vector<std::string> default_methods(ExperimentKind kind);
 [[nodiscard]] std::uint32_t default_seeds(ExperimentKind kind);
 
+// What a user chose of a kind's sweep instead of its default (empty: the default). Bandwidth only.
+struct SweepChoices {
+  std::vector<swarm::scenario::MapEncoding> encodings;
+  std::vector<double> cap_fractions;                 // shares of the demand
+  std::vector<std::string> cap_links, cap_bases;     // of kCappedLinks, kDemandBases
+  std::vector<double> leader_gcs_caps_bytes_per_s;   // absolute caps instead of shares (0 = unlimited)
+};
+
 // The plan with every run, in the order they are run and tabled (map, method, setting, seed).
 // `base` is the loaded base scenario (for the planning interval and the default encoding).
 [[nodiscard]] ExperimentPlan make_plan(ExperimentKind kind, std::vector<std::string> maps,
                                        std::vector<std::string> methods, std::uint32_t seeds,
                                        const swarm::scenario::Scenario& base,
-                                       const std::string& scenario_path);
+                                       const std::string& scenario_path, const SweepChoices& choices = {});
 
 // experiment.json in `dir`. write_manifest throws std::runtime_error when it cannot be written;
 // read_manifest throws swarm::config::ConfigError naming the file when it is missing or damaged.
@@ -132,9 +174,32 @@ struct RunNumbers {
   double tick_seconds = 0;
   double traffic_bytes = 0;
   double map_bytes = 0;  // the map topics: patch_up, patch_down, patch_gcs, round
+  bool explores = true;                // the mission's first phase explores (ended_early needs that)
+  double conflicts = 0;                // vertex + edge conflict events over the run (ground truth)
+  std::optional<double> delivered;     // objects delivered over the collect phases; none without one
+  // Per link class (its comm name): what it carried, its busiest second (from RUN_DIR/traffic.csv;
+  // absent when the run has none), and under a cap how long messages queued (ticks; absent
+  // uncapped) and how many were lost for good.
+  struct Link {
+    double bytes = 0;
+    std::optional<double> peak_bytes_per_s;
+    std::optional<double> queue_median_ticks, queue_p95_ticks;
+    double dropped_messages = 0;
+  };
+  std::map<std::string, Link> links;
 
   // map_bytes / (robots x ticks_run x tick_seconds); 0 when that is 0.
   [[nodiscard]] double map_bytes_per_robot_second() const;
+  // traffic_bytes splits into what the simulator sends the robots (their own sensors' data: in a
+  // deployment it never leaves the robot) and the rest, which crosses the radio.
+  [[nodiscard]] double on_robot_bytes() const;
+  [[nodiscard]] double radio_bytes() const;
+  // The agents with a token bucket on `link` (comm/link.hpp: one per sender and class):
+  // leader_gcs: the leaders and the GCS; member_leader: every robot (members up, leaders down).
+  [[nodiscard]] double senders(const std::string& link) const;
+  // The link's rate per sender: over the run, and in its busiest second (nullopt without it).
+  [[nodiscard]] double mean_bytes_per_s_per_sender(const std::string& link) const;
+  [[nodiscard]] std::optional<double> peak_bytes_per_s_per_sender(const std::string& link) const;
   // The GCS declared the map complete, but the simulator's ground truth says less than
   // kCompleteExploredFraction was seen: the run's steps mean nothing.
   [[nodiscard]] bool ended_early() const;
@@ -154,6 +219,11 @@ struct RunRow {
 // or damaged.
 [[nodiscard]] std::optional<RunNumbers> load_run_numbers(const std::string& run_dir,
                                                          std::string& why);
+
+// Bandwidth: each map's demand per sender on each of kCappedLinks (the mean over the successful
+// uncapped cap_encoding runs among `rows` of their mean and peak rates), and every run waiting for
+// it given its cap. Returns the map labels it could not measure (no such run, or no traffic.csv).
+std::vector<std::string> resolve_demand(ExperimentPlan& plan, const std::vector<RunRow>& rows);
 
 // Every run of the plan with its numbers (a run marked ok whose metrics are gone counts as
 // failed; a pending run that left metrics counts as ok).
@@ -186,7 +256,10 @@ std::vector<std::string> write_outputs(const std::string& dir, const ExperimentO
 
 // The CSV header of a kind: run, map, method, seed, the kind's setting columns, then status,
 // complete, steps, steps_to_99, planning_rounds, explored_percent, ticks_run, wall_seconds,
-// traffic_bytes, map_bytes, map_bytes_per_robot_second, log, failure.
+// traffic_bytes, map_bytes, map_bytes_per_robot_second, radio_bytes, sim_robot_on_robot_bytes
+// (traffic_bytes split: RunNumbers::radio_bytes), for each of kCappedLinks LINK_bytes,
+// LINK_peak_bytes_per_s (its busiest second), LINK_queue_median_ticks and LINK_queue_p95_ticks
+// (under a cap), then log, failure.
 [[nodiscard]] std::vector<std::string> csv_header(ExperimentKind kind);
 
 }  // namespace swarm::tools

@@ -25,10 +25,19 @@ std::vector<RunSetting> settings_of(const ExperimentPlan& p) {
       for (auto d : p.member_leader_delays_ticks) add(RunSetting::delays(0, d));
       break;
     case ExperimentKind::kBandwidth:
-      // The encodings without a cap, then the caps with cap_encoding (sharing "unlimited").
+      // The encodings without a cap, then the caps with cap_encoding (sharing "unlimited"):
+      // absolute ones, or shares of each link's demand (their bytes per second unset here).
       for (auto e : p.encodings) add(RunSetting::encoding_and_cap(e, 0.0));
+      add(RunSetting::encoding_and_cap(p.cap_encoding, 0.0));
       for (double c : p.leader_gcs_caps_bytes_per_s) {
         add(RunSetting::encoding_and_cap(p.cap_encoding, c));
+      }
+      if (p.leader_gcs_caps_bytes_per_s.empty()) {
+        for (const std::string& link : p.cap_links) {
+          for (const std::string& basis : p.cap_bases) {
+            for (double f : p.cap_fractions) add(RunSetting::demand_cap(p.cap_encoding, {link, basis, f}));
+          }
+        }
       }
       break;
     case ExperimentKind::kLoss:
@@ -64,35 +73,56 @@ Cell cell_of(const std::vector<RunRow>& rows, const std::string& map, const std:
   });
 }
 
+std::optional<double> value_of(const RunNumbers& n, Metric m) {
+  switch (m) {
+    case Metric::kSteps: return n.steps;
+    case Metric::kRounds: return n.planning_rounds;
+    case Metric::kStepsTo99: return n.steps_to_99;
+    case Metric::kExploredPercent: return 100.0 * n.explored_fraction;
+    case Metric::kTrafficBytes: return n.traffic_bytes;
+    case Metric::kRadioBytes: return n.radio_bytes();
+    case Metric::kOnRobotBytes: return n.on_robot_bytes();
+    case Metric::kConflicts: return n.conflicts;
+    case Metric::kDelivered: return n.delivered;
+    case Metric::kMapBytes: return n.map_bytes;
+    case Metric::kMapBytesPerRobotSecond: return n.map_bytes_per_robot_second();
+  }
+  return std::nullopt;
+}
+
 Summary summary_of(const Cell& c, Metric m) {
   std::vector<double> v;
   for (const RunRow* r : c.ok) {
-    const RunNumbers& n = *r->numbers;
-    switch (m) {
-      case Metric::kSteps:
-        v.push_back(n.steps);
-        break;
-      case Metric::kRounds:
-        v.push_back(n.planning_rounds);
-        break;
-      case Metric::kStepsTo99:
-        if (n.steps_to_99) v.push_back(*n.steps_to_99);
-        break;
-      case Metric::kExploredPercent:
-        v.push_back(100.0 * n.explored_fraction);
-        break;
-      case Metric::kTrafficBytes:
-        v.push_back(n.traffic_bytes);
-        break;
-      case Metric::kMapBytes:
-        v.push_back(n.map_bytes);
-        break;
-      case Metric::kMapBytesPerRobotSecond:
-        v.push_back(n.map_bytes_per_robot_second());
-        break;
-    }
+    if (const auto x = value_of(*r->numbers, m)) v.push_back(*x);
   }
   return summarize(v);
+}
+
+PairedDifference paired_of(const Cell& c, const Cell& reference, Metric m) {
+  std::vector<double> values, refs;
+  for (const RunRow* r : c.ok) {
+    const auto x = value_of(*r->numbers, m);
+    if (!x) continue;
+    for (const RunRow* q : reference.ok) {
+      if (q->run.seed != r->run.seed) continue;
+      if (const auto y = value_of(*q->numbers, m)) {
+        values.push_back(*x);
+        refs.push_back(*y);
+      }
+      break;
+    }
+  }
+  return paired_difference(values, refs);
+}
+
+nlohmann::json paired_json(const PairedDifference& d) {
+  if (d.n < 2 || !std::isfinite(d.low)) return {{"pairs", d.n}, {"mean", nullptr}};
+  return {{"pairs", d.n},
+          {"mean", d.mean},
+          {"ci95", {d.low, d.high}},
+          {"mean_percent", optional_json(d.mean_pct)},
+          {"ci95_percent", {optional_json(d.low_pct), optional_json(d.high_pct)}},
+          {"significant", d.significant}};
 }
 
 std::string format_cell(const Cell& c, Metric m, int decimals) {
@@ -100,7 +130,8 @@ std::string format_cell(const Cell& c, Metric m, int decimals) {
   if (c.failed > 0) s += "*";
   if (c.ended_early > 0) s += "!";
   // Steps of a run stopped at max_ticks are a lower bound; 99 % may never have been reached.
-  if (c.incomplete > 0 && m != Metric::kTrafficBytes && m != Metric::kMapBytes &&
+  if (c.incomplete > 0 && m != Metric::kTrafficBytes && m != Metric::kRadioBytes && m != Metric::kOnRobotBytes &&
+      m != Metric::kMapBytes &&
       m != Metric::kMapBytesPerRobotSecond) {
     s += "+";
   }
@@ -151,9 +182,6 @@ std::string sweep_table(const Sweep& sw, const ExperimentPlan& plan,
   TextTable t(header);
   const bool with_baseline =
       std::find(plan.methods.begin(), plan.methods.end(), "baseline") != plan.methods.end();
-  auto mean = [&](const std::string& method, const RunSetting& s, Metric m) {
-    return summary_of(cell_of(rows, map, method, s), m).mean;
-  };
   auto metric_rows = [&](Metric m, const std::string& title, bool compare) {
     t.add_section(title);
     for (const auto& method : plan.methods) {
@@ -162,25 +190,34 @@ std::string sweep_table(const Sweep& sw, const ExperimentPlan& plan,
       }));
     }
     if (!compare || sw.settings.empty()) return;
+    // Each change as the mean of the paired differences (same seeds) with its 95 % interval.
     for (const auto& method : plan.methods) {
-      const double reference = mean(method, sw.settings[sw.reference], m);
+      const Cell reference = cell_of(rows, map, method, sw.settings[sw.reference]);
       t.add_row(row_over("  " + method + " vs " + sw.reference_name, sw.settings,
                          [&](const RunSetting& s) {
-                           return format_percent_change(
-                               percent_change(mean(method, s, m), reference));
+                           return s == sw.settings[sw.reference]
+                                      ? std::string("ref")
+                                      : format_paired_pct(paired_of(cell_of(rows, map, method, s), reference, m));
                          }));
     }
     if (!with_baseline) return;
     for (const auto& method : plan.methods) {
       if (method == "baseline") continue;
       t.add_row(row_over("  " + method + " vs baseline", sw.settings, [&](const RunSetting& s) {
-        return format_percent_change(percent_change(mean(method, s, m), mean("baseline", s, m)));
+        return format_paired_pct(paired_of(cell_of(rows, map, method, s), cell_of(rows, map, "baseline", s), m));
       }));
     }
   };
-  metric_rows(Metric::kSteps, "steps", true);
+  const bool chained = !plan.mission.empty();
+  metric_rows(Metric::kSteps, chained ? "ticks (the whole mission)" : "steps", true);
   metric_rows(Metric::kRounds, "planning rounds", true);
   if (with_steps_to_99) metric_rows(Metric::kStepsTo99, "steps to 99 % explored", false);
+  if (chained) {
+    metric_rows(Metric::kConflicts, "conflicts (vertex + edge, ground truth)", false);
+    if (std::find(plan.mission.begin(), plan.mission.end(), "collect") != plan.mission.end()) {
+      metric_rows(Metric::kDelivered, "objects delivered", false);
+    }
+  }
   t.add_section("complete runs");
   for (const auto& method : plan.methods) {
     t.add_row(row_over("  " + method, sw.settings, [&](const RunSetting& s) {
@@ -310,9 +347,9 @@ std::string format_rate(double bytes_per_s) {
   if (bytes_per_s <= 0) return "unlimited";
   char buf[32];
   if (bytes_per_s >= 1000) {
-    std::snprintf(buf, sizeof buf, "%g kB/s", bytes_per_s / 1000.0);
+    std::snprintf(buf, sizeof buf, "%.3g kB/s", bytes_per_s / 1000.0);
   } else {
-    std::snprintf(buf, sizeof buf, "%g B/s", bytes_per_s);
+    std::snprintf(buf, sizeof buf, "%.3g B/s", bytes_per_s);
   }
   return buf;
 }

@@ -27,6 +27,18 @@ void analyze_bandwidth(const ExperimentPlan& plan, const std::vector<RunRow>& ro
                        KindOutputs& out);
 void analyze_loss(const ExperimentPlan& plan, const std::vector<RunRow>& rows, KindOutputs& out);
 
+// One cap of a bandwidth sweep: its bytes per second, its runs' mean steps, and whether all of
+// them completed.
+struct KneePoint {
+  double cap = 0;
+  double steps = 0;
+  bool all_complete = true;
+};
+// The knee: going down from the largest cap, the last one before the first that is incomplete or
+// slower than uncapped_steps by more than tolerance_percent. nullopt when the largest already is.
+[[nodiscard]] std::optional<double> knee_of(const std::vector<KneePoint>& points, double uncapped_steps,
+                                            double tolerance_percent);
+
 // The settings a kind sweeps, in table order (make_plan runs each for every map and method).
 [[nodiscard]] std::vector<RunSetting> settings_of(const ExperimentPlan& plan);
 
@@ -36,6 +48,10 @@ enum class Metric {
   kStepsTo99,
   kExploredPercent,
   kTrafficBytes,
+  kRadioBytes,    // kTrafficBytes without the simulator's sensing of the robots (on the robot)
+  kOnRobotBytes,  // that sensing alone
+  kConflicts,     // vertex + edge conflict events (a chained mission's)
+  kDelivered,     // collect's delivered objects
   kMapBytes,
   kMapBytesPerRobotSecond,
 };
@@ -58,6 +74,13 @@ struct Cell {
                            const std::string& method, const RunSetting& setting);
 
 [[nodiscard]] Summary summary_of(const Cell& c, Metric m);
+// One run's value of `m` (nullopt: it has none, e.g. no steps to 99 %).
+[[nodiscard]] std::optional<double> value_of(const RunNumbers& n, Metric m);
+// `m` of c's runs against the reference's runs of the same seeds (seeds in only one are left
+// out): the mean paired difference with its 95 % confidence interval (stats.hpp).
+[[nodiscard]] PairedDifference paired_of(const Cell& c, const Cell& reference, Metric m);
+// {"pairs", "mean", "ci95": [low, high], "mean_percent", "ci95_percent": [..], "significant"}.
+[[nodiscard]] nlohmann::json paired_json(const PairedDifference& d);
 // "mean ± std" plus markers: "*" some runs failed (left out), "!" some runs ended early (left
 // out), "+" some runs incomplete (counted with max_ticks).
 [[nodiscard]] std::string format_cell(const Cell& c, Metric m, int decimals);
@@ -83,7 +106,8 @@ struct Sweep {
 
 // Steps, planning rounds (and steps to 99 % when asked) of every method over the sweep on `map`,
 // each with "METHOD vs <reference>" rows and "METHOD vs baseline" rows (when the baseline is
-// among the methods), then the complete runs.
+// among the methods): the mean paired difference over seeds in percent of the reference, its 95 %
+// confidence interval, "(n.s.)" when that includes 0; then the complete runs.
 [[nodiscard]] std::string sweep_table(const Sweep& sweep, const ExperimentPlan& plan,
                                       const std::vector<RunRow>& rows, const std::string& map,
                                       bool with_steps_to_99);

@@ -61,6 +61,26 @@ std::vector<Command> add_swarm_experiments(CLI::App& experiment) {
                   "Wall-clock limit per run in seconds (0 = none); a stuck run fails")
         ->capture_default_str()
         ->check(wall_seconds());
+    if (kind != ExperimentKind::kExplore) {
+      c->add_option("--mission", e.mission,
+                    "The phases every run drives, e.g. explore,cover,mapf,collect (default: the scenario's); the "
+                    "tables then give the whole mission's ticks, conflicts and delivered objects")
+          ->delimiter(',');
+    }
+    if (kind == ExperimentKind::kBandwidth) {
+      c->add_option("--encodings", e.encodings, "Map encodings compared uncapped; default RAW_CELLS,RUN_LENGTH,ZSTD_RUN_LENGTH")
+          ->delimiter(',');
+      c->add_option("--cap-links", e.cap_links, "Link classes capped, one at a time; default leader_gcs,member_leader")
+          ->delimiter(',');
+      c->add_option("--cap-bases", e.cap_bases,
+                    "What the caps are shares of: mean (over the run) and/or peak (busiest second); default mean,peak")
+          ->delimiter(',');
+      c->add_option("--cap-fractions", e.cap_fractions, "Shares of the demand per sender; default 2,1,0.5,0.25,0.125")
+          ->delimiter(',');
+      c->add_option("--caps", e.caps,
+                    "Absolute leader<->GCS caps in bytes/s instead (0 = unlimited), e.g. 4000,16000,0")
+          ->delimiter(',');
+    }
     out.push_back({c, [f](std::ostream& o, std::ostream& err) {
                      ExperimentOptions e = f->options;
                      if (f->seeds_opt->count()) e.seeds = f->seeds;

@@ -76,16 +76,56 @@ std::vector<std::string> check_methods(const std::vector<std::string>& methods) 
   return out;
 }
 
+// The bandwidth flags, checked: names known, shares above 0, caps not negative.
+SweepChoices sweep_choices(const ExperimentOptions& o) {
+  SweepChoices c;
+  for (const std::string& e : o.encodings) {
+    swarm::scenario::MapEncoding v{};
+    if (!swarm::scenario::MapEncoding_Parse(e, &v)) {
+      throw BadInput("--encodings: unknown map encoding '" + e + "'; accepted: RAW_CELLS, RUN_LENGTH, ZSTD_RUN_LENGTH");
+    }
+    c.encodings.push_back(v);
+  }
+  const auto names = [](const std::vector<std::string>& given, const auto& known, const std::string& flag) {
+    for (const std::string& v : given) {
+      if (std::find(std::begin(known), std::end(known), v) == std::end(known)) {
+        std::vector<std::string> k(std::begin(known), std::end(known));
+        throw BadInput(flag + ": unknown '" + v + "'; accepted: " + join(k));
+      }
+    }
+    return given;
+  };
+  c.cap_links = names(o.cap_links, kCappedLinks, "--cap-links");
+  c.cap_bases = names(o.cap_bases, kDemandBases, "--cap-bases");
+  for (const double f : o.cap_fractions) {
+    if (!std::isfinite(f) || f <= 0 || f > 1e6) {
+      throw BadInput("--cap-fractions " + analysis::format_number(f, 3) + ": a share of the demand must be above 0");
+    }
+  }
+  c.cap_fractions = o.cap_fractions;
+  for (const double b : o.caps) {
+    if (!std::isfinite(b) || b < 0) throw BadInput("--caps " + analysis::format_number(b, 0) + ": bytes per second, 0 = unlimited");
+  }
+  c.leader_gcs_caps_bytes_per_s = o.caps;
+  return c;
+}
+
 // "lg-delay 10 ticks" etc.: the setting of a run for the progress lines.
 std::string setting_text(ExperimentKind kind, const RunSetting& s) {
   switch (kind) {
     case ExperimentKind::kLatency:
       return "leader-gcs delay " + std::to_string(s.leader_gcs_delay_ticks.value_or(0)) +
              ", member-leader delay " + std::to_string(s.member_leader_delay_ticks.value_or(0));
-    case ExperimentKind::kBandwidth:
-      return (s.map_encoding ? analysis::encoding_name(*s.map_encoding) : std::string("?")) +
-             ", leader-gcs cap " +
-             analysis::format_rate(s.leader_gcs_bandwidth_bytes_per_s.value_or(0));
+    case ExperimentKind::kBandwidth: {
+      const std::string e = s.map_encoding ? analysis::encoding_name(*s.map_encoding) : std::string("?");
+      if (s.demand) {
+        const double cap = (s.demand->link == "leader_gcs" ? s.leader_gcs_bandwidth_bytes_per_s
+                                                           : s.member_leader_bandwidth_bytes_per_s).value_or(0);
+        return e + ", " + s.demand->link + " cap " + analysis::format_number(s.demand->fraction, 3) + " x " +
+               s.demand->basis + " = " + analysis::format_rate(cap);
+      }
+      return e + ", leader-gcs cap " + analysis::format_rate(s.leader_gcs_bandwidth_bytes_per_s.value_or(0));
+    }
     case ExperimentKind::kLoss:
       return "loss " + analysis::format_number(100.0 * s.loss.value_or(0), 0) + " %";
     case ExperimentKind::kExplore:
@@ -151,6 +191,22 @@ std::string plan_text(const ExperimentPlan& p) {
   return s;
 }
 
+// "demand per sender, measured uncapped on maze1 (3 runs): leader_gcs mean 0.21 kB/s, peak 1.9 kB/s; ..."
+std::string demand_text(const ExperimentPlan& plan) {
+  std::string s;
+  for (const auto& [map, links] : plan.demand) {
+    s += "demand per sender, measured uncapped on " + map + ":";
+    std::string sep = " ";
+    for (const auto& [link, d] : links) {
+      s += sep + link + " mean " + analysis::format_rate(d.mean_bytes_per_s) + ", peak " +
+           analysis::format_rate(d.peak_bytes_per_s) + " (" + std::to_string(d.runs) + " runs)";
+      sep = "; ";
+    }
+    s += "\n";
+  }
+  return s;
+}
+
 // Copies a run's pictures to DIR/pictures/<map>-<method>-<file>.
 void collect_pictures(const std::string& dir, const ExperimentRun& run, const RunOutcome& o) {
   std::error_code ec;
@@ -194,6 +250,7 @@ int experiment_command(const ExperimentOptions& o, std::ostream& out, std::ostre
         swarm::scenario::Scenario s = base;
         RunOverrides ov;
         ov.map = map;
+        ov.mission = o.mission;
         apply_overrides(s, ov);
         cfg::World world = cfg::resolve_world(s, fs::absolute(scenario_path).parent_path().string(), scenario_path);
         swarm::tasks::resolve_mission(world, scenario_path);
@@ -202,7 +259,8 @@ int experiment_command(const ExperimentOptions& o, std::ostream& out, std::ostre
       throw BadInput(e.what());
     }
     plan = make_plan(o.kind, maps, methods, static_cast<std::uint32_t>(seeds), base,
-                     o.scenario_path.empty() ? "" : fs::absolute(o.scenario_path).string());
+                     o.scenario_path.empty() ? "" : fs::absolute(o.scenario_path).string(), sweep_choices(o));
+    plan.mission = o.mission;
 
     dir = o.out_dir.empty() ? "runs/experiment-" + kind_name(o.kind) + "-" +
                                   local_timestamp(std::time(nullptr))
@@ -237,21 +295,21 @@ int experiment_command(const ExperimentOptions& o, std::ostream& out, std::ostre
     }
   }
 
-  std::vector<RunJob> jobs;
-  for (const ExperimentRun& r : plan.runs) {
+  const auto job_of = [&](const ExperimentRun& r) {
     RunJob j;
     j.options.scenario_path = plan.scenario;
     j.options.overrides.map = r.map;
     j.options.overrides.mode = r.method;
     j.options.overrides.seed = r.seed;
+    j.options.overrides.mission = plan.mission;
     j.options.out_dir = (fs::path(dir) / r.dir).string();
     j.options.timeout = o.timeout;
     j.options.bin_dir = bin_dir;
     const RunSetting setting = r.setting;
     j.options.customize = [setting](swarm::scenario::Scenario& s) { setting.apply(s); };
     j.pictures = r.pictures;
-    jobs.push_back(std::move(j));
-  }
+    return j;
+  };
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   RunnerOptions ro;
   ro.jobs = static_cast<int>(o.jobs.value_or(cores));
@@ -262,29 +320,61 @@ int experiment_command(const ExperimentOptions& o, std::ostream& out, std::ostre
   const auto start = std::chrono::steady_clock::now();
   std::size_t finished = 0;
   const int width = static_cast<int>(std::to_string(plan.runs.size()).size());
-  ro.on_finished = [&](std::size_t i, const RunOutcome& outcome) {
-    ExperimentRun& run = plan.runs[i];
-    if (outcome.interrupted) return;  // stays pending
-    ++finished;
-    run.status = outcome.ok ? RunStatus::kOk : RunStatus::kFailed;
-    run.failure = outcome.ok ? "" : outcome.message;
-    run.log = outcome.log_path.empty() ? "" : fs::relative(outcome.log_path, dir).string();
-    if (!outcome.pictures.empty()) collect_pictures(dir, run, outcome);
+  // Runs the plan's runs `which`, ro.jobs at a time; false when interrupted.
+  const auto run_batch = [&](const std::vector<std::size_t>& which) {
+    std::vector<RunJob> jobs;
+    for (const std::size_t i : which) jobs.push_back(job_of(plan.runs[i]));
+    ro.on_finished = [&](std::size_t k, const RunOutcome& outcome) {
+      ExperimentRun& run = plan.runs[which[k]];
+      if (outcome.interrupted) return;  // stays pending
+      ++finished;
+      run.status = outcome.ok ? RunStatus::kOk : RunStatus::kFailed;
+      run.failure = outcome.ok ? "" : outcome.message;
+      run.log = outcome.log_path.empty() ? "" : fs::relative(outcome.log_path, dir).string();
+      if (!outcome.pictures.empty()) collect_pictures(dir, run, outcome);
+      try {
+        write_manifest(dir, plan);
+      } catch (const std::exception& e) {
+        err << me << ": " << e.what() << "\n";
+      }
+      char head[32];
+      std::snprintf(head, sizeof head, "[%*zu/%zu] ", width, finished, plan.runs.size());
+      out << head << progress_line(plan, run, outcome) << "\n";
+      out.flush();
+    };
+    const std::vector<RunOutcome> outcomes = run_jobs(jobs, ro);
+    return std::none_of(outcomes.begin(), outcomes.end(), [](const RunOutcome& x) { return x.interrupted; });
+  };
+  // First every run whose setting is known; then (bandwidth) the caps set from the demand those
+  // measured.
+  std::vector<std::size_t> now, later;
+  for (std::size_t i = 0; i < plan.runs.size(); ++i) (plan.runs[i].setting.waits_for_demand() ? later : now).push_back(i);
+  bool whole = run_batch(now);
+  if (whole && !later.empty()) {
+    const std::vector<std::string> missing = resolve_demand(plan, load_rows(dir, plan));
+    out << demand_text(plan);
+    std::vector<std::size_t> ready;
+    for (const std::size_t i : later) {
+      ExperimentRun& run = plan.runs[i];
+      if (!run.setting.waits_for_demand()) {
+        ready.push_back(i);
+        continue;
+      }
+      run.status = RunStatus::kFailed;
+      run.failure = "not run: no demand measured on " + map_label(run.map) +
+                    " (every uncapped run failed, ended early or left no traffic.csv)";
+    }
+    if (!missing.empty()) err << me << ": no demand measured on " << join(missing) << "; their capped runs are not run\n";
     try {
       write_manifest(dir, plan);
     } catch (const std::exception& e) {
       err << me << ": " << e.what() << "\n";
     }
-    char head[32];
-    std::snprintf(head, sizeof head, "[%*zu/%zu] ", width, finished, plan.runs.size());
-    out << head << progress_line(plan, run, outcome) << "\n";
-    out.flush();
-  };
-  const std::vector<RunOutcome> outcomes = run_jobs(jobs, ro);
+    whole = run_batch(ready);
+  }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (std::any_of(outcomes.begin(), outcomes.end(),
-                  [](const RunOutcome& x) { return x.interrupted; })) {
+  if (!whole) {
     err << me << ": interrupted after " << finished << " of " << plan.runs.size()
         << " runs; `swarm report " << dir << "` tables the finished ones\n";
     return 130;

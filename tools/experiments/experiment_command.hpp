@@ -4,6 +4,8 @@
 //                             [--methods group-frontier,baseline,ideal]
 //   swarm experiment latency  [--seeds 3] [--maps maze1] [--methods group-frontier,baseline]
 //   swarm experiment bandwidth [--seeds 3] [--maps maze1] [--methods group-frontier]
+//                             [--encodings RAW_CELLS,RUN_LENGTH,ZSTD_RUN_LENGTH] [--cap-links leader_gcs,member_leader]
+//                             [--cap-bases mean,peak] [--cap-fractions 2,1,0.5,0.25,0.125] [--caps B/S,...]
 //   swarm experiment loss     [--seeds 3] [--maps maze1] [--methods group-frontier,baseline]
 //     common: [--jobs N (default: the core count)] [--out DIR] [--scenario FILE] [--timeout S]
 //   swarm report DIR... [--out DIR]
@@ -38,6 +40,11 @@ struct ExperimentOptions {
   // still going after 5 minutes is stuck: it is stopped and counted as failed.
   std::chrono::seconds timeout{300};
   std::string bin_dir;                // "" = the folder of the running executable
+  // bandwidth: the sweep's choices, by flag (--encodings, --cap-fractions, --cap-links, --cap-bases,
+  // --caps); as names here, checked by experiment_command.
+  std::vector<std::string> encodings, cap_links, cap_bases;
+  std::vector<double> cap_fractions, caps;
+  std::vector<std::string> mission;  // latency, bandwidth, loss: --mission (empty = the scenario's)
 };
 
 int experiment_command(const ExperimentOptions& options, std::ostream& out, std::ostream& err);

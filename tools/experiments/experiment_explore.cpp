@@ -96,11 +96,14 @@ void analyze_explore(const ExperimentPlan& plan, const std::vector<RunRow>& rows
       t.add_row(cells);
     }
     if (!mr.compare) continue;
+    // Per map, the mean paired difference over seeds with its 95 % interval ("(n.s.)": it
+    // includes 0); the last column, the mean of the per-map changes.
     auto change_row = [&](const std::string& method, const std::string& reference) {
-      const auto v = changes(mr.metric, method, reference);
       std::vector<std::string> cells = {"  " + method + " vs " + reference};
-      for (const auto& c : v) cells.push_back(format_percent_change(c));
-      cells.push_back(format_percent_change(mean_of(v)));
+      for (const auto& map : plan.maps) {
+        cells.push_back(format_paired_pct(paired_of(cell(map, method), cell(map, reference), mr.metric)));
+      }
+      cells.push_back(format_percent_change(mean_of(changes(mr.metric, method, reference))));
       t.add_row(cells);
     };
     if (with_baseline) {
@@ -133,6 +136,8 @@ void analyze_explore(const ExperimentPlan& plan, const std::vector<RunRow>& rows
         if (mr.compare && with_baseline && method != "baseline") {
           a[std::string(mr.key) + "_change_vs_baseline_percent"] =
               optional_json(changes(mr.metric, method, "baseline")[i]);
+          a[std::string(mr.key) + "_paired_vs_baseline"] =
+              paired_json(paired_of(c, cell(plan.maps[i], "baseline"), mr.metric));
         }
       }
       out.aggregates.push_back(a);

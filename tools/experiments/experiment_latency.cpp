@@ -82,6 +82,7 @@ void analyze_latency(const ExperimentPlan& plan, const std::vector<RunRow>& rows
                {"delay_ticks", ls.delays[i]},
                {"runs", cell_json(c)},
                {"steps", summary_json(summary_of(c, Metric::kSteps))},
+               {"steps_vs_no_delay", paired_json(paired_of(c, cell_of(rows, map, method, sw.settings[sw.reference]), Metric::kSteps))},
                {"planning_rounds", summary_json(summary_of(c, Metric::kRounds))}});
         }
       }

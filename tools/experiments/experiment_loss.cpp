@@ -51,6 +51,7 @@ void analyze_loss(const ExperimentPlan& plan, const std::vector<RunRow>& rows, K
              {"loss", plan.losses[i]},
              {"runs", cell_json(c)},
              {"steps", summary_json(summary_of(c, Metric::kSteps))},
+             {"steps_vs_no_loss", paired_json(paired_of(c, cell_of(rows, map, method, sw.settings[sw.reference]), Metric::kSteps))},
              {"planning_rounds", summary_json(summary_of(c, Metric::kRounds))},
              {"steps_to_99", summary_json(summary_of(c, Metric::kStepsTo99))}});
       }

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "run_end.hpp"
+#include "traffic_over_time.hpp"
 #include "swarm/record/record.hpp"
 #include "swarm/record/metrics.hpp"
 #include "swarm/record/render.hpp"
@@ -70,6 +71,12 @@ RunOutcome run_one(const RunJob& job, int domain) {
   if (!fs::exists(fs::path(o.run_dir) / "metrics.json")) {
     o.message = "every process exited normally, but the GCS wrote no metrics.json";
     o.log_path = (fs::path(o.run_dir) / "logs" / "gcs.log").string();
+    return o;
+  }
+  try {
+    write_traffic_files(swarm::record::read_record(swarm::record::run_record_path(o.run_dir)), o.run_dir);
+  } catch (const std::exception& e) {
+    o.message = std::string("every process exited normally, but the traffic over time failed: ") + e.what();
     return o;
   }
   o.ok = true;

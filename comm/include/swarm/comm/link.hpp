@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -72,10 +73,14 @@ class LinkSender {
   // simulator's per-tick sensor data (no inherent one-tick lag).
   std::uint32_t deliver_tick(LinkClass link, std::uint32_t tick, std::size_t bytes,
                              std::uint64_t topic_hash, std::uint32_t seq, bool from_clock_master);
+  // What the last deliver_tick's message waits behind the ones before it on a capped link: the
+  // ticks its cap adds (0 when the link is free); nullopt when its link has no cap.
+  [[nodiscard]] std::optional<std::uint32_t> last_queued_ticks() const { return last_queued_; }
 
  private:
   const LinkTable& table_;
   std::array<double, kLinkClasses> busy_until_s_{};  // token bucket: when the link is free again
+  std::optional<std::uint32_t> last_queued_;
 };
 
 // Receiver side: is this transmission (attempt 0 = the first) of the message lost?

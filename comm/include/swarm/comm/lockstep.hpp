@@ -232,7 +232,7 @@ class Mailbox::Outlet : public Mailbox::OutletBase {
     s.deliver_tick(box_.link_sender_.deliver_tick(link_, box_.tick_, bytes, topic_hash_, seq_,
                                                   box_.self_ == box_.topology_.sim()));
     ++seq_;
-    box_.traffic_.sent(family_, link_name(link_), bytes, receivers_.size());
+    box_.traffic_.sent(family_, link_name(link_), bytes, receivers_.size(), box_.link_sender_.last_queued_ticks());
     if (box_.replaying_) return;  // the old process sent it (and the clock master counted it)
     writer_.write(msg);
     {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,12 +22,18 @@ struct TrafficCount {
   std::uint64_t received_bytes = 0;
   std::uint64_t lost_transmissions = 0;  // emulated losses, retransmitted on reliable topics
   std::uint64_t dropped_messages = 0;    // messages lost for good (best-effort topics)
+  // On a link with a bandwidth cap: queued_ticks[d] = the messages sent that waited d ticks behind
+  // earlier ones (the last entry: kQueueBins - 1 or more); empty on an uncapped link.
+  std::vector<std::uint64_t> queued_ticks;
 };
+inline constexpr std::size_t kQueueBins = 64;
 
 class TrafficAccount {
  public:
   using Key = std::pair<std::string, std::string>;  // (topic family, link name)
-  void sent(const std::string& family, const std::string& link, std::uint64_t bytes, std::size_t receivers = 1);
+  // `queued`: the ticks a bandwidth cap held the message (LinkSender::last_queued_ticks).
+  void sent(const std::string& family, const std::string& link, std::uint64_t bytes, std::size_t receivers = 1,
+            std::optional<std::uint32_t> queued = std::nullopt);
   // A message that arrived after `lost` lost transmissions (each counted as received bytes too:
   // they crossed the link); `dropped` = lost for good.
   void received(const std::string& family, const std::string& link, std::uint64_t bytes, std::uint32_t lost,

@@ -85,7 +85,14 @@ struct LinkTraffic {
   std::uint64_t bytes = 0;
   std::uint64_t lost_transmissions = 0;
   std::uint64_t dropped_messages = 0;
+  // Under a bandwidth cap: queued_ticks[d] = messages that waited d ticks behind earlier ones
+  // (comm::TrafficCount); empty on an uncapped link.
+  std::vector<std::uint64_t> queued_ticks;
 };
+
+// The q-quantile (0..1) of the ticks in a queued_ticks histogram: the smallest d with at least
+// q of the messages at or below it. nullopt for an empty histogram.
+[[nodiscard]] std::optional<std::uint32_t> queue_quantile(const std::vector<std::uint64_t>& queued_ticks, double q);
 
 struct Traffic {
   std::map<std::string, TopicTraffic> by_topic;
