@@ -84,7 +84,7 @@ void BM_ViewOverhead(benchmark::State& state) {
   state.counters["ci95_low_pct"] = d.low_pct;
   state.counters["ci95_high_pct"] = d.high_pct;
 }
-BENCHMARK(BM_ViewOverhead)->ArgName("pairs")->Arg(8)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_ViewOverhead)->ArgName("pairs")->Arg(24)->Iterations(1)->Unit(benchmark::kSecond);
 
 void BM_ExportMcap(benchmark::State& state) {
   namespace fs = std::filesystem;

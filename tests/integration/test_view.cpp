@@ -213,12 +213,21 @@ cv::Mat screenshot(int port, const std::string& query, const std::string& dir, c
   return cv::imread(png, cv::IMREAD_COLOR);
 }
 
+// `swarm run ARGS --out DIR/run` to its end, which must be exit 0, and its record (none if not).
+std::vector<record::Frame> recorded_run(const std::string& dir, const std::string& args) {
+  const CommandResult run = run_swarm("run " + args + " --out " + dir + "/run");
+  if (run.exit_code != 0) {
+    ADD_FAILURE() << "swarm run " << args << " exited " << run.exit_code << ":\n" << run.output;
+    return {};
+  }
+  return record::read_record(dir + "/run/run.pb");
+}
+
 TEST(View, TheReplayPageDrawsTheRobotsAndTheWallsWhereTheRecordHasThem) {
   ASSERT_EQ(::access("/usr/bin/chromium", X_OK), 0) << "chromium is missing: run scripts/install-deps.sh";
   const std::string dir = fresh_dir("view_replay");
-  const CommandResult run = run_swarm("run --map warehouse-5x8 --mission explore,cover --out " + dir + "/run");
-  ASSERT_EQ(run.exit_code, 0) << run.output;
-  const auto frames = record::read_record(dir + "/run/run.pb");
+  const auto frames = recorded_run(dir, "--map warehouse-5x8 --mission explore,cover");
+  ASSERT_FALSE(frames.empty());
   const record::Header& h = frames.front().header();
   const config::World world = config::resolve_world(h.scenario(), ".");
   const record::Poses* poses = nullptr;  // a tick in the middle of the run
@@ -470,18 +479,14 @@ std::vector<planner::Cell> entity_cells(const nlohmann::json& e, const record::H
   return out;
 }
 
-// `swarm run --view`: a client speaking Foxglove's protocol sees every robot where the record has
-// it at that tick, then goes away mid-run without a close; the run's record is byte for byte the
-// one of the same run unwatched.
 // A collect phase replayed: the simulator's tally gives each object's cell and holder every tick,
 // which the page draws: a gold diamond on each object's cell while it lies there, a small one on
 // the robot that carries it, nothing once it is delivered.
 TEST(View, TheReplayShowsEachObjectLyingCarriedOrGone) {
   ASSERT_EQ(::access("/usr/bin/chromium", X_OK), 0) << "chromium is missing: run scripts/install-deps.sh";
   const std::string dir = fresh_dir("view_objects");
-  const CommandResult run = run_swarm("run --map warehouse-5x8 --mission collect --out " + dir + "/run");
-  ASSERT_EQ(run.exit_code, 0) << run.output;
-  const auto frames = record::read_record(dir + "/run/run.pb");
+  const auto frames = recorded_run(dir, "--map warehouse-5x8 --mission collect");
+  ASSERT_FALSE(frames.empty());
   const record::Header& h = frames.front().header();
   const record::Poses* first = nullptr;    // the phase's first tick: every object lying
   const record::Poses* carried = nullptr;  // the first tick a robot carries one
@@ -553,6 +558,9 @@ TEST(View, TheReplayShowsEachObjectLyingCarriedOrGone) {
   EXPECT_EQ(viewer.stop(), 0);
 }
 
+// `swarm run --view`: a client speaking Foxglove's protocol sees every robot where the record has
+// it at that tick, then goes away mid-run without a close; the run's record is byte for byte the
+// one of the same run unwatched.
 TEST(View, ALiveRunIsWatchedOverFoxglovesProtocolAndNotChangedByIt) {
   const std::string dir = fresh_dir("view_live");
   const CommandResult plain = run_swarm("run --map maze1 --seed 3 --out " + dir + "/plain");

@@ -256,8 +256,8 @@ std::string footnotes(const std::vector<RunRow>& rows) {
            " % explored (ground truth); they are left out (listed below)\n";
   }
   if (any_incomplete) {
-    out += "+ some runs of this cell stopped at max_ticks, incomplete: their steps count as "
-           "max_ticks (a lower bound)\n";
+    out += "+ some runs of this cell ended incomplete, at max_ticks or ended as stalled (no progress in "
+           "stall_ticks): their steps count as the tick they ended at (a lower bound)\n";
   }
   for (const RunRow& r : rows) {
     if (r.numbers && r.numbers->ended_early()) {

@@ -141,6 +141,26 @@ std::string recommendation(const ExperimentPlan& plan, const std::vector<RunRow>
   return text;
 }
 
+// Map bytes per robot-second by encoding, uncapped: a bar per (map, method) in each encoding's group.
+BarPanel encodings_panel(const ExperimentPlan& plan, const std::vector<RunRow>& rows) {
+  BarPanel bytes;
+  bytes.title = "Map traffic by encoding (no cap)";
+  bytes.y_label = "map bytes per robot-second";
+  bytes.x_label = "map_encoding";
+  for (MapEncoding e : plan.encodings) bytes.groups.push_back(encoding_name(e));
+  Sweep by_encoding;
+  for (MapEncoding e : plan.encodings) by_encoding.settings.push_back(uncapped(e));
+  for (const std::string& map : plan.maps) {
+    for (std::size_t mi = 0; mi < plan.methods.size(); ++mi) {
+      const std::string& method = plan.methods[mi];
+      const std::string name = plan.maps.size() > 1 ? method + " (" + map_label(map) + ")" : method;
+      bytes.series.push_back(sweep_series(by_encoding, rows, map, method, method_colour(method, static_cast<int>(mi)), name,
+                                          Metric::kMapBytesPerRobotSecond));
+    }
+  }
+  return bytes;
+}
+
 // The knee's tolerance: a cap "does not slow the run" while its mean steps stay within this of
 // the uncapped runs' (and all its runs complete).
 constexpr double kKneePercent = 5.0;
@@ -308,22 +328,7 @@ void analyze_bandwidth(const ExperimentPlan& plan, const std::vector<RunRow>& ro
 
   if (plan.leader_gcs_caps_bytes_per_s.empty()) {
     Figure f = seed_stats_figure("Bandwidth", rows);
-    BarPanel bytes;
-    bytes.title = "Map traffic by encoding (no cap)";
-    bytes.y_label = "map bytes per robot-second";
-    bytes.x_label = "map_encoding";
-    for (MapEncoding e : plan.encodings) bytes.groups.push_back(encoding_name(e));
-    Sweep by_encoding;
-    for (MapEncoding e : plan.encodings) by_encoding.settings.push_back(uncapped(e));
-    for (const std::string& map : plan.maps) {
-      for (std::size_t mi = 0; mi < plan.methods.size(); ++mi) {
-        const std::string& method = plan.methods[mi];
-        const std::string name = plan.maps.size() > 1 ? method + " (" + map_label(map) + ")" : method;
-        bytes.series.push_back(sweep_series(by_encoding, rows, map, method, method_colour(method, static_cast<int>(mi)),
-                                            name, Metric::kMapBytesPerRobotSecond));
-      }
-    }
-    f.panels.push_back(bytes);
+    f.panels.push_back(encodings_panel(plan, rows));
     text += "\ncaps per sender (comm/link.hpp: one token bucket per sender and link class) at shares of the "
             "link's demand, measured on the uncapped runs; the on-robot sim_robot link is never capped\n";
     for (const std::string& map : plan.maps) text += demand_caps_text(plan, rows, map, out, f);
@@ -349,13 +354,6 @@ void analyze_bandwidth(const ExperimentPlan& plan, const std::vector<RunRow>& ro
   caps.y_label = "steps";
   caps.x_ticks = sw.columns;
   caps.x_label = "leader<->GCS cap (" + encoding_name(plan.cap_encoding) + ")";
-  BarPanel bytes;
-  bytes.title = "Map traffic by encoding (no cap)";
-  bytes.y_label = "map bytes per robot-second";
-  bytes.x_label = "map_encoding";
-  for (MapEncoding e : plan.encodings) bytes.groups.push_back(encoding_name(e));
-  Sweep by_encoding;
-  for (MapEncoding e : plan.encodings) by_encoding.settings.push_back(uncapped(e));
 
   for (const std::string& map : plan.maps) {
     const std::string label = map_label(map);
@@ -367,8 +365,6 @@ void analyze_bandwidth(const ExperimentPlan& plan, const std::vector<RunRow>& ro
       const std::string name = plan.maps.size() > 1 ? method + " (" + label + ")" : method;
       const Colour colour = method_colour(method, static_cast<int>(mi));
       caps.series.push_back(sweep_series(sw, rows, map, method, colour, name, Metric::kSteps));
-      bytes.series.push_back(sweep_series(by_encoding, rows, map, method, colour, name,
-                                          Metric::kMapBytesPerRobotSecond));
       for (const RunSetting& s : sw.settings) {
         const Cell c = cell_of(rows, map, method, s);
         out.aggregates.push_back(
@@ -386,7 +382,7 @@ void analyze_bandwidth(const ExperimentPlan& plan, const std::vector<RunRow>& ro
   text += footnotes(rows);
   out.table = text;
   Figure f = seed_stats_figure("Bandwidth", rows);
-  f.panels.push_back(bytes);
+  f.panels.push_back(encodings_panel(plan, rows));
   f.panels.push_back(caps);
   out.figures.emplace_back("bandwidth.png", f);
 }
