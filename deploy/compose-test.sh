@@ -35,6 +35,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/.." && pwd)
 # shellcheck source=deploy/lib.sh
 source "$here/lib.sh"
+# shellcheck source=deploy/results.sh
+source "$here/results.sh"
 
 compose_choice=""
 file=$here/docker-compose.yml
@@ -306,7 +308,10 @@ run_mission() {
   rm -f "$out/metrics.json" "$out/run.pb"
   docker run --rm --network none -v "$volume:/results:ro" --entrypoint tar "$image" -C /results -cf - . |
     tar -C "$out" -xf -
-  check_results "$out" || return 1
+  # Every agent reports, except the services killed on purpose (--expect-exit S=137).
+  local killed=()
+  for s in "${!expected_exit[@]}"; do [[ ${expected_exit[$s]} == 137 ]] && killed+=("\"$s\""); done
+  check_results "$out" "[$(IFS=,; echo "${killed[*]}")]" || return 1
   # Start-up: from `up` returning to the first tick, i.e. the GCS's whole time less the ticks'.
   local wall startup
   wall=$(top_value wall_seconds "$out/metrics.json")
@@ -314,44 +319,6 @@ run_mission() {
   say "[${compose[*]}] passed: $(summary "$out/metrics.json"); ${#services[@]} containers: up $((t_up - run_start)) s," \
     "first tick ~${startup} s after up, GCS done $((t_gcs - t_up)) s after up, all exited $((t_all - t_gcs)) s" \
     "after it, checked and copied in $((SECONDS - t_all)) s; results and logs in $out"
-}
-
-# metrics.json is written by nlohmann::json dump(2): top-level keys sit at two spaces.
-top_value() { sed -n "s/^  \"$1\": \(.*\)$/\1/p" "$2" | sed 's/,$//'; }
-summary() {
-  echo "$(top_value steps "$1") steps, $(top_value wall_seconds "$1") s of mission," \
-    "$(top_value ticks_per_second "$1" | awk '{ printf "%.1f", $1 }') ticks/s"
-}
-
-# A JSON list of names ("[\"a\",\"b\"]") as its sorted, comma-separated items.
-as_set() { tr -d '[]' <<<"$1" | tr , '\n' | sed '/^$/d' | sort | paste -sd, -; }
-
-check_results() {
-  local dir=$1 ok=0
-  [[ -s $dir/metrics.json ]] || { echo "compose-test: the GCS wrote no metrics.json to the results volume" >&2; return 1; }
-  [[ -s $dir/run.pb ]] || { echo "compose-test: the GCS wrote no run.pb to the results volume" >&2; ok=1; }
-  if [[ $(top_value complete "$dir/metrics.json") != true ]]; then
-    echo "compose-test: metrics.json says complete: $(top_value complete "$dir/metrics.json") (expected true)" >&2
-    ok=1
-  fi
-  # Every agent reports, except the services killed on purpose (--expect-exit S=137).
-  local killed=() s
-  for s in "${!expected_exit[@]}"; do [[ ${expected_exit[$s]} == 137 ]] && killed+=("\"$s\""); done
-  local want missing
-  want="[$(IFS=,; echo "${killed[*]}")]"
-  # An empty array is written on one line ("reports_missing": []), a full one over several.
-  missing=$(top_value reports_missing "$dir/metrics.json")
-  if [[ $missing != "[]" ]]; then
-    missing=$(sed -n '/^  "reports_missing": \[/,/^  \]/p' "$dir/metrics.json" | tr -d ' \n' |
-              sed 's/^"reports_missing"://; s/,$//')
-  fi
-  # As sets: metrics.json lists them in agent-id order.
-  if [[ $(as_set "$missing") != "$(as_set "$want")" ]]; then
-    echo "compose-test: agents whose report never reached the GCS (reports_missing): $missing" \
-      "(expected $want)" >&2
-    ok=1
-  fi
-  return "$ok"
 }
 
 result=0

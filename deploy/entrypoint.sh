@@ -4,7 +4,8 @@
 #
 #   SWARM_ROLE       sim | gcs | leader | member | discovery              (required)
 #   SWARM_GROUP      group id, from 0                                 (leader, member)
-#   SWARM_INDEX      robot index in the group, 1..R-1 (0 is the leader) (member)
+#   SWARM_INDEX      robot index in the group, 1..R-1 (0 is the leader), or a list (1,2,3) of
+#                    robots run in one process (member)
 #   SWARM_SCENARIO   scenario file   (default: the image's scenarios/default.pbtxt)
 #   SWARM_RUN_DIR    where the GCS writes metrics.json and run.pb     (default /results)
 #   SWARM_DOMAIN     DDS domain id, 0..232                            (default 0)
@@ -19,6 +20,11 @@
 #                    the signed governance and permissions (scripts/make-certs.sh; compose-gen.sh
 #                    --secure mounts them at /security) (--security-dir). Needs simple discovery:
 #                    Fast DDS 2.9's discovery server cannot authenticate.
+#   SWARM_PEERS      simple discovery without multicast (a swarm overlay network carries none):
+#                    the other roles' host names (the stack's service names); the role announces
+#                    itself to their addresses, looked up once all resolve (at most
+#                    SWARM_PEERS_WAIT seconds, default 60; the names not up by then announce
+#                    themselves when they start). Not with SWARM_DISCOVERY_SERVER.
 #   SWARM_DDS_PROFILE  Fast DDS profile (default: the image's deploy/fastdds_container.xml with a
 #                    discovery server, deploy/fastdds_container_simple.xml without; UDP only)
 #
@@ -122,7 +128,11 @@ case $ROLE in
     ;;
   member)
     need_id SWARM_GROUP "${SWARM_GROUP:-}" "group id (0..groups-1)"
-    need_id SWARM_INDEX "${SWARM_INDEX:-}" "robot index in the group (1..robots_per_group-1; 0 is the leader)"
+    # One robot, or several in this process (1,2,3: --agents-per-process, deploy/stack-gen.sh).
+    [ -n "${SWARM_INDEX:-}" ] || fail "SWARM_INDEX is not set; a member needs its robot index in the group (1..robots_per_group-1; 0 is the leader)"
+    case $SWARM_INDEX in
+      *[!0-9,]* | ,* | *, | *,,*) fail "SWARM_INDEX='$SWARM_INDEX' is not a robot index (1..robots_per_group-1) or a list of them (1,2,3)" ;;
+    esac
     role_flags="--group $SWARM_GROUP --index $SWARM_INDEX"
     ;;
   *) fail "SWARM_ROLE='$ROLE' is not a role; set it to sim, gcs, leader, member or discovery" ;;
@@ -148,12 +158,50 @@ if [ -n "$security" ]; then
   role_flags="$role_flags --security-dir $security"
 fi
 if [ -n "$server" ]; then
+  # A swarm starts the services in no order, and the server's name resolves only once its task
+  # runs: wait for it (compose's depends_on orders them, so there it resolves at once).
+  host=${server%:*}
+  wait_s=${SWARM_STALL_TIMEOUT:-60}
+  case $wait_s in '' | *[!0-9]*) wait_s=60 ;; esac
+  end=$(($(date +%s) + wait_s))
+  until getent ahostsv4 "$host" >/dev/null 2>&1; do
+    [ "$(date +%s)" -lt "$end" ] || fail "the discovery server's name '$host' did not resolve within $wait_s s; is its service running?"
+    sleep 1
+  done
   role_flags="$role_flags --discovery-server $server"
   default_profile=$data/deploy/fastdds_container.xml
 else
   default_profile=$data/deploy/fastdds_container_simple.xml
 fi
 SWARM_DDS_PROFILE=${SWARM_DDS_PROFILE:-$default_profile}
+peers=${SWARM_PEERS:-}
+if [ -n "$peers" ]; then
+  [ -z "$server" ] || fail "SWARM_PEERS and SWARM_DISCOVERY_SERVER are both set; peers are for simple discovery without a server"
+  wait_s=${SWARM_PEERS_WAIT:-60}
+  case $wait_s in '' | *[!0-9]*) fail "SWARM_PEERS_WAIT='$wait_s' is not a number of seconds" ;; esac
+  # Every peer's address, waiting for the names of roles that are still starting.
+  end=$(($(date +%s) + wait_s))
+  while :; do
+    addresses="" unresolved=""
+    for name in $peers; do
+      a=$(getent ahostsv4 "$name" | awk '{ print $1; exit }')
+      if [ -n "$a" ]; then addresses="$addresses $a"; else unresolved="$unresolved $name"; fi
+    done
+    [ -n "$unresolved" ] && [ "$(date +%s)" -lt "$end" ] || break
+    sleep 1
+  done
+  [ -z "$unresolved" ] || echo "swarm-entrypoint: not resolved after ${wait_s} s:$unresolved (they announce themselves when they start)"
+  # The SPDP port: one socket per participant, 7400 + 250 x domain (the simple profile's ports).
+  port=$((7400 + 250 * domain))
+  locators=""
+  for a in $addresses; do
+    locators="$locators<locator><udpv4><address>$a</address><port>$port</port></udpv4></locator>"
+  done
+  profile=$(mktemp "${TMPDIR:-/tmp}/swarm-peers.XXXXXX.xml")
+  sed "0,/<builtin>/s|<builtin>|<builtin><initialPeersList>$locators</initialPeersList>|" "$SWARM_DDS_PROFILE" >"$profile"
+  echo "swarm-entrypoint: announcing to$addresses (port $port)"
+  SWARM_DDS_PROFILE=$profile
+fi
 export SWARM_DDS_PROFILE
 
 echo "swarm-entrypoint: swarm-$ROLE $role_flags (scenario $scenario, domain $domain, partition $partition, profile $SWARM_DDS_PROFILE)"

@@ -6,6 +6,7 @@
 #
 #   deploy/fetch-debs.sh runtime          # what the runtime stage needs (~100 MB of .debs)
 #   deploy/fetch-debs.sh build runtime    # and the build stage's compilers, -dev packages (~280 MB)
+#   deploy/fetch-debs.sh node             # the cluster-node image (Docker engine, ~60 MB)
 #
 # How: the base image's dpkg status file stands in for "what is installed", and the host's apt
 # (its sources and its keys, so the downloads are verified against the signed Release files)
@@ -22,13 +23,13 @@ sets=()
 while (($#)); do
   case $1 in
     --base) base=${2:?--base needs an image}; shift ;;
-    build | runtime) sets+=("$1") ;;
+    build | runtime | node) sets+=("$1") ;;
     -h | --help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    *) die 2 "unknown argument $1 (sets: build, runtime; flag: --base IMAGE)" ;;
+    *) die 2 "unknown argument $1 (sets: build, runtime, node; flag: --base IMAGE)" ;;
   esac
   shift
 done
-((${#sets[@]})) || die 2 "name the package sets to fetch: build, runtime or both"
+((${#sets[@]})) || die 2 "name the package sets to fetch: build, runtime, node"
 command -v apt-get >/dev/null || die 2 "apt-get is missing; fetching .deb files needs a Debian host"
 docker_engine_running || die 2 "no Docker engine answers (docker info failed)"
 base_id=$(docker image inspect -f '{{.Id}}' "$base" 2>/dev/null) ||

@@ -1,22 +1,24 @@
 #!/usr/bin/env bash
-# scripts/fuzz.sh [--smoke] [--runs N] [TARGET...]
+# scripts/fuzz.sh [--smoke] [--runs N] [--build-only] [TARGET...]
 #
 # Builds the libFuzzer targets of fuzz/ with clang (ASan + UBSan) into build-fuzz/ and runs each
 # (scripts/sanitize.sh address ends with --smoke):
 # by default 1,000,000 inputs per target (--runs N for another count); --smoke runs each for a few
-# seconds (CI). The corpus of every target lives in fuzz/corpus/<target>/ (seeds, and what the
+# seconds (CI); --build-only builds them and stops. The corpus of every target lives in fuzz/corpus/<target>/ (seeds, and what the
 # fuzzer found that adds coverage, minimised); a crash stops the script with the input saved in
 # build-fuzz/crashes/<target>/ and a non-zero exit.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=1000000
 smoke=0
+build_only=0
 targets=()
 while (($#)); do
   case "$1" in
     --smoke) smoke=1 ;;
     --runs) runs=$2; shift ;;
-    -*) echo "usage: scripts/fuzz.sh [--smoke] [--runs N] [TARGET...]" >&2; exit 2 ;;
+    --build-only) build_only=1 ;;
+    -*) echo "usage: scripts/fuzz.sh [--smoke] [--runs N] [--build-only] [TARGET...]" >&2; exit 2 ;;
     *) targets+=("$1") ;;
   esac
   shift
@@ -30,6 +32,7 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DSWARM_SANITIZE=fuzz -DSWARM_BUILD_TESTS=OFF \
   -DSWARM_BUILD_BENCH=OFF "${launcher[@]}" >/dev/null
 cmake --build "$build" -j "${SWARM_BUILD_JOBS:-$(nproc)}" --target swarm_fuzz_all
+((build_only == 0)) || exit 0
 
 if ((${#targets[@]} == 0)); then
   for f in fuzz/fuzz_*.cpp; do targets+=("$(basename "$f" .cpp)"); done

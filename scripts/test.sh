@@ -31,8 +31,20 @@ fi
 # Three at a time on 2 cores: most tests wait on DDS round trips, real time or Docker more than
 # they compute (at -j 2 the cores were about a third busy), and every lockstep run counts ticks,
 # not seconds; the deploy chain, the longest, starts first (tests/deploy/CMakeLists.txt).
-(cd build && ctest --output-on-failure --timeout 600 -j "${SWARM_TEST_JOBS:-3}" "$@")
+# The fuzz targets (a second, clang build) compile during ctest, one job at low priority: the
+# tests leave the cores partly idle while they wait on DDS and Docker.
+fuzz_build_pid=""
 if (($# == 0)) && [[ ${SWARM_SKIP_FUZZ:-0} != 1 ]]; then
+  SWARM_BUILD_JOBS=1 nice -n 15 scripts/fuzz.sh --build-only >build/fuzz-build.log 2>&1 &
+  fuzz_build_pid=$!
+fi
+status=0
+(cd build && ctest --output-on-failure --timeout 600 -j "${SWARM_TEST_JOBS:-3}" "$@") || status=$?
+if [[ -n $fuzz_build_pid ]]; then
+  wait "$fuzz_build_pid" || { tail -n 30 build/fuzz-build.log >&2; echo "test.sh: building the fuzz targets failed (build/fuzz-build.log)" >&2; exit 1; }
+fi
+((status == 0)) || exit "$status"
+if [[ -n $fuzz_build_pid ]]; then
   scripts/fuzz.sh --smoke
 fi
 if (($# == 0)) && [[ -n ${SWARM_SANITIZE:-} ]]; then

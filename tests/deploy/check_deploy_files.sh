@@ -130,16 +130,17 @@ expect_profile() {  # expect_profile PROFILE VAR=VALUE...: the profile the entry
   [[ $first == *"profile $want)" ]] || fail "entrypoint with $*: profile is not $want: '$first'"
 }
 common="--scenario $work/s.pbtxt --run-dir /results --domain 0 --partition swarm"
-ds="--discovery-server discovery:11811"
+ds="--discovery-server localhost:11811"
 expect_run "swarm-sim $common" SWARM_ROLE=sim
-expect_run "swarm-sim $ds $common" SWARM_ROLE=sim SWARM_DISCOVERY_SERVER=discovery:11811
-expect_run "swarm-gcs --progress plain $ds $common" SWARM_ROLE=gcs SWARM_DISCOVERY_SERVER=discovery:11811
+expect_run "swarm-sim $ds $common" SWARM_ROLE=sim SWARM_DISCOVERY_SERVER=localhost:11811
+expect_run "swarm-gcs --progress plain $ds $common" SWARM_ROLE=gcs SWARM_DISCOVERY_SERVER=localhost:11811
 expect_run "swarm-leader --group 2 $common" SWARM_ROLE=leader SWARM_GROUP=2
 expect_run "swarm-member --group 1 --index 2 --scenario $work/s.pbtxt --run-dir /r --domain 7 --partition p" \
   SWARM_ROLE=member SWARM_GROUP=1 SWARM_INDEX=2 SWARM_RUN_DIR=/r SWARM_DOMAIN=7 SWARM_PARTITION=p
+expect_run "swarm-member --group 1 --index 1,2,3 $common" SWARM_ROLE=member SWARM_GROUP=1 SWARM_INDEX=1,2,3
 expect_run "swarm-leader --group 0 --security-dir $work/security $common" \
   SWARM_ROLE=leader SWARM_GROUP=0 SWARM_SECURITY_DIR="$work/security"
-expect_profile /opt/swarm/share/deploy/fastdds_container.xml SWARM_ROLE=sim SWARM_DISCOVERY_SERVER=discovery:11811
+expect_profile /opt/swarm/share/deploy/fastdds_container.xml SWARM_ROLE=sim SWARM_DISCOVERY_SERVER=localhost:11811
 expect_profile /opt/swarm/share/deploy/fastdds_container_simple.xml SWARM_ROLE=sim
 expect_profile /p.xml SWARM_ROLE=sim SWARM_DDS_PROFILE=/p.xml
 expect_run "fast-discovery-server -i 0 -l 0.0.0.0 -p 11811 -x swarm_discovery_server@/opt/swarm/share/deploy/fastdds_container.xml" \
@@ -157,13 +158,27 @@ rc=$?
 wait
 ((SECONDS - start >= 2 && SECONDS - start < 10 && rc == 0)) ||
   fail "the discovery role did not end (code 0) soon after metrics.json was written: code $rc after $((SECONDS - start)) s: $got"
+# SWARM_PEERS: the profile the role gets names every resolved peer at the SPDP port of its domain.
+got=$(entry SWARM_ROLE=sim SWARM_DOMAIN=2 SWARM_PEERS="localhost nobody.invalid" SWARM_PEERS_WAIT=0 \
+  SWARM_DDS_PROFILE="$deploy/fastdds_container_simple.xml" 2>&1)
+peers_profile=$(sed -n 's/.*(scenario .*profile \(.*\))$/\1/p' <<<"$got" | tail -n 1)
+[[ $got == *"not resolved after 0 s: nobody.invalid"* && $got == *"announcing to 127.0.0.1 (port 7900)"* ]] ||
+  fail "entrypoint with SWARM_PEERS said: $got"
+grep -q '<builtin><initialPeersList><locator><udpv4><address>127.0.0.1</address><port>7900</port></udpv4></locator></initialPeersList>' \
+  "$peers_profile" 2>/dev/null || fail "entrypoint with SWARM_PEERS: $peers_profile has no initial peer 127.0.0.1:7900"
+rm -f "$peers_profile"
+expect_error "SWARM_PEERS and SWARM_DISCOVERY_SERVER are both set" SWARM_ROLE=sim SWARM_PEERS=gcs \
+  SWARM_DISCOVERY_SERVER=localhost:11811
+expect_error "the discovery server's name 'nobody.invalid' did not resolve within 0 s" SWARM_ROLE=sim \
+  SWARM_DISCOVERY_SERVER=nobody.invalid:11811 SWARM_STALL_TIMEOUT=0
 expect_error "SWARM_ROLE is not set" SWARM_ROLE=
 expect_error "SWARM_ROLE='pilot' is not a role" SWARM_ROLE=pilot
 expect_error "SWARM_GROUP is not set; a leader needs its group id" SWARM_ROLE=leader
 expect_error "SWARM_GROUP is not set; a member needs its group id" SWARM_ROLE=member SWARM_INDEX=1
 expect_error "SWARM_INDEX is not set; a member needs its robot index" SWARM_ROLE=member SWARM_GROUP=0
 expect_error "SWARM_GROUP='-1' is not a number" SWARM_ROLE=leader SWARM_GROUP=-1
-expect_error "SWARM_INDEX='a' is not a number" SWARM_ROLE=member SWARM_GROUP=0 SWARM_INDEX=a
+expect_error "SWARM_INDEX='a' is not a robot index" SWARM_ROLE=member SWARM_GROUP=0 SWARM_INDEX=a
+expect_error "SWARM_INDEX='1,,2' is not a robot index" SWARM_ROLE=member SWARM_GROUP=0 SWARM_INDEX=1,,2
 expect_error "SWARM_PROGRESS='fancy' is not bar, plain or none" SWARM_ROLE=gcs SWARM_PROGRESS=fancy
 expect_error "SWARM_DOMAIN=233 is above 232" SWARM_ROLE=sim SWARM_DOMAIN=233
 expect_error "SWARM_SCENARIO=/nope.pbtxt does not exist" SWARM_ROLE=sim SWARM_SCENARIO=/nope.pbtxt
@@ -171,7 +186,7 @@ expect_error "SWARM_DISCOVERY_SERVER='discovery' is not HOST:PORT" SWARM_ROLE=si
 expect_error "SWARM_DISCOVERY_SERVER='d:x1' is not HOST:PORT" SWARM_ROLE=discovery SWARM_DISCOVERY_SERVER=d:x1
 expect_error "SWARM_SECURITY_DIR=/nope does not exist in the container" SWARM_ROLE=sim SWARM_SECURITY_DIR=/nope
 expect_error "SWARM_SECURITY_DIR and SWARM_DISCOVERY_SERVER are both set" \
-  SWARM_ROLE=sim SWARM_SECURITY_DIR="$work/security" SWARM_DISCOVERY_SERVER=discovery:11811
+  SWARM_ROLE=sim SWARM_SECURITY_DIR="$work/security" SWARM_DISCOVERY_SERVER=localhost:11811
 
 # 6. The Debian mirror comes from apt's configuration, in both formats.
 mkdir -p "$work/apt/sources.list.d"
@@ -187,6 +202,33 @@ want=$'http://one.example/debian bookworm main contrib\nhttp://two.example/debia
 rm "$work/apt/sources.list"
 got=$(APT_SOURCES_ROOT=$work/apt debian_mirror_for bookworm)
 [[ $got == http://two.example/debian ]] || fail "debian_mirror_for bookworm from deb822 gave '$got'"
+
+# 7. The stack file: one service per role (or per K members), placed by slot, and its refusals.
+stack=$("$deploy/stack-gen.sh" --nodes 2)
+services=$(sed -n '/^services:/,/^networks:/s/^  \([a-z][a-z0-9-]*\):$/\1/p' <<<"$stack" | paste -sd' ')
+[[ $services == "discovery sim gcs leader-0 leader-1 leader-2 member-0-1 member-0-2 member-1-1 member-1-2 member-2-1 member-2-2" ]] ||
+  fail "stack-gen.sh --nodes 2 wrote the services: $services"
+slot_of() { sed -n "/^  $1:\$/,/^\$/s/.*node.labels.swarm-slot == \([0-9]*\).*/\1/p" <<<"$stack"; }
+for pair in discovery=0 sim=0 gcs=0 leader-0=0 member-0-2=0 leader-1=1 member-1-1=1 leader-2=0 member-2-2=0; do
+  [[ $(slot_of "${pair%=*}") == "${pair#*=}" ]] || fail "stack-gen.sh --nodes 2 put ${pair%=*} on slot $(slot_of "${pair%=*}"), not ${pair#*=}"
+done
+restart_of() { sed -n "/^  $1:\$/,/^\$/s/.*condition: \(.*\)/\1/p" <<<"$stack"; }
+[[ $(restart_of gcs) == on-failure && $(restart_of member-1-2) == none && $(restart_of leader-0) == none ]] ||
+  fail "stack-gen.sh restart policies: gcs $(restart_of gcs), member-1-2 $(restart_of member-1-2), leader-0 $(restart_of leader-0)"
+printf 'groups: 10\nrobots_per_group: 10\n' >"$work/big.pbtxt"
+stack=$("$deploy/stack-gen.sh" --from-scenario "$work/big.pbtxt" --agents-per-process 9 --nodes 2)
+[[ $(grep -c '^  members-[0-9]*-1-9:$' <<<"$stack") == 10 && $stack == *'SWARM_INDEX: "1,2,3,4,5,6,7,8,9"'* ]] ||
+  fail "stack-gen.sh --agents-per-process 9 did not give each group one members service of robots 1..9"
+stack_error() {  # stack_error MESSAGE FLAG...
+  local want=$1 got rc
+  shift
+  got=$("$deploy/stack-gen.sh" "$@" 2>&1 >/dev/null) && rc=0 || rc=$?
+  [[ $rc == 2 && $got == *"$want"* ]] || fail "stack-gen.sh $*: code $rc, said '$got' (expected 2 and '$want')"
+}
+stack_error "not 4 x 3" --groups 4
+stack_error "--nodes 4 is more than the 3 groups" --nodes 4
+stack_error "--mtu '70000' is not an MTU" --mtu 70000
+stack_error "no such file" --from-scenario /nope.pbtxt
 
 if ((failures)); then
   echo "$failures deploy check(s) failed" >&2
