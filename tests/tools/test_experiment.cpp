@@ -375,12 +375,69 @@ TEST(ExperimentAnalysis, TheKneeOfAFixedRateLinkIsItsRate) {
   for (const double cap : {4000.0, 2000.0, 1000.0, 500.0, 250.0, 125.0}) {
     points.push_back({cap, uncapped * std::max(1.0, rate / cap), true});
   }
-  EXPECT_EQ(swarm::tools::analysis::knee_of(points, uncapped, 5.0), 1000.0);
+  using swarm::tools::analysis::knee_of;
+  const auto knee_cap = [](const std::optional<swarm::tools::analysis::Knee>& k) { return k ? k->cap : -1.0; };
+  EXPECT_EQ(knee_cap(knee_of(points, uncapped, 5.0)), 1000.0);
   // 5 % is the tolerance: a cap 4 % slower still counts; 6 % does not.
-  EXPECT_EQ(swarm::tools::analysis::knee_of({{2000, 300, true}, {1000, 312, true}, {500, 318, true}}, 300, 5.0), 1000.0);
+  EXPECT_EQ(knee_cap(knee_of({{2000, 300, true}, {1000, 312, true}, {500, 318, true}}, 300, 5.0)), 1000.0);
   // An incomplete run ends the knee's walk down, whatever its steps; so does a largest cap already too slow.
-  EXPECT_EQ(swarm::tools::analysis::knee_of({{2000, 300, true}, {1000, 300, false}, {500, 300, true}}, 300, 5.0), 2000.0);
-  EXPECT_FALSE(swarm::tools::analysis::knee_of({{2000, 400, true}, {1000, 300, true}}, 300, 5.0).has_value());
+  EXPECT_EQ(knee_cap(knee_of({{2000, 300, true}, {1000, 300, false}, {500, 300, true}}, 300, 5.0)), 2000.0);
+  EXPECT_FALSE(knee_of({{2000, 400, true}, {1000, 300, true}}, 300, 5.0).has_value());
+}
+
+// Noise: with intervals over seeds, a cap is slower only when its whole 95 % interval lies past the
+// tolerance. A cap whose mean is 8 % slower by chance ([-5, +21]) no longer ends the walk at the
+// largest cap; the knee is the last cap before one clearly slower (+60 % [+40, +80]), and the caps
+// whose interval reaches past 5 % make it uncertain, the largest of them named.
+TEST(ExperimentAnalysis, TheKneeIsNotEndedByANoisyCap) {
+  using swarm::tools::analysis::knee_of;
+  const auto noisy = knee_of({{4000, 324, true, -5, 21}, {2000, 303, true, -3, 5}, {1000, 306, true, -4, 8},
+                              {500, 480, true, 40, 80}, {250, 300, true, -1, 1}},
+                             300, 5.0);
+  ASSERT_TRUE(noisy.has_value());
+  EXPECT_EQ(noisy->cap, 1000.0);
+  ASSERT_TRUE(noisy->uncertain_at.has_value());
+  EXPECT_EQ(*noisy->uncertain_at, 4000.0);
+  // The same caps measured tightly: every interval within 5 %, so the knee is certain.
+  const auto tight = knee_of({{4000, 300, true, -1, 1}, {2000, 303, true, 0, 2}, {1000, 306, true, 1, 3},
+                              {500, 480, true, 40, 80}},
+                             300, 5.0);
+  ASSERT_TRUE(tight.has_value());
+  EXPECT_EQ(tight->cap, 1000.0);
+  EXPECT_FALSE(tight->uncertain_at.has_value());
+  // A cap whose interval lies wholly past 5 % (+6 % [+5.5, +6.5]) ends the walk although its mean is close.
+  EXPECT_EQ(knee_of({{2000, 300, true, -1, 1}, {1000, 318, true, 5.5, 6.5}}, 300, 5.0)->cap, 2000.0);
+}
+
+// A latency sweep of a chained mission (explore,cover) on fabricated runs: besides the whole
+// mission's ticks, each phase's own ticks get rows, each with its change against no delay on the
+// same seeds. Seeds 1 and 2 explore in 100 + seed ticks and cover in 50 + seed; with a delay, cover
+// takes 10 ticks more: +19.4 % of 51.5, an interval of zero width (the same +10 on both seeds).
+TEST(ExperimentAnalysis, AChainedMissionGetsEachPhasesTicks) {
+  TempDir dir;
+  swarm::scenario::Scenario base;
+  ExperimentPlan plan = make_plan(ExperimentKind::kLatency, {"small"}, {"group-frontier"}, 2, base, "");
+  plan.mission = {"explore", "cover"};
+  for (ExperimentRun& r : plan.runs) {
+    const bool delayed = r.setting.member_leader_delay_ticks.value_or(0) + r.setting.leader_gcs_delay_ticks.value_or(0) > 0;
+    const auto explore = static_cast<std::uint32_t>(100 + r.seed);
+    const auto cover = static_cast<std::uint32_t>(50 + r.seed + (delayed ? 10 : 0));
+    auto m = swarm::test::run_metrics("small", "group-frontier", r.seed, explore + cover, 5);
+    m.phases.clear();
+    m.phases.push_back({"explore", 0, explore, true, {}, {}});
+    m.phases.push_back({"cover", explore, explore + cover, true, {}, {}});
+    const std::string run = dir.str() + "/" + r.dir;
+    spit(run + "/metrics.json", swarm::record::to_json(m).dump(2));
+    spit(run + "/scenario.pbtxt", "map: \"small\"\ntick_seconds: 0.2\n");
+    r.status = RunStatus::kOk;
+  }
+  const ExperimentOutputs o = analyze_experiment(plan, load_rows(dir.str(), plan));
+  EXPECT_TRUE(contains(o.table, "ticks in phase 1, explore")) << o.table;
+  EXPECT_TRUE(contains(o.table, "ticks in phase 2, cover")) << o.table;
+  EXPECT_TRUE(contains(o.table, "101.5 ± 0.7")) << o.table;  // explore, every setting
+  EXPECT_TRUE(contains(o.table, "51.5 ± 0.7")) << o.table;   // cover without delay
+  EXPECT_TRUE(contains(o.table, "61.5 ± 0.7")) << o.table;   // cover with delay
+  EXPECT_TRUE(contains(o.table, "+19.4 % [+19.4, +19.4]")) << o.table;
 }
 
 // A bandwidth experiment on fabricated runs: the uncapped runs' traffic gives the demand per sender

@@ -672,6 +672,10 @@ std::optional<RunNumbers> load_run_numbers(const std::string& run_dir, std::stri
   n.explores = m.phases.empty() || m.phases.front().name == "explore";
   n.conflicts = static_cast<double>(m.motion.vertex_conflict_events + m.motion.edge_conflict_events);
   for (const auto& p : m.phases) {
+    // A phase that never ended (the run stopped in it) ran to the run's last tick: a lower bound,
+    // which the table marks as it marks the run incomplete.
+    const double end = p.end_tick ? static_cast<double>(*p.end_tick) : m.ticks_run;
+    n.phase_ticks.push_back(end - static_cast<double>(p.start_tick));
     if (p.name == "collect" && p.task.contains("delivered")) n.delivered = n.delivered.value_or(0) + p.task["delivered"].get<double>();
   }
   for (const std::string& topic : map_topics()) {

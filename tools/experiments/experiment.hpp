@@ -177,6 +177,7 @@ struct RunNumbers {
   bool explores = true;                // the mission's first phase explores (ended_early needs that)
   double conflicts = 0;                // vertex + edge conflict events over the run (ground truth)
   std::optional<double> delivered;     // objects delivered over the collect phases; none without one
+  std::vector<double> phase_ticks;     // each phase's ticks (end_tick - start_tick), in mission order
   // Per link class (its comm name): what it carried, its busiest second (from RUN_DIR/traffic.csv;
   // absent when the run has none), and under a cap how long messages queued (ticks; absent
   // uncapped) and how many were lost for good.

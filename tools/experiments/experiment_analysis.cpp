@@ -73,8 +73,8 @@ Cell cell_of(const std::vector<RunRow>& rows, const std::string& map, const std:
   });
 }
 
-std::optional<double> value_of(const RunNumbers& n, Metric m) {
-  switch (m) {
+std::optional<double> value_of(const RunNumbers& n, Measure measure) {
+  switch (measure.metric) {
     case Metric::kSteps: return n.steps;
     case Metric::kRounds: return n.planning_rounds;
     case Metric::kStepsTo99: return n.steps_to_99;
@@ -86,11 +86,14 @@ std::optional<double> value_of(const RunNumbers& n, Metric m) {
     case Metric::kDelivered: return n.delivered;
     case Metric::kMapBytes: return n.map_bytes;
     case Metric::kMapBytesPerRobotSecond: return n.map_bytes_per_robot_second();
+    case Metric::kPhaseTicks:
+      if (measure.phase < n.phase_ticks.size()) return n.phase_ticks[measure.phase];
+      return std::nullopt;
   }
   return std::nullopt;
 }
 
-Summary summary_of(const Cell& c, Metric m) {
+Summary summary_of(const Cell& c, Measure m) {
   std::vector<double> v;
   for (const RunRow* r : c.ok) {
     if (const auto x = value_of(*r->numbers, m)) v.push_back(*x);
@@ -98,7 +101,7 @@ Summary summary_of(const Cell& c, Metric m) {
   return summarize(v);
 }
 
-PairedDifference paired_of(const Cell& c, const Cell& reference, Metric m) {
+PairedDifference paired_of(const Cell& c, const Cell& reference, Measure m) {
   std::vector<double> values, refs;
   for (const RunRow* r : c.ok) {
     const auto x = value_of(*r->numbers, m);
@@ -125,11 +128,12 @@ nlohmann::json paired_json(const PairedDifference& d) {
           {"significant", d.significant}};
 }
 
-std::string format_cell(const Cell& c, Metric m, int decimals) {
-  std::string s = format_mean_std(summary_of(c, m), decimals);
+std::string format_cell(const Cell& c, Measure measure, int decimals) {
+  std::string s = format_mean_std(summary_of(c, measure), decimals);
   if (c.failed > 0) s += "*";
   if (c.ended_early > 0) s += "!";
   // Steps of a run stopped at max_ticks are a lower bound; 99 % may never have been reached.
+  const Metric m = measure.metric;
   if (c.incomplete > 0 && m != Metric::kTrafficBytes && m != Metric::kRadioBytes && m != Metric::kOnRobotBytes &&
       m != Metric::kMapBytes &&
       m != Metric::kMapBytesPerRobotSecond) {
@@ -182,7 +186,7 @@ std::string sweep_table(const Sweep& sw, const ExperimentPlan& plan,
   TextTable t(header);
   const bool with_baseline =
       std::find(plan.methods.begin(), plan.methods.end(), "baseline") != plan.methods.end();
-  auto metric_rows = [&](Metric m, const std::string& title, bool compare) {
+  auto metric_rows = [&](Measure m, const std::string& title, bool compare) {
     t.add_section(title);
     for (const auto& method : plan.methods) {
       t.add_row(row_over("  " + method, sw.settings, [&](const RunSetting& s) {
@@ -210,6 +214,10 @@ std::string sweep_table(const Sweep& sw, const ExperimentPlan& plan,
   };
   const bool chained = !plan.mission.empty();
   metric_rows(Metric::kSteps, chained ? "ticks (the whole mission)" : "steps", true);
+  // A chained mission's makespan phase by phase (a phase a run never reached has no value there).
+  for (std::size_t i = 0; chained && plan.mission.size() > 1 && i < plan.mission.size(); ++i) {
+    metric_rows(Measure::phase_ticks(i), "ticks in phase " + std::to_string(i + 1) + ", " + plan.mission[i], true);
+  }
   metric_rows(Metric::kRounds, "planning rounds", true);
   if (with_steps_to_99) metric_rows(Metric::kStepsTo99, "steps to 99 % explored", false);
   if (chained) {
@@ -229,7 +237,7 @@ std::string sweep_table(const Sweep& sw, const ExperimentPlan& plan,
 
 PlotSeries sweep_series(const Sweep& sw, const std::vector<RunRow>& rows, const std::string& map,
                         const std::string& method, Colour colour, const std::string& name,
-                        Metric m) {
+                        Measure m) {
   PlotSeries series{name, colour, {}, {}};
   for (const RunSetting& s : sw.settings) {
     const Summary v = summary_of(cell_of(rows, map, method, s), m);

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <functional>
+#include <limits>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -27,17 +29,28 @@ void analyze_bandwidth(const ExperimentPlan& plan, const std::vector<RunRow>& ro
                        KindOutputs& out);
 void analyze_loss(const ExperimentPlan& plan, const std::vector<RunRow>& rows, KindOutputs& out);
 
-// One cap of a bandwidth sweep: its bytes per second, its runs' mean steps, and whether all of
-// them completed.
+// One cap of a bandwidth sweep: its bytes per second, its runs' mean steps, whether all of them
+// completed, and the 95 % interval of its paired difference to the uncapped runs of the same
+// seeds, in percent (NaN with fewer than two pairs).
 struct KneePoint {
   double cap = 0;
   double steps = 0;
   bool all_complete = true;
+  double low_pct = std::numeric_limits<double>::quiet_NaN();
+  double high_pct = std::numeric_limits<double>::quiet_NaN();
+};
+struct Knee {
+  double cap = 0;
+  // A cap at or above the knee whose interval reaches past the tolerance: the seeds cannot tell
+  // that it costs less than the tolerance (nullopt: every one is clearly within it).
+  std::optional<double> uncertain_at;
 };
 // The knee: going down from the largest cap, the last one before the first that is incomplete or
-// slower than uncapped_steps by more than tolerance_percent. nullopt when the largest already is.
-[[nodiscard]] std::optional<double> knee_of(const std::vector<KneePoint>& points, double uncapped_steps,
-                                            double tolerance_percent);
+// slower than uncapped_steps by more than tolerance_percent. With an interval, "slower" means its
+// lower end is past the tolerance, so that one noisy cap does not end the walk; without one, its
+// mean. nullopt when the largest cap already is slower.
+[[nodiscard]] std::optional<Knee> knee_of(const std::vector<KneePoint>& points, double uncapped_steps,
+                                          double tolerance_percent);
 
 // The settings a kind sweeps, in table order (make_plan runs each for every map and method).
 [[nodiscard]] std::vector<RunSetting> settings_of(const ExperimentPlan& plan);
@@ -54,6 +67,18 @@ enum class Metric {
   kDelivered,     // collect's delivered objects
   kMapBytes,
   kMapBytesPerRobotSecond,
+  kPhaseTicks,    // one phase's ticks (Measure::phase_ticks)
+};
+// What a table row reads off each run: a Metric, or the ticks of a chained mission's phase i.
+struct Measure {
+  Metric metric;
+  std::size_t phase = 0;
+  Measure(Metric m) : metric(m) {}  // NOLINT(google-explicit-constructor): every Metric is a Measure
+  [[nodiscard]] static Measure phase_ticks(std::size_t i) {
+    Measure m(Metric::kPhaseTicks);
+    m.phase = i;
+    return m;
+  }
 };
 
 // The runs of one table cell.
@@ -73,17 +98,17 @@ struct Cell {
 [[nodiscard]] Cell cell_of(const std::vector<RunRow>& rows, const std::string& map,
                            const std::string& method, const RunSetting& setting);
 
-[[nodiscard]] Summary summary_of(const Cell& c, Metric m);
+[[nodiscard]] Summary summary_of(const Cell& c, Measure m);
 // One run's value of `m` (nullopt: it has none, e.g. no steps to 99 %).
-[[nodiscard]] std::optional<double> value_of(const RunNumbers& n, Metric m);
+[[nodiscard]] std::optional<double> value_of(const RunNumbers& n, Measure m);
 // `m` of c's runs against the reference's runs of the same seeds (seeds in only one are left
 // out): the mean paired difference with its 95 % confidence interval (stats.hpp).
-[[nodiscard]] PairedDifference paired_of(const Cell& c, const Cell& reference, Metric m);
+[[nodiscard]] PairedDifference paired_of(const Cell& c, const Cell& reference, Measure m);
 // {"pairs", "mean", "ci95": [low, high], "mean_percent", "ci95_percent": [..], "significant"}.
 [[nodiscard]] nlohmann::json paired_json(const PairedDifference& d);
 // "mean ± std" plus markers: "*" some runs failed (left out), "!" some runs ended early (left
 // out), "+" some runs incomplete (counted with max_ticks).
-[[nodiscard]] std::string format_cell(const Cell& c, Metric m, int decimals);
+[[nodiscard]] std::string format_cell(const Cell& c, Measure m, int decimals);
 // "5/5", or "2/5 (2 failed, 1 ended early)"; counts complete runs of the planned ones.
 [[nodiscard]] std::string completion_text(const Cell& c);
 [[nodiscard]] nlohmann::json summary_json(const Summary& s);
@@ -115,7 +140,7 @@ struct Sweep {
 // Mean (values) ± std (errors) of `m` over the sweep's settings for one method on `map`.
 [[nodiscard]] PlotSeries sweep_series(const Sweep& sweep, const std::vector<RunRow>& rows,
                                       const std::string& map, const std::string& method,
-                                      Colour colour, const std::string& name, Metric m);
+                                      Colour colour, const std::string& name, Measure m);
 
 // The lines under every table: what the markers mean (only those used) and each failed run with
 // its log.

@@ -194,13 +194,18 @@ std::optional<double> link_mean(const Cell& c, const std::string& link,
 
 }  // namespace
 
-std::optional<double> knee_of(const std::vector<KneePoint>& points, double uncapped_steps, double tolerance_percent) {
+std::optional<Knee> knee_of(const std::vector<KneePoint>& points, double uncapped_steps, double tolerance_percent) {
   std::vector<KneePoint> sorted = points;
   std::sort(sorted.begin(), sorted.end(), [](const KneePoint& a, const KneePoint& b) { return a.cap > b.cap; });
-  std::optional<double> knee;
+  std::optional<Knee> knee;
+  std::optional<double> uncertain_at;
   for (const KneePoint& p : sorted) {
-    if (!p.all_complete || !(p.steps <= uncapped_steps * (1 + tolerance_percent / 100.0))) break;
-    knee = p.cap;
+    const bool has_interval = std::isfinite(p.low_pct) && std::isfinite(p.high_pct);
+    const bool slower = has_interval ? p.low_pct > tolerance_percent
+                                     : !(p.steps <= uncapped_steps * (1 + tolerance_percent / 100.0));
+    if (!p.all_complete || slower) break;
+    if (has_interval && p.high_pct > tolerance_percent && !uncertain_at) uncertain_at = p.cap;
+    knee = Knee{p.cap, uncertain_at};
   }
   return knee;
 }
@@ -265,7 +270,7 @@ std::string demand_caps_text(const ExperimentPlan& plan, const std::vector<RunRo
           const Summary st = summary_of(c, Metric::kSteps);
           series.values.push_back(st.mean);
           series.errors.push_back(st.std);
-          if (cap > 0 && !c.ok.empty()) points.push_back({cap, st.mean, c.complete() == c.planned});
+          if (cap > 0 && !c.ok.empty()) points.push_back({cap, st.mean, c.complete() == c.planned, d.low_pct, d.high_pct});
           out.aggregates.push_back({{"part", "demand_cap"},
                                     {"map", label},
                                     {"method", method},
@@ -285,24 +290,30 @@ std::string demand_caps_text(const ExperimentPlan& plan, const std::vector<RunRo
         text += "\n" + t.render();
         panel.series.push_back(series);
       }
-      const std::optional<double> knee = knee_of(points, uncapped_steps, kKneePercent);
+      const std::optional<Knee> knee = knee_of(points, uncapped_steps, kKneePercent);
       std::string line = "knee, " + link + ", " + label + ", " + method + ", " + encoding_name(plan.cap_encoding) + ": ";
       if (!std::isfinite(uncapped_steps)) {
         line += "none (no uncapped run to compare with)";
       } else if (!knee) {
         line += "none: even the largest cap slowed the run by more than " + format_number(kKneePercent, 0) + " %";
       } else {
-        line += format_rate(*knee) + " per sender is the smallest cap within " + format_number(kKneePercent, 0) +
+        line += format_rate(knee->cap) + " per sender is the smallest cap within " + format_number(kKneePercent, 0) +
                 " % of uncapped steps";
         if (demand) {
-          line += " (" + format_number(*knee / demand->mean_bytes_per_s, 2) + " x its mean demand, " +
-                  format_number(*knee / demand->peak_bytes_per_s, 2) + " x its peak)";
+          line += " (" + format_number(knee->cap / demand->mean_bytes_per_s, 2) + " x its mean demand, " +
+                  format_number(knee->cap / demand->peak_bytes_per_s, 2) + " x its peak)";
         }
         const double smallest = points.empty() ? 0 : std::min_element(points.begin(), points.end(), [](auto& a, auto& b) { return a.cap < b.cap; })->cap;
-        if (*knee <= smallest) line += "; no cap tried slowed it: the knee lies lower";
+        if (knee->cap <= smallest) line += "; no cap tried slowed it: the knee lies lower";
+        if (knee->uncertain_at) {
+          line += "; uncertain: the 95 % interval at " + format_rate(*knee->uncertain_at) + " reaches past " +
+                  format_number(kKneePercent, 0) + " %, more seeds would tell";
+        }
       }
       text += line + "\n";
-      out.findings["knee"][label][link][method] = knee ? nlohmann::json(*knee) : nlohmann::json(nullptr);
+      out.findings["knee"][label][link][method] = knee ? nlohmann::json(knee->cap) : nlohmann::json(nullptr);
+      out.findings["knee_uncertain_at"][label][link][method] =
+          knee && knee->uncertain_at ? nlohmann::json(*knee->uncertain_at) : nlohmann::json(nullptr);
     }
     if (demand) {
       text += "  (" + link + " demand per sender uncapped: mean " + format_rate(demand->mean_bytes_per_s) + ", peak " +
