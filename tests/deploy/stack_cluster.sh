@@ -4,8 +4,8 @@
 #   2. a second node joins: a Docker engine in a container, the image loaded by docker load.
 #      With group 1 on it and groups 0 and 2 here, a mission with every kind of link emulation
 #      (tests/deploy/links.pbtxt: delay, loss, a bandwidth cap) gives exactly the numbers of
-#      `swarm run` of the same file on one host (lockstep, one seed): steps, and per link class the
-#      bytes, messages, lost transmissions and queueing;
+#      `swarm run` of the same file on one host (lockstep, one seed): the same metrics.json keys,
+#      steps, and per link class the bytes, messages, lost transmissions and queueing;
 #   3. the default mission with DDS-Security across both nodes (certificates as swarm secrets);
 #   4. the clear errors: the image missing on a node, a node without the memory its share
 #      reserves, and (when this engine was not in swarm mode) no swarm at all;
@@ -77,6 +77,9 @@ numbers "$out/one-host/metrics.json" >"$out/one-host.numbers"
 [[ $(wc -l <"$out/one-host.numbers") -gt 10 ]] || fail "metrics.json of swarm run gave too few numbers: $(cat "$out/one-host.numbers")"
 diff "$out/one-host.numbers" "$out/two-nodes.numbers" >&2 ||
   fail "the two-node run's numbers (right) differ from swarm run's on one host (left)"
+top_keys() { sed -n 's/^  "\([a-z_0-9]*\)":.*/\1/p' "$1" | paste -sd' '; }
+[[ $(top_keys "$out/two-nodes/metrics.json") == "$(top_keys "$out/one-host/metrics.json")" ]] ||
+  fail "metrics.json's keys differ: two nodes: $(top_keys "$out/two-nodes/metrics.json"); one host: $(top_keys "$out/one-host/metrics.json")"
 grep -q '^leader_gcs lost_transmissions [1-9]' "$out/two-nodes.numbers" ||
   fail "no leader<->GCS transmission was lost, though links.pbtxt loses 5 %"
 step "two nodes: the same numbers as swarm run on one host: $(paste -sd' ' "$out/two-nodes.numbers" | cut -c1-160) ..."

@@ -72,9 +72,13 @@ void ExploreGcsTask::on_report(const task::Report& r, GcsContext& ctx) {
   }
   const comm::Topology& t = ctx.setup.topology;
   const auto g = static_cast<std::size_t>(r.group);
-  // Only the current round's, from the round's own group, about its own robots.
+  // The group's newest round's, about its own robots. A round older than the GCS's current one
+  // still counts when it is the newest the group has sent: with a leader<->GCS delay as long as
+  // half the replanning interval, every report arrives after the next round has begun, and taking
+  // only the current round's left every robot standing (maze1, 10 ticks each way: 5.4 % explored
+  // in 1,000 ticks).
   if (!first_round_ || g >= group_round_.size() || w->round < *first_round_ ||
-      w->round - *first_round_ + 1 != rounds_.round() || group_round_[g] == w->round) {
+      w->round - *first_round_ + 1 > rounds_.round() || w->round <= group_round_[g]) {
     return;
   }
   for (int i = 0; i < t.robots_per_group(); ++i) target_[static_cast<std::size_t>(t.robot(static_cast<int>(g), i))].reset();
