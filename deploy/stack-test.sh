@@ -12,7 +12,7 @@
 # Flags:
 #   --scenario FILE       the scenario (default scenarios/default.pbtxt)
 #   --groups G --robots R the scenario with its groups and robots_per_group set so
-#   --nodes N, --agents-per-process K, --memory-mb M   passed to stack-gen.sh
+#   --nodes N, --agents-per-process K, --memory-mb M, --encrypted   passed to stack-gen.sh
 #   --secure              DDS-Security: certificates for every role (scripts/make-certs.sh, in the
 #                         test's temporary folder), handed to the roles as swarm secrets
 #   --image IMAGE         the image every node runs (default swarm:latest); it must be on every node
@@ -58,6 +58,7 @@ while (($#)); do
     --nodes) nodes=${2:?--nodes needs a number}; gen+=(--nodes "$2"); shift ;;
     --agents-per-process) gen+=(--agents-per-process "${2:?--agents-per-process needs a number}"); shift ;;
     --memory-mb) memory_mb=${2:?--memory-mb needs a number}; gen+=(--memory-mb "$2"); shift ;;
+    --encrypted) gen+=(--encrypted) ;;
     --secure) secure=1 ;;
     --image) image=${2:?--image needs an image name}; shift ;;
     --timeout) timeout=${2:?--timeout needs seconds}; shift ;;

@@ -26,7 +26,7 @@ std::vector<Command> add_swarm_experiments(CLI::App& experiment) {
   };
   const std::array<std::pair<ExperimentKind, const char*>, 4> kinds = {{
       {ExperimentKind::kExplore,
-       "Paper's Table 2: group-frontier vs baseline vs ideal on open, maze1, maze2 (5 seeds)"},
+       "Paper's Table 2: group-frontier vs baseline vs ideal on open, maze1, maze2 (8 seeds)"},
       {ExperimentKind::kLatency,
        "Steps vs leader<->GCS and member<->leader link delay (maze1, 3 seeds)"},
       {ExperimentKind::kBandwidth,
