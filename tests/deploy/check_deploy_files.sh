@@ -219,6 +219,22 @@ printf 'groups: 10\nrobots_per_group: 10\n' >"$work/big.pbtxt"
 stack=$("$deploy/stack-gen.sh" --from-scenario "$work/big.pbtxt" --agents-per-process 9 --nodes 2)
 [[ $(grep -c '^  members-[0-9]*-1-9:$' <<<"$stack") == 10 && $stack == *'SWARM_INDEX: "1,2,3,4,5,6,7,8,9"'* ]] ||
   fail "stack-gen.sh --agents-per-process 9 did not give each group one members service of robots 1..9"
+# --secure: no discovery service, every role's own certificate and key as secrets, and the peers
+# every role announces itself to instead of multicast.
+mkdir -p "$work/certs"
+touch "$work/certs/ca.pem"
+stack=$("$deploy/stack-gen.sh" --secure "$work/certs")
+services=$(sed -n '/^services:/,/^networks:/s/^  \([a-z][a-z0-9-]*\):$/\1/p' <<<"$stack" | paste -sd' ')
+[[ $services == "sim gcs leader-0 leader-1 leader-2 member-0-1 member-0-2 member-1-1 member-1-2 member-2-1 member-2-2" ]] ||
+  fail "stack-gen.sh --secure wrote the services: $services"
+[[ $stack == *"SWARM_PEERS: sim gcs leader-0 leader-1 leader-2 member-0-1 member-0-2 member-1-1 member-1-2 member-2-1 member-2-2"* &&
+  $stack == *"SWARM_SECURITY_DIR: /run/secrets"* && $stack != *"SWARM_DISCOVERY_SERVER"* ]] ||
+  fail "stack-gen.sh --secure: the roles' environment is not peers + /run/secrets without a discovery server"
+secrets_of() { sed -n "/^  $1:\$/,/^\$/s/.*- source: \(.*\)/\1/p" <<<"$stack" | paste -sd' '; }
+[[ $(secrets_of member-1-2) == "ca.pem governance.p7s permissions.p7s member-1-2.pem member-1-2.key" ]] ||
+  fail "stack-gen.sh --secure: member-1-2's secrets are $(secrets_of member-1-2)"
+[[ $stack == *"  member-1-2.key:"$'\n'"    file: $work/certs/member-1-2.key"* ]] ||
+  fail "stack-gen.sh --secure: no secret member-1-2.key from $work/certs"
 stack_error() {  # stack_error MESSAGE FLAG...
   local want=$1 got rc
   shift
@@ -229,6 +245,8 @@ stack_error "not 4 x 3" --groups 4
 stack_error "--nodes 4 is more than the 3 groups" --nodes 4
 stack_error "--mtu '70000' is not an MTU" --mtu 70000
 stack_error "no such file" --from-scenario /nope.pbtxt
+stack_error "give an absolute folder" --secure certs
+stack_error "a secure identity is one robot's" --secure "$work/certs" --agents-per-process 2
 
 if ((failures)); then
   echo "$failures deploy check(s) failed" >&2
