@@ -14,7 +14,9 @@
 # An engine that is already a swarm manager is used as it is, and `down` leaves its swarm.
 # `down` removes the workers (containers, nodes, volumes), the network and, when `up` made it,
 # the swarm (docker swarm leave --force and the bridge docker_gwbridge it made); it fails,
-# naming them, when any is left.
+# naming them, when any is left. The one exception is docker_gwbridge, on which Docker sometimes
+# keeps a stale endpoint until the engine restarts: a warning says so, and the next swarm on the
+# engine reuses the bridge.
 #
 # Flags: --name PREFIX (default swarmcluster; names the network PREFIX-nodes and the workers
 # PREFIX-node-K), --workers N (default 1), --image IMAGE (repeatable: loaded into every worker),
@@ -99,14 +101,21 @@ down() {
   if [[ $(docker network inspect -f '{{index .Labels "swarm.cluster.initialized"}}' "$network" 2>/dev/null) == 1 &&
     $(swarm_state) == active ]]; then
     docker swarm leave --force >/dev/null 2>&1 || die 1 "docker swarm leave --force failed"
-    # Swarm mode makes this bridge for its containers' way out, and leaving keeps it.
-    if docker network inspect docker_gwbridge >/dev/null 2>&1 &&
-      [[ -z $(docker network inspect -f '{{range .Containers}}x{{end}}' docker_gwbridge) ]]; then
-      docker network rm docker_gwbridge >/dev/null 2>&1 || true
+    # Swarm mode makes this bridge for its containers' way out, and leaving keeps it; its last
+    # endpoint (the ingress sandbox's) goes a moment after the leave.
+    for ((i = 0; i < 20; i++)); do
+      docker network inspect docker_gwbridge >/dev/null 2>&1 || break
+      docker network rm docker_gwbridge >/dev/null 2>&1 && break
+      sleep 0.5
+    done
+    # Docker sometimes keeps a stale endpoint on it until the engine restarts ("has active
+    # endpoints" with none listed); the next swarm on this engine takes it over as it is.
+    if docker network inspect docker_gwbridge >/dev/null 2>&1; then
+      echo "$(basename "$0"): warning: Docker's own bridge docker_gwbridge could not be removed (the engine holds a stale endpoint on it until it restarts); the next swarm reuses it" >&2
     fi
   fi
   docker network rm "$network" >/dev/null 2>&1 || true
-  left="$(docker ps -aq --filter "label=$label")$(docker volume ls -q --filter "label=$label")$(docker network ls -q --filter "name=^$network\$")"
+  left+="$(docker ps -aq --filter "label=$label")$(docker volume ls -q --filter "label=$label")$(docker network ls -q --filter "name=^$network\$")"
   for ((i = 1; i <= 64; i++)); do
     [[ $(swarm_state) != active ]] && break
     left+=$(docker node ls -q --filter "name=$(node_container "$i")" 2>/dev/null)
