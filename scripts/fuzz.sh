@@ -4,8 +4,9 @@
 # Builds the libFuzzer targets of fuzz/ with clang (ASan + UBSan) into build-fuzz/ and runs each
 # (scripts/sanitize.sh address ends with --smoke):
 # by default 1,000,000 inputs per target (--runs N for another count); --smoke runs each for a few
-# seconds (CI); --build-only builds them and stops. The corpus of every target lives in fuzz/corpus/<target>/ (seeds, and what the
-# fuzzer found that adds coverage, minimised); a crash stops the script with the input saved in
+# seconds (CI); --build-only builds them and stops (scripts/test.sh builds them during ctest).
+# The corpus of every target lives in fuzz/corpus/<target>/ (seeds, and what the fuzzer found
+# that adds coverage, minimised); a crash stops the script with the input saved in
 # build-fuzz/crashes/<target>/ and a non-zero exit.
 set -euo pipefail
 cd "$(dirname "$0")/.."
