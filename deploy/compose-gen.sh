@@ -80,7 +80,7 @@ service() {
   if [[ -n $certs ]]; then
     printf '    volumes:\n      - ${SWARM_SCENARIO_DIR:-%s}:/scenario:ro\n' "$scenario_dir"
     [[ $name != gcs ]] || printf '      - results:/results\n'
-    for f in ca.pem governance.p7s permissions.p7s "$name.pem" "$name.key"; do
+    for f in $(role_security_files "$name"); do
       printf '      - ${SWARM_CERTS_DIR:-%s}/%s:/security/%s:ro\n' "$certs" "$f" "$f"
     done
   elif [[ $name == gcs ]]; then

@@ -102,3 +102,8 @@ scenario_size() {
 # after another (compose: ~1.4 s each measured here, 53 containers: 76 s), and the first ones must
 # outwait the last: 3 s per container, at least 60 s.
 stall_timeout() { echo $(($1 * 3 > 60 ? $1 * 3 : 60)); }
+
+# role_security_files NAME: the files a role named NAME reads for DDS-Security, one per line: the
+# CA certificate, the signed governance and permissions, its own certificate and key
+# (scripts/make-certs.sh makes them; comm's use_security reads them by these names).
+role_security_files() { printf '%s\n' ca.pem governance.p7s permissions.p7s "$1.pem" "$1.key"; }

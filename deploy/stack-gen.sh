@@ -117,7 +117,7 @@ service() {
   if [[ -n $certs ]]; then
     printf '    secrets:\n'
     local f
-    for f in ca.pem governance.p7s permissions.p7s "$name.pem" "$name.key"; do
+    for f in $(role_security_files "$name"); do
       printf '      - source: %s\n        uid: "10001"\n        mode: 0400\n' "$f"
     done
   fi
@@ -221,8 +221,8 @@ EOF
 echo "    file: $scenario"
 if [[ -n $certs ]]; then
   printf '\nsecrets:\n'
-  for f in ca.pem governance.p7s permissions.p7s; do printf '  %s:\n    file: %s/%s\n' "$f" "$certs" "$f"; done
-  for name in sim gcs "${robot_services[@]}"; do
-    for f in "$name.pem" "$name.key"; do printf '  %s:\n    file: %s/%s\n' "$f" "$certs" "$f"; done
+  # Each file once: the shared three come with every role's list.
+  for f in $(for name in sim gcs "${robot_services[@]}"; do role_security_files "$name"; done | awk '!seen[$0]++'); do
+    printf '  %s:\n    file: %s/%s\n' "$f" "$certs" "$f"
   done
 fi
