@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <thread>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -455,6 +456,7 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
   for (int a = 0; a < t.agents(); ++a) {
     if (!reports.count(static_cast<comm::AgentId>(a))) m.reports_missing.push_back(t.name_of(static_cast<comm::AgentId>(a)));
   }
+  std::map<std::string, std::map<std::string, std::uint64_t>> sent_by;  // link -> agent -> bytes
   for (const auto& [id, r] : reports) {
     try {
       m.agents[t.name_of(id)] = r.extra_json().empty() ? json::object() : json::parse(r.extra_json());
@@ -479,6 +481,13 @@ void GcsNode::finish(std::chrono::milliseconds wait) {
       for (std::size_t d = 0; d < tt.queued_ticks().size(); ++d) bl.queued_ticks[d] += tt.queued_ticks()[d];
       m.traffic.total_messages += tt.sent_messages();
       m.traffic.total_bytes += tt.sent_bytes();
+      sent_by[tt.link()][t.name_of(id)] += tt.sent_bytes();
+    }
+  }
+  for (const auto& [link, agents] : sent_by) {
+    record::LinkTraffic& bl = m.traffic.by_link[link];
+    for (const auto& [agent, bytes] : agents) {
+      if (bytes > bl.busiest_sender_bytes) std::tie(bl.busiest_sender, bl.busiest_sender_bytes) = std::tie(agent, bytes);
     }
   }
   for (const auto& o : unreachable_.intervals()) {

@@ -180,7 +180,9 @@ json to_json(const RunMetrics& m) {
                      {"dropped_messages", l.dropped_messages},
                      {"queued_ticks", l.queued_ticks},
                      {"queue_median_ticks", opt(queue_quantile(l.queued_ticks, 0.5))},
-                     {"queue_p95_ticks", opt(queue_quantile(l.queued_ticks, 0.95))}};
+                     {"queue_p95_ticks", opt(queue_quantile(l.queued_ticks, 0.95))},
+                     {"busiest_sender", l.busiest_sender.empty() ? json(nullptr) : json(l.busiest_sender)},
+                     {"busiest_sender_bytes", l.busiest_sender_bytes}};
   }
   json rounds = json::array();
   for (const auto& [r, t] : m.rounds) rounds.push_back({{"round", r}, {"tick", t}});
@@ -317,7 +319,10 @@ RunMetrics metrics_from_json(const json& j, const std::string& source) {
     m.traffic.by_link[link] = {lf.get<std::uint64_t>("messages"), lf.get<std::uint64_t>("bytes"),
                                lf.get<std::uint64_t>("lost_transmissions"), lf.get<std::uint64_t>("dropped_messages"),
                                lf.raw().contains("queued_ticks") ? lf.get<std::vector<std::uint64_t>>("queued_ticks")
-                                                                 : std::vector<std::uint64_t>{}};
+                                                                 : std::vector<std::uint64_t>{},
+                               // absent from records of schema 6 written before it existed
+                               lf.raw().contains("busiest_sender") ? lf.optional<std::string>("busiest_sender").value_or("") : "",
+                               lf.raw().contains("busiest_sender_bytes") ? lf.get<std::uint64_t>("busiest_sender_bytes") : 0};
   }
   const Fields total = traffic.object("total");
   m.traffic.total_messages = total.get<std::uint64_t>("messages");

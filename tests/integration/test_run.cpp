@@ -75,6 +75,14 @@ TEST(IntegrationRun, SmallMissionCompletesWithEveryOutput) {
   for (const char* link : {"sim_robot", "member_leader", "leader_gcs", "telemetry"}) {
     EXPECT_GT(m["traffic"]["by_link"][link]["bytes"].get<long>(), 0) << link;
   }
+  // The busiest sender on each radio link is one agent that sent at least the link's average
+  // share (leader_gcs: 2 leaders and the GCS; member_leader: 4 robots) and at most all of it.
+  for (const auto& [link, senders] : {std::pair<const char*, long>{"leader_gcs", 3}, {"member_leader", 4}}) {
+    const auto& l = m["traffic"]["by_link"][link];
+    ASSERT_TRUE(l["busiest_sender"].is_string()) << link << ": " << l;
+    EXPECT_LE(l["busiest_sender_bytes"].get<long>(), l["bytes"].get<long>()) << link;
+    EXPECT_GE(l["busiest_sender_bytes"].get<long>() * senders, l["bytes"].get<long>()) << link;
+  }
   // Exploration drives through the traffic layer: waypoints go to the GCS (task_report), windows
   // come back (task_order) and reach the robots as routes and releases.
   for (const char* topic : {"sense", "motion", "patch_up", "patch_down", "route", "release", "progress", "patch_gcs",

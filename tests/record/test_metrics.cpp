@@ -26,8 +26,12 @@ TEST(Metrics, RoundTripsThroughJson) {
   m.motion.per_robot["leader-0"].longest_blocked_ticks = 5;
   m.phases[0].task = {{"planning_rounds", 18}};
   m.traffic.by_link["leader_gcs"].queued_ticks = {3, 0, 1};
+  m.traffic.by_link["leader_gcs"].busiest_sender = "gcs";
+  m.traffic.by_link["leader_gcs"].busiest_sender_bytes = 4100;
   const RunMetrics back = metrics_from_json(to_json(m), "test");
   EXPECT_EQ(back.traffic.by_link.at("leader_gcs").queued_ticks, (std::vector<std::uint64_t>{3, 0, 1}));
+  EXPECT_EQ(back.traffic.by_link.at("leader_gcs").busiest_sender, "gcs");
+  EXPECT_EQ(back.traffic.by_link.at("leader_gcs").busiest_sender_bytes, 4100u);
   EXPECT_EQ(to_json(back), to_json(m));
   EXPECT_EQ(back.schema_version, kMetricsSchemaVersion);
   EXPECT_EQ(back.agents_lost[0].stopped_answering_at_tick, 99u);
@@ -54,6 +58,20 @@ TEST(Metrics, QueueQuantilesOfAHistogramOfTicksWaited) {
   EXPECT_TRUE(j["member_leader"]["queue_p95_ticks"].is_null());
   EXPECT_EQ(j["leader_gcs"]["queue_median_ticks"], 0);
   EXPECT_EQ(j["leader_gcs"]["queue_p95_ticks"], 9);
+  EXPECT_TRUE(j["member_leader"]["busiest_sender"].is_null());  // nobody sent on it
+}
+
+// A record written before the busiest sender was kept reads as naming none.
+TEST(Metrics, ALinkWithoutItsBusiestSenderReadsAsNone) {
+  RunMetrics m = swarm::test::run_metrics("maze1", "baseline", 7, 345, 18);
+  m.traffic.by_link["leader_gcs"].bytes = 10;
+  auto j = to_json(m);
+  j["traffic"]["by_link"]["leader_gcs"].erase("busiest_sender");
+  j["traffic"]["by_link"]["leader_gcs"].erase("busiest_sender_bytes");
+  const RunMetrics back = metrics_from_json(j, "test");
+  EXPECT_EQ(back.traffic.by_link.at("leader_gcs").bytes, 10u);
+  EXPECT_TRUE(back.traffic.by_link.at("leader_gcs").busiest_sender.empty());
+  EXPECT_EQ(back.traffic.by_link.at("leader_gcs").busiest_sender_bytes, 0u);
 }
 
 TEST(Metrics, AMissingKeyOrAnotherVersionIsNamed) {

@@ -461,6 +461,11 @@ TEST(ExperimentAnalysis, BandwidthCapsFollowTheMeasuredDemand) {
     const std::string run = dir.str() + "/" + r.dir;
     auto m = swarm::test::run_metrics("maze1", "group-frontier", r.seed, 299 + static_cast<std::uint32_t>(r.seed), 15);
     m.traffic.by_link["member_leader"].bytes = static_cast<std::uint64_t>(900 * 0.2 * (300 + r.seed));
+    // member-1-1 sent a third of it in both runs, 300 B/s; seed 2's record names no sender.
+    if (r.seed == 1) {
+      m.traffic.by_link["member_leader"].busiest_sender = "member-1-1";
+      m.traffic.by_link["member_leader"].busiest_sender_bytes = m.traffic.by_link["member_leader"].bytes / 3;
+    }
     spit(run + "/metrics.json", swarm::record::to_json(m).dump(2));
     spit(run + "/scenario.pbtxt", "map: \"maze1\"\ntick_seconds: 0.2\n");
     spit(run + "/traffic.csv", "second,member_leader_bytes_per_s,leader_gcs_bytes_per_s,sim_robot_on_robot_bytes_per_s\n"
@@ -474,6 +479,9 @@ TEST(ExperimentAnalysis, BandwidthCapsFollowTheMeasuredDemand) {
   // Seed 1: 54,180 B / 60.2 s / 9 = 100 B/s; seed 2 the same rate. The last bin (0.2 s) is not a whole second.
   EXPECT_NEAR(d.mean_bytes_per_s, 100.0, 1e-9);
   EXPECT_NEAR(d.peak_bytes_per_s, 300.0, 1e-9);
+  EXPECT_NEAR(d.busiest_mean_bytes_per_s, 300.0, 1e-9);  // seed 1's only: seed 2 named none
+  EXPECT_EQ(d.busiest_sender, "member-1-1");
+  EXPECT_EQ(d.busiest_sender_runs, 1u);
   for (const ExperimentRun& r : plan.runs) {
     ASSERT_FALSE(r.setting.waits_for_demand()) << r.dir;
     if (!r.setting.demand) continue;
@@ -498,6 +506,7 @@ TEST(ExperimentAnalysis, BandwidthCapsFollowTheMeasuredDemand) {
   write_manifest(dir.str(), plan);
   const ExperimentPlan back = read_manifest(dir.str());
   EXPECT_EQ(back.demand.at("maze1").at("member_leader").peak_bytes_per_s, 300.0);
+  EXPECT_EQ(back.demand.at("maze1").at("member_leader").busiest_sender, "member-1-1");
   const ExperimentOutputs o = analyze_experiment(back, load_rows(dir.str(), back));
   EXPECT_TRUE(contains(o.table, "member_leader cap, mean x, maze1, group-frontier")) << o.table;
   EXPECT_TRUE(contains(o.table, "12.5 B/s")) << o.table;  // x1/8 of 100 B/s
@@ -507,6 +516,7 @@ TEST(ExperimentAnalysis, BandwidthCapsFollowTheMeasuredDemand) {
   EXPECT_TRUE(contains(o.table, "+60.1 % [+58.0, +62.2]")) << o.table;
   EXPECT_TRUE(contains(o.table, "2.0 / 3.0")) << o.table;  // median / p95 ticks queued under x1/8
   EXPECT_TRUE(contains(o.table, "knee, member_leader, maze1, group-frontier, ZSTD_RUN_LENGTH: 100 B/s per sender")) << o.table;
-  EXPECT_TRUE(contains(o.table, "(1.00 x its mean demand, 0.33 x its peak)")) << o.table;
+  EXPECT_TRUE(contains(o.table, "(1.00 x its mean demand, 0.33 x its peak, 0.33 x the busiest sender's mean)")) << o.table;
+  EXPECT_TRUE(contains(o.table, "the busiest sender, member-1-1 in 1 of 2 runs, alone: mean 300 B/s")) << o.table;
   EXPECT_TRUE(contains(o.csv, "member_leader_queue_p95_ticks")) << o.csv;
 }

@@ -124,7 +124,10 @@ json parameters_json(const ExperimentPlan& p) {
         for (const auto& [link, d] : links) {
           demand[map][link] = {{"mean_bytes_per_s", d.mean_bytes_per_s},
                                {"peak_bytes_per_s", d.peak_bytes_per_s},
-                               {"runs", d.runs}};
+                               {"runs", d.runs},
+                               {"busiest_sender_mean_bytes_per_s", d.busiest_mean_bytes_per_s},
+                               {"busiest_sender", d.busiest_sender},
+                               {"busiest_sender_runs", d.busiest_sender_runs}};
         }
       }
       j["demand_per_sender"] = demand;
@@ -554,7 +557,8 @@ ExperimentPlan read_manifest(const std::string& dir) {
     for (const auto& [map, links] : demand.items()) {
       for (const auto& [link, d] : links.items()) {
         p.demand[map][link] = {d.at("mean_bytes_per_s").get<double>(), d.at("peak_bytes_per_s").get<double>(),
-                               d.value("runs", std::size_t{0})};
+                               d.value("runs", std::size_t{0}), d.value("busiest_sender_mean_bytes_per_s", 0.0),
+                               d.value("busiest_sender", std::string{}), d.value("busiest_sender_runs", std::size_t{0})};
       }
     }
     if (j.contains("cap_encoding")) p.cap_encoding = parse_encoding(j["cap_encoding"], path);
@@ -609,6 +613,18 @@ std::optional<double> RunNumbers::peak_bytes_per_s_per_sender(const std::string&
   const auto l = links.find(link);
   if (l == links.end() || !l->second.peak_bytes_per_s || senders(link) <= 0) return std::nullopt;
   return *l->second.peak_bytes_per_s / senders(link);
+}
+
+std::string ExperimentPlan::Demand::busiest_sender_text() const {
+  if (busiest_sender_runs == 0) return busiest_sender;
+  return busiest_sender + " in " + std::to_string(busiest_sender_runs) + " of " + std::to_string(runs) + " runs";
+}
+
+std::optional<double> RunNumbers::busiest_sender_bytes_per_s(const std::string& link) const {
+  const auto l = links.find(link);
+  const double seconds = ticks_run * tick_seconds;
+  if (l == links.end() || l->second.busiest_sender.empty() || seconds <= 0) return std::nullopt;
+  return l->second.busiest_sender_bytes / seconds;
 }
 
 bool RunNumbers::ended_early() const {
@@ -690,6 +706,8 @@ std::optional<RunNumbers> load_run_numbers(const std::string& run_dir, std::stri
     out.dropped_messages = static_cast<double>(l.dropped_messages);
     if (const auto q = swarm::record::queue_quantile(l.queued_ticks, 0.5)) out.queue_median_ticks = *q;
     if (const auto q = swarm::record::queue_quantile(l.queued_ticks, 0.95)) out.queue_p95_ticks = *q;
+    out.busiest_sender = l.busiest_sender;
+    out.busiest_sender_bytes = static_cast<double>(l.busiest_sender_bytes);
   }
   for (const auto& [link, peak] : peak_rates(run_dir)) n.links[link].peak_bytes_per_s = peak;
   // tick_seconds is a scenario field, not a metric.
@@ -719,15 +737,27 @@ std::vector<std::string> resolve_demand(ExperimentPlan& plan, const std::vector<
   for (const std::string& map : plan.maps) {
     const std::string label = map_label(map);
     for (const std::string& link : plan.cap_links) {
-      std::vector<double> mean, peak;
+      std::vector<double> mean, peak, busiest;
+      std::map<std::string, int> busiest_names;
       for (const RunRow& r : rows) {
         if (r.run.map != map || !r.numbers || r.numbers->ended_early() || !uncapped(r.run.setting)) continue;
         const auto p = r.numbers->peak_bytes_per_s_per_sender(link);
         if (!p) continue;
         mean.push_back(r.numbers->mean_bytes_per_s_per_sender(link));
         peak.push_back(*p);
+        if (const auto b = r.numbers->busiest_sender_bytes_per_s(link)) {
+          busiest.push_back(*b);
+          ++busiest_names[r.numbers->links.at(link).busiest_sender];
+        }
       }
-      const ExperimentPlan::Demand d{summarize(mean).mean, summarize(peak).mean, mean.size()};
+      ExperimentPlan::Demand d{summarize(mean).mean, summarize(peak).mean, mean.size(), 0.0, {}, 0};
+      if (!busiest.empty()) {
+        d.busiest_mean_bytes_per_s = summarize(busiest).mean;
+        const auto most = std::max_element(busiest_names.begin(), busiest_names.end(),
+                                           [](const auto& a, const auto& b) { return a.second < b.second; });
+        d.busiest_sender = most->first;
+        d.busiest_sender_runs = static_cast<std::size_t>(most->second);
+      }
       if (mean.empty() || !(d.mean_bytes_per_s > 0) || !(d.peak_bytes_per_s > 0)) {
         if (std::find(missing.begin(), missing.end(), label) == missing.end()) missing.push_back(label);
         continue;

@@ -123,6 +123,14 @@ struct ExperimentPlan {
   struct Demand {
     double mean_bytes_per_s = 0, peak_bytes_per_s = 0;  // per sender
     std::size_t runs = 0;                               // the uncapped runs it was measured on
+    // The busiest sender's own mean rate over the run, and who that was in most runs (in
+    // busiest_sender_runs of them): a cap binds it first. 0 and empty when the runs' metrics name
+    // no sender.
+    double busiest_mean_bytes_per_s = 0;
+    std::string busiest_sender;
+    std::size_t busiest_sender_runs = 0;
+    // "gcs in 3 of 3 runs" (the name alone from a manifest that did not count the runs).
+    [[nodiscard]] std::string busiest_sender_text() const;
   };
   std::map<std::string, std::map<std::string, Demand>> demand;
   // loss: the loss probabilities swept (every link).
@@ -186,6 +194,8 @@ struct RunNumbers {
     std::optional<double> peak_bytes_per_s;
     std::optional<double> queue_median_ticks, queue_p95_ticks;
     double dropped_messages = 0;
+    std::string busiest_sender;  // the agent that sent the most bytes on it (empty: not recorded)
+    double busiest_sender_bytes = 0;
   };
   std::map<std::string, Link> links;
 
@@ -201,6 +211,8 @@ struct RunNumbers {
   // The link's rate per sender: over the run, and in its busiest second (nullopt without it).
   [[nodiscard]] double mean_bytes_per_s_per_sender(const std::string& link) const;
   [[nodiscard]] std::optional<double> peak_bytes_per_s_per_sender(const std::string& link) const;
+  // The busiest sender's own rate over the run (nullopt when the metrics name no sender).
+  [[nodiscard]] std::optional<double> busiest_sender_bytes_per_s(const std::string& link) const;
   // The GCS declared the map complete, but the simulator's ground truth says less than
   // kCompleteExploredFraction was seen: the run's steps mean nothing.
   [[nodiscard]] bool ended_early() const;

@@ -301,7 +301,11 @@ std::string demand_caps_text(const ExperimentPlan& plan, const std::vector<RunRo
                 " % of uncapped steps";
         if (demand) {
           line += " (" + format_number(knee->cap / demand->mean_bytes_per_s, 2) + " x its mean demand, " +
-                  format_number(knee->cap / demand->peak_bytes_per_s, 2) + " x its peak)";
+                  format_number(knee->cap / demand->peak_bytes_per_s, 2) + " x its peak";
+          if (demand->busiest_mean_bytes_per_s > 0) {
+            line += ", " + format_number(knee->cap / demand->busiest_mean_bytes_per_s, 2) + " x the busiest sender's mean";
+          }
+          line += ")";
         }
         const double smallest = points.empty() ? 0 : std::min_element(points.begin(), points.end(), [](auto& a, auto& b) { return a.cap < b.cap; })->cap;
         if (knee->cap <= smallest) line += "; no cap tried slowed it: the knee lies lower";
@@ -317,7 +321,12 @@ std::string demand_caps_text(const ExperimentPlan& plan, const std::vector<RunRo
     }
     if (demand) {
       text += "  (" + link + " demand per sender uncapped: mean " + format_rate(demand->mean_bytes_per_s) + ", peak " +
-              format_rate(demand->peak_bytes_per_s) + ", over " + std::to_string(demand->runs) + " runs)\n";
+              format_rate(demand->peak_bytes_per_s);
+      if (!demand->busiest_sender.empty()) {
+        text += "; the busiest sender, " + demand->busiest_sender_text() + ", alone: mean " +
+                format_rate(demand->busiest_mean_bytes_per_s);
+      }
+      text += ", over " + std::to_string(demand->runs) + " runs)\n";
     }
     figure.panels.push_back(panel);
   }

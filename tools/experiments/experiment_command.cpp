@@ -199,7 +199,11 @@ std::string demand_text(const ExperimentPlan& plan) {
     std::string sep = " ";
     for (const auto& [link, d] : links) {
       s += sep + link + " mean " + analysis::format_rate(d.mean_bytes_per_s) + ", peak " +
-           analysis::format_rate(d.peak_bytes_per_s) + " (" + std::to_string(d.runs) + " runs)";
+           analysis::format_rate(d.peak_bytes_per_s);
+      if (!d.busiest_sender.empty()) {
+        s += ", busiest sender (" + d.busiest_sender_text() + ") mean " + analysis::format_rate(d.busiest_mean_bytes_per_s);
+      }
+      s += " (" + std::to_string(d.runs) + " runs)";
       sep = "; ";
     }
     s += "\n";

@@ -88,6 +88,11 @@ struct LinkTraffic {
   // Under a bandwidth cap: queued_ticks[d] = messages that waited d ticks behind earlier ones
   // (comm::TrafficCount); empty on an uncapped link.
   std::vector<std::uint64_t> queued_ticks;
+  // The agent that sent the most bytes on the link, and how many: a cap binds per sender
+  // (comm/link.hpp: one token bucket per sender and class), so it is the busiest sender, not the
+  // average one, that a cap holds up first. Empty when nobody sent on the link.
+  std::string busiest_sender;
+  std::uint64_t busiest_sender_bytes = 0;
 };
 
 // The q-quantile (0..1) of the ticks in a queued_ticks histogram: the smallest d with at least
