@@ -15,6 +15,19 @@ const nlohmann::json& mapf_phase(const nlohmann::json& m) { return swarm::test::
 
 constexpr const char* kTwoGroups = "map: 'small' groups: 2 robots_per_group: 3 max_ticks: 600 ";
 
+// The first phase's mapf goals at the centres of `goals` (robot r's at goals[r]), resolved as a
+// scenario's are at load.
+void set_goals(app::RoleSetup& setup, const planner::OccupancyGrid& truth, const std::vector<planner::Cell>& goals,
+               const char* name) {
+  auto* mapf = setup.world.scenario.mutable_mission()->mutable_phase(0)->mutable_mapf();
+  for (const planner::Cell c : goals) {
+    auto* g = mapf->add_goals();
+    g->set_x(truth.origin_x() + (c.x + 0.5) * truth.resolution());
+    g->set_y(truth.origin_y() + (c.y + 0.5) * truth.resolution());
+  }
+  tasks::resolve_mission(setup.world, name);
+}
+
 TEST(MapfTask, WithoutDelayEveryRobotArrivesWithNoConflict) {
   swarm::test::FakeSwarm s(swarm::test::setup_from_text(std::string(kTwoGroups) + "mission { phase { mapf {} } }"));
   const auto m = s.run_to_end();
@@ -142,16 +155,13 @@ TEST(MapfTask, ARotationAcrossGroupsMovesInOneTickUnderDelayAndJitter) {
       "rotation test");
   auto setup = swarm::test::setup_for(truth, {1, 1}, sc);
   const std::vector<planner::Cell> ring{{1, 1}, {1, 2}, {2, 2}, {2, 1}};
-  auto* mapf = setup.world.scenario.mutable_mission()->mutable_phase(0)->mutable_mapf();
+  std::vector<planner::Cell> goals;
   for (const planner::Cell c : setup.world.robot_cells) {
     const auto at = std::find(ring.begin(), ring.end(), c);
     ASSERT_NE(at, ring.end());
-    const planner::Cell next = ring[static_cast<std::size_t>(at - ring.begin() + 1) % ring.size()];
-    auto* g = mapf->add_goals();
-    g->set_x(truth.origin_x() + (next.x + 0.5) * truth.resolution());
-    g->set_y(truth.origin_y() + (next.y + 0.5) * truth.resolution());
+    goals.push_back(ring[static_cast<std::size_t>(at - ring.begin() + 1) % ring.size()]);
   }
-  tasks::resolve_mission(setup.world, "rotation test");  // the goals set here
+  set_goals(setup, truth, goals, "rotation test");
   swarm::test::FakeSwarm s(setup);
   const auto m = s.run_to_end();
   ASSERT_TRUE(m["complete"].get<bool>());
@@ -192,6 +202,37 @@ TEST(MapfTask, ALeaderLostMidwayItsStandbyStopsTheGroupAndAllArePlannedAgain) {
   }
 }
 
+// A file of robots down a one-cell corridor, two groups mixed: each robot follows the one ahead,
+// and driven by the graph each of its steps waits for that robot to have left the cell. Robot
+// positions are shared in real time (the clock), so the follower's leader sees the cell left in
+// the same tick, whatever the group, and releases the step at once: the file drives its 6
+// planned steps in 10 ticks (15 while progress came only from reports, another group's through
+// the GCS).
+TEST(MapfTask, ByTheGraphAFollowerWaitsOnlyTheTickItsReleaseTakes) {
+  const auto truth = swarm::test::grid_from({"############", "#..........#", "############"});
+  auto sc = config::parse_scenario_text(
+      "groups: 2 robots_per_group: 2 max_ticks: 300 mission { phase { mapf { execution: MAPF_EXECUTE_ADG } } }",
+      "file test");
+  auto setup = swarm::test::setup_for(truth, {1, 1}, sc);
+  ASSERT_EQ(setup.world.robot_cells.size(), 4u);
+  std::vector<planner::Cell> goals;
+  for (const planner::Cell c : setup.world.robot_cells) {  // every robot 6 cells east
+    ASSERT_EQ(c.y, 1);
+    ASSERT_LE(c.x, 4);
+    goals.push_back({c.x + 6, c.y});
+  }
+  set_goals(setup, truth, goals, "file test");
+  swarm::test::FakeSwarm s(setup);
+  const auto m = s.run_to_end();
+  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto& p = mapf_phase(m);
+  EXPECT_EQ(p["task"]["robots_at_goal"], 4);
+  EXPECT_EQ(p["task"]["conflicts"], 0);
+  EXPECT_EQ(p["motion"]["blocked_moves"], 0);
+  EXPECT_EQ(p["task"]["planned_makespan"], 6);
+  EXPECT_EQ(p["task"]["driven_makespan_ticks"], 10);
+}
+
 // Two robots in a one-cell-wide corridor, each to the other's end: they can never pass. LaCAM
 // explores every configuration and proves it; the phase, and with it the mission, ends at once,
 // incomplete and saying why, instead of running on to max_ticks.
@@ -201,15 +242,9 @@ TEST(MapfTask, AnInfeasiblePlanEndsThePhaseAndTheMissionAtOnce) {
       "groups: 1 robots_per_group: 2 max_ticks: 300 mission { phase { mapf { solver: MAPF_LACAM } } }",
       "corridor test");
   auto setup = swarm::test::setup_for(truth, {1, 1}, sc);
-  auto* mapf = setup.world.scenario.mutable_mission()->mutable_phase(0)->mutable_mapf();
   ASSERT_EQ(setup.world.robot_cells.size(), 2u);
-  for (int r : {1, 0}) {  // each robot's goal: the other's start
-    const planner::Cell c = setup.world.robot_cells[static_cast<std::size_t>(r)];
-    auto* g = mapf->add_goals();
-    g->set_x(truth.origin_x() + (c.x + 0.5) * truth.resolution());
-    g->set_y(truth.origin_y() + (c.y + 0.5) * truth.resolution());
-  }
-  tasks::resolve_mission(setup.world, "corridor test");  // the goals set here
+  // Each robot's goal: the other's start.
+  set_goals(setup, truth, {setup.world.robot_cells[1], setup.world.robot_cells[0]}, "corridor test");
   swarm::test::FakeSwarm s(setup);
   const auto m = s.run_to_end();
   EXPECT_FALSE(m["complete"].get<bool>());

@@ -37,6 +37,20 @@ TEST(Adg, ATimeOfThePlanIsTheRouteStepEnteredByThen) {
   EXPECT_EQ(step_at(d, 0, 1), 1u);
 }
 
+// Progress read from where a robot stands: its route (0,0) (1,0) (1,1) (1,0) (2,0) passes (1,0)
+// twice, so only the next step's cell moves it on, one step at a time.
+TEST(Adg, ProgressFollowsTheRobotsCellOneStepAtATime) {
+  const std::vector<Path> plan{{{0, 0}, {1, 0}, {1, 1}, {1, 0}, {2, 0}}};
+  const Dependencies d = dependencies(plan);
+  EXPECT_EQ(progress_at(d, 0, 0, {0, 0}), 0u);  // still at its start
+  EXPECT_EQ(progress_at(d, 0, 0, {1, 0}), 1u);
+  EXPECT_EQ(progress_at(d, 0, 1, {1, 1}), 2u);
+  EXPECT_EQ(progress_at(d, 0, 2, {1, 0}), 3u);  // (1, 0) again: the fourth step, not the second
+  EXPECT_EQ(progress_at(d, 0, 1, {2, 0}), 1u);  // two steps ahead (a look missed): left as known
+  EXPECT_EQ(progress_at(d, 0, 3, {0, 0}), 3u);  // off its route: never lowered
+  EXPECT_EQ(progress_at(d, 0, 4, {2, 0}), 4u);  // at its end
+}
+
 TEST(Adg, AFollowerWaitsUntilTheCellAheadIsLeft) {
   // Robot 1 follows robot 0 along a corridor one step behind: each of its steps needs robot 0's next.
   const std::vector<Path> plan{{{1, 0}, {2, 0}, {3, 0}}, {{0, 0}, {1, 0}, {2, 0}}};

@@ -181,4 +181,10 @@ std::uint32_t step_at(const Dependencies& adg, int robot, int time) {
   return after == t.begin() ? 0 : static_cast<std::uint32_t>(after - t.begin() - 1);
 }
 
+std::uint32_t progress_at(const Dependencies& adg, int robot, std::uint32_t progress, Cell at) {
+  const std::vector<Cell>& route = adg.routes.at(static_cast<std::size_t>(robot));
+  const std::size_t next = static_cast<std::size_t>(progress) + 1;
+  return next < route.size() && route[next] == at ? progress + 1 : progress;
+}
+
 }  // namespace swarm::planner::mapf

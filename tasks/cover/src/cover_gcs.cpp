@@ -61,22 +61,29 @@ std::string CoverGcsTask::given_up() const {
 
 namespace {
 
-// What a division costs to drive, compared in this order: the ticks its drive is estimated to
-// take (a rehearsal of the traffic layer's plan for it, driven by the plan's dependencies with
-// each wait for another robot costing its messages' way round: more across groups, whose progress
-// reaches the other leaders through the GCS, docs/traffic.md); the steps that plan takes (the
-// longest route plus whatever the robots wait or step aside for one another); its moves onto
-// cells of another group's part; the moves of all its routes. Its longest route is kept to show.
+// What a division costs to drive, compared in this order: the cells to cover that none of its
+// routes passes (each calls for another division and plan once every route is driven); the ticks
+// its drive is estimated to take (a rehearsal of the traffic layer's plan for it, driven by the
+// plan's dependencies with each wait for another robot costing its release's way to the robot,
+// docs/traffic.md); the steps that plan takes (the longest route plus whatever the robots wait or
+// step aside for one another); its moves onto cells of another group's part; the moves of all its
+// routes. Its longest route is kept to show.
 struct DriveCost {
+  std::size_t missed = 0;
   int driven = 0, planned = 0;
   std::size_t foreign = 0, all = 0, longest = 0;
   auto operator<=>(const DriveCost&) const = default;
 };
 
 DriveCost drive_cost(const std::vector<std::vector<Cell>>& routes, const std::vector<int>& group_of_cell,
-                     const comm::Topology& t, const planner::OccupancyGrid& map,
+                     const std::vector<std::uint8_t>& cells, const comm::Topology& t, const planner::OccupancyGrid& map,
                      const std::function<std::pair<int, int>(const std::vector<std::vector<Cell>>&)>& rehearse) {
   DriveCost c;
+  std::vector<std::uint8_t> passed(cells.size(), 0);
+  for (const auto& route : routes) {
+    for (const Cell& cell : route) passed[static_cast<std::size_t>(map.index(cell))] = 1;
+  }
+  for (std::size_t i = 0; i < cells.size(); ++i) c.missed += cells[i] && !passed[i] ? 1 : 0;
   for (std::size_t r = 0; r < routes.size(); ++r) {
     const std::size_t moves = routes[r].empty() ? 0 : routes[r].size() - 1;
     c.longest = std::max(c.longest, moves);
@@ -92,7 +99,8 @@ DriveCost drive_cost(const std::vector<std::vector<Cell>>& routes, const std::ve
 }
 
 nlohmann::json to_json(const DriveCost& c) {
-  return {{"estimated_ticks", c.driven},
+  return {{"cells_missed", c.missed},
+          {"estimated_ticks", c.driven},
           {"planned_steps", c.planned},
           {"moves_in_other_groups_parts", c.foreign},
           {"route_moves", c.all},
@@ -255,7 +263,6 @@ CoverGcsTask::Division CoverGcsTask::divide_by_tours(const GcsContext& ctx, cons
 
 std::pair<int, int> CoverGcsTask::rehearsed_ticks(const GcsContext& ctx, const std::vector<std::vector<Cell>>& routes,
                                                   const std::vector<int>& robots) const {
-  const comm::Topology& t = ctx.setup.topology;
   // As the layer plans (tasks/mapf/mapf_windows.cpp): every route cell a goal, the same windows and seed.
   std::size_t longest = 0;
   for (const int r : robots) longest = std::max(longest, routes[static_cast<std::size_t>(r)].size());
@@ -264,20 +271,15 @@ std::pair<int, int> CoverGcsTask::rehearsed_ticks(const GcsContext& ctx, const s
       planner::traffic::rehearse(layer_map(ctx, known_), planner::MotionModel::four(), layer_agents(ctx, robots, routes), window,
                                  traffic_config(ctx.setup.world.scenario.seed(), phase_), 4 * static_cast<int>(longest) + 4 * window);
   if (!plan.finished) return {plan.makespan, plan.makespan};
-  // A dependency's cost, from the robot waited for leaving to the other entering: the plan's own
-  // tick, and the progress's way to the waiting robot's leader and its release's way back; across
-  // groups through the GCS as well (measured with exact links: 1 tick within a group, 4 across;
-  // docs/traffic.md), each link's mean delay on top.
+  // A dependency's cost, from the robot waited for leaving to the other entering: the waiting
+  // robot's leader sees the cell left in that tick's clock (positions are shared in real time,
+  // whatever the group), and its release takes the member<->leader link to the robot, whose next
+  // command reaches the simulator a tick later: 2 ticks with exact links, the link's mean delay on
+  // top.
   const comm::LinkTable& links = ctx.setup.links;
-  const auto mean_delay = [&](comm::LinkClass c) {
-    return static_cast<int>(links[c].delay_ticks) + static_cast<int>(links[c].jitter_ticks) / 2;
-  };
-  const int member_leader = 2 * mean_delay(comm::LinkClass::MemberLeader);
-  const int through_gcs = 2 * mean_delay(comm::LinkClass::LeaderGcs);
-  const auto lag = [&](int from, int to) {
-    const bool same_group = t.group_of(static_cast<comm::AgentId>(from)) == t.group_of(static_cast<comm::AgentId>(to));
-    return 1 + (same_group ? 1 + member_leader : 4 + member_leader + through_gcs);
-  };
+  const comm::LinkParams& member_leader = links[comm::LinkClass::MemberLeader];
+  const int release_delay = static_cast<int>(member_leader.delay_ticks) + static_cast<int>(member_leader.jitter_ticks) / 2;
+  const auto lag = [&](int, int) { return 2 + release_delay; };
   try {
     return {planner::traffic::driven_ticks(plan.paths, lag), plan.makespan};
   } catch (const std::invalid_argument&) {
@@ -308,7 +310,7 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
   std::vector<DriveCost> costs;
   const auto rehearse = [&](const std::vector<std::vector<Cell>>& routes) { return rehearsed_ticks(ctx, routes, robots); };
   for (const auto& [name, d] : candidates) {
-    costs.push_back(drive_cost(d.routes, d.group_of_cell, ctx.setup.topology, known_, rehearse));
+    costs.push_back(drive_cost(d.routes, d.group_of_cell, cells, ctx.setup.topology, known_, rehearse));
     compared[name] = to_json(costs.back());
     if (costs.back() < costs[best]) best = costs.size() - 1;
   }

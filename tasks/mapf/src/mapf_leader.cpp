@@ -268,6 +268,17 @@ void MapfGroupTask::on_progress(int index, const planner::RouteProgress& p, Grou
   release(ctx);
 }
 
+void MapfGroupTask::see_positions(const GroupContext& ctx) {
+  if (timed_ || adopting_) return;
+  for (std::size_t k = 0; k < progress_.size(); ++k) {
+    const planner::Cell at = ctx.clock.robots[static_cast<std::size_t>(robot_of_[k])].cell;
+    const std::uint32_t p = planner::mapf::progress_at(adg_, static_cast<int>(k), progress_[k], at);
+    if (p == progress_[k]) continue;
+    progress_[k] = p;
+    if (index_of_[k] >= 0) note(static_cast<int>(k));  // its own: the GCS hears it now
+  }
+}
+
 void MapfGroupTask::release(GroupContext& ctx) {
   if (!have_plan_ || holding_ || timed_ || adopting_ || !stopping_.empty() || stopped_all_) return;
   for (int k : own_) {
@@ -310,6 +321,7 @@ void MapfGroupTask::step(GroupContext& ctx) {
   // Reports, and the GCS's relays of them to the other leaders, can be lost (a lossy link): every
   // kRefreshTicks the whole state goes again, so no robot waits for ever on a lost one.
   if (ctx.clock.tick % kRefreshTicks == 0) gcs_back(ctx);
+  see_positions(ctx);
   if (!stopping_.empty()) {  // a robot lost before its stop was confirmed stands still anyway
     std::erase_if(stopping_, [&](int k) { return !ctx.alive[static_cast<std::size_t>(index_of_[static_cast<std::size_t>(k)])]; });
     stopped_all_ = stopping_.empty();

@@ -83,4 +83,11 @@ enum class Rotations { Together, Held };
 // then): what happens at a time of the timed plan happens at this step of the route.
 [[nodiscard]] std::uint32_t step_at(const Dependencies& adg, int robot, int time);
 
+// Robot `robot`'s progress as its cell `at` shows it, from `progress` (the step it is known to
+// stand on): one step further when it stands on its route's next cell, else `progress`. A robot
+// moves at most one cell a tick and a route has no two equal cells in a row, so a caller that
+// looks at every tick misses no step; a route may pass a cell twice, so only the next step counts
+// (a robot seen elsewhere, or a look missed, leaves it where it was: late, never early).
+[[nodiscard]] std::uint32_t progress_at(const Dependencies& adg, int robot, std::uint32_t progress, Cell at);
+
 }  // namespace swarm::planner::mapf

@@ -9,10 +9,9 @@
 //   int ticks = traffic::driven_ticks(r.paths, [](int from, int to) { return 1; });
 //
 // Driven by the plan's action-dependency graph (planner/mapf/adg.hpp), a robot enters a cell only
-// once its leader has heard that the robots planned there before have left: every such wait costs
-// the messages' way round. driven_ticks() estimates the drive with that cost per dependency (the
-// caller's `lag`, in ticks, from the robot waited for to the one waiting; within a group a
-// dependency costs less than across groups, whose progress is relayed).
+// once its leader has seen that the robots planned there before have left: every such wait costs
+// the release's way to the robot. driven_ticks() estimates the drive with that cost per
+// dependency (the caller's `lag`, in ticks, from the robot waited for to the one waiting).
 //
 // The windows are planned as the layer plans them while driving (each from where the last ends,
 // the robots' priorities kept), so with the driver's seed and window the rehearsal is the plan.

@@ -4,9 +4,11 @@
 //
 // With the plan, the leader builds the graph for ALL planned robots (every leader builds the same
 // one) and sends each of its robots its route without the waits, released only as far as the
-// graph allows. Each tick it learns progress: its own robots' from their RouteProgress, the other
-// groups' from the GCS's relay; whenever a robot of its own may go further it sends a
-// RouteRelease. It reports its own robots' progress and releases to the GCS (for the other
+// graph allows. Each tick it learns progress: every planned robot's from its cell in the clock
+// (robot positions are shared in real time, docs/design.md), its own robots' also from their
+// RouteProgress and the other groups' from the GCS's relay (which only confirm it: a robot whose
+// look was missed, or a plan taken late, catches up through them); whenever a robot of its own
+// may go further it sends a RouteRelease. It reports its own robots' progress and releases to the GCS (for the other
 // leaders), Done when they have all arrived, and after a hold, Held once they all stand at their
 // release. Late knowledge only makes robots wait longer: never collide, never deadlock (the graph
 // of a valid plan has no cycle; rotations go as one step, planner/mapf/adg.hpp).
@@ -63,6 +65,10 @@ class MapfGroupTask : public GroupTask {
   [[nodiscard]] task::Route route_from(std::size_t k, std::uint32_t from) const;
   // A seq of the current plan (its first window's up to its latest).
   [[nodiscard]] bool in_plan(std::uint32_t seq) const { return have_plan_ && seq >= chain_first_ && seq <= seq_; }
+  // Every planned robot's progress as far as its cell in the clock shows it (robot positions are
+  // shared in real time): a robot of another group is known to have left a cell the tick it did,
+  // not once its leader's report has come round through the GCS.
+  void see_positions(const GroupContext& ctx);
   // Sends a release to every robot of the group that may now go further.
   void release(GroupContext& ctx);
   void note(int k);  // robot k's progress/release goes into the next report
