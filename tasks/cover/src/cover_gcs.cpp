@@ -79,11 +79,11 @@ DriveCost drive_cost(const std::vector<std::vector<Cell>>& routes, const std::ve
                      const std::vector<std::uint8_t>& cells, const comm::Topology& t, const planner::OccupancyGrid& map,
                      const std::function<std::pair<int, int>(const std::vector<std::vector<Cell>>&)>& rehearse) {
   DriveCost c;
-  std::vector<std::uint8_t> passed(cells.size(), 0);
+  std::vector<std::uint8_t> passed(map.size(), 0);
   for (const auto& route : routes) {
     for (const Cell& cell : route) passed[static_cast<std::size_t>(map.index(cell))] = 1;
   }
-  for (std::size_t i = 0; i < cells.size(); ++i) c.missed += cells[i] && !passed[i] ? 1 : 0;
+  for (std::size_t i = 0; i < cells.size() && i < passed.size(); ++i) c.missed += cells[i] && !passed[i] ? 1 : 0;
   for (std::size_t r = 0; r < routes.size(); ++r) {
     const std::size_t moves = routes[r].empty() ? 0 : routes[r].size() - 1;
     c.longest = std::max(c.longest, moves);

@@ -8,10 +8,10 @@
 // (robot positions are shared in real time, docs/design.md), its own robots' also from their
 // RouteProgress and the other groups' from the GCS's relay (which only confirm it: a robot whose
 // look was missed, or a plan taken late, catches up through them); whenever a robot of its own
-// may go further it sends a RouteRelease. It reports its own robots' progress and releases to the GCS (for the other
-// leaders), Done when they have all arrived, and after a hold, Held once they all stand at their
-// release. Late knowledge only makes robots wait longer: never collide, never deadlock (the graph
-// of a valid plan has no cycle; rotations go as one step, planner/mapf/adg.hpp).
+// may go further it sends a RouteRelease. It reports its own robots' progress and releases to the
+// GCS (for the other leaders), Done when they have all arrived, and after a hold, Held once they
+// all stand at their release. Late knowledge only makes robots wait longer: never collide, never
+// deadlock (the graph of a valid plan has no cycle; rotations go as one step, planner/mapf/adg.hpp).
 // With `execution: MAPF_EXECUTE_TIMED` each robot instead gets its whole timed path (waits
 // included), released at once, to set off at the plan's start tick (the order's values[0]); a
 // hold then stops them where they stand (an empty route each), and Held follows once the
