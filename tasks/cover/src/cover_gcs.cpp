@@ -61,16 +61,22 @@ std::string CoverGcsTask::given_up() const {
 
 namespace {
 
-// What a division costs to drive, compared in this order: the cells to cover that none of its
-// routes passes (each calls for another division and plan once every route is driven); the ticks
-// its drive is estimated to take (a rehearsal of the traffic layer's plan for it, driven by the
-// plan's dependencies with each wait for another robot costing its release's way to the robot,
-// docs/traffic.md); the steps that plan takes (the longest route plus whatever the robots wait or
-// step aside for one another); its moves onto cells of another group's part; the moves of all its
+// Between the last route's end and the robots' first move on a second plan: the Done reports'
+// way to the GCS and the new routes' way to the members, 2 ticks each with exact links.
+constexpr int kSecondPlanTicks = 4;
+
+// What a division costs to drive, compared in this order: the ticks its drive is estimated to take
+// (a rehearsal of the traffic layer's plan for it, driven by the plan's dependencies with each
+// wait for another robot costing its release's way to the robot, docs/traffic.md; and when its
+// routes miss cells to cover, the second division and plan those wait for once every route is
+// driven: kSecondPlanTicks and the way from the nearest route's end to the farthest of them); the
+// cells missed; the steps the plan takes (the longest route plus whatever the robots wait or step
+// aside for one another); its moves onto cells of another group's part; the moves of all its
 // routes. Its longest route is kept to show.
 struct DriveCost {
+  int driven = 0;
   std::size_t missed = 0;
-  int driven = 0, planned = 0;
+  int planned = 0;
   std::size_t foreign = 0, all = 0, longest = 0;
   auto operator<=>(const DriveCost&) const = default;
 };
@@ -95,6 +101,18 @@ DriveCost drive_cost(const std::vector<std::vector<Cell>>& routes, const std::ve
     }
   }
   std::tie(c.driven, c.planned) = rehearse(routes);
+  if (c.missed > 0) {
+    std::vector<Cell> ends;
+    for (const auto& route : routes) {
+      if (!route.empty()) ends.push_back(route.back());
+    }
+    const std::vector<int> moves = planner::step_distances(map, ends, planner::MotionModel::four());
+    int farthest = 0;
+    for (std::size_t i = 0; i < cells.size() && i < passed.size(); ++i) {
+      if (cells[i] && !passed[i]) farthest = std::max(farthest, moves[i]);
+    }
+    c.driven += kSecondPlanTicks + farthest;
+  }
   return c;
 }
 
