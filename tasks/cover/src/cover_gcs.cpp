@@ -89,7 +89,11 @@ DriveCost drive_cost(const std::vector<std::vector<Cell>>& routes, const std::ve
   for (const auto& route : routes) {
     for (const Cell& cell : route) passed[static_cast<std::size_t>(map.index(cell))] = 1;
   }
-  for (std::size_t i = 0; i < cells.size() && i < passed.size(); ++i) c.missed += cells[i] && !passed[i] ? 1 : 0;
+  std::vector<std::size_t> missed;  // cells to cover that no route passes
+  for (std::size_t i = 0; i < cells.size() && i < passed.size(); ++i) {
+    if (cells[i] && !passed[i]) missed.push_back(i);
+  }
+  c.missed = missed.size();
   for (std::size_t r = 0; r < routes.size(); ++r) {
     const std::size_t moves = routes[r].empty() ? 0 : routes[r].size() - 1;
     c.longest = std::max(c.longest, moves);
@@ -108,9 +112,7 @@ DriveCost drive_cost(const std::vector<std::vector<Cell>>& routes, const std::ve
     }
     const std::vector<int> moves = planner::step_distances(map, ends, planner::MotionModel::four());
     int farthest = 0;
-    for (std::size_t i = 0; i < cells.size() && i < passed.size(); ++i) {
-      if (cells[i] && !passed[i]) farthest = std::max(farthest, moves[i]);
-    }
+    for (const std::size_t i : missed) farthest = std::max(farthest, moves[i]);
     c.driven += kSecondPlanTicks + farthest;
   }
   return c;
