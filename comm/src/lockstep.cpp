@@ -53,6 +53,7 @@ msgs::AgentReport Mailbox::make_report(const std::string& role, const std::strin
 
 void Mailbox::send_report(const std::string& role, const std::string& extra_json) {
   if (!report_writer_) return;
+  if (links_.realtime) wait_for_quiet();
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
   while (report_writer_->matched() < 1 && std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
@@ -60,6 +61,20 @@ void Mailbox::send_report(const std::string& role, const std::string& extra_json
   msgs::AgentReport report = make_report(role, extra_json);
   report_writer_->write(report);
   report_writer_->wait_acknowledged(std::chrono::seconds(10));
+}
+
+void Mailbox::wait_for_quiet() {
+  // A peer still finishing the tick before the stop may send after this agent read the stop;
+  // its message is counted on arrival, so wait until nothing has arrived for a few ticks.
+  const auto quiet = std::max(std::chrono::milliseconds(250),
+                              std::chrono::milliseconds(static_cast<int>(5 * links_.tick_ms)));
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (std::chrono::steady_clock::now() < give_up) {
+    const auto until = std::min(give_up, last_arrival_ + quiet);
+    if (std::chrono::steady_clock::now() >= until) return;
+    arrived_.wait_until(lock, until);
+  }
 }
 
 Mailbox::~Mailbox() {
@@ -76,6 +91,7 @@ void Mailbox::arrive(const msgs::Stamp& stamp, std::uint32_t deliver_tick, doubl
                        std::chrono::duration<double, std::milli>(delay_ms));
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    last_arrival_ = std::chrono::steady_clock::now();
     // Real time waits for nobody, so nothing is counted (the counts would only grow).
     if (!links_.realtime) (stamp.sender() == topology_.sim() ? sim_arrivals_ : agent_arrivals_).add(stamp.tick());
     if (keep) {

@@ -97,7 +97,9 @@ class Mailbox {
   bool advertises(const std::string& topic_name) const;
 
   // End of run: this agent's traffic and role numbers, sent to the GCS (which calls make_report
-  // for its own). Waits briefly for the GCS to acknowledge.
+  // for its own). Waits briefly for the GCS to acknowledge. In real time it first waits until no
+  // message has arrived for max(250 ms, 5 ticks), at most 3 s, so that what peers sent in their
+  // last tick is counted as received.
   void send_report(const std::string& role, const std::string& extra_json);
   msgs::AgentReport make_report(const std::string& role, const std::string& extra_json);
 
@@ -186,7 +188,10 @@ class Mailbox {
   void arrive(const msgs::Stamp& stamp, std::uint32_t deliver_tick, double delay_ms, bool keep, int order,
               std::function<void()> run, std::function<std::string()> bytes);
 
+  void wait_for_quiet();
+
   std::vector<Held> held_;
+  std::chrono::steady_clock::time_point last_arrival_{};
   std::uint64_t malformed_ = 0;
   // Arrivals counted for the barrier: per stamp tick for the ticks still ahead, and one running
   // total for those behind (folded in as the ticks pass, so memory stays flat over long runs).
