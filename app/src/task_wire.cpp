@@ -110,6 +110,52 @@ msgs::Route route_msg(const task::Route& r, std::uint32_t phase, comm::AgentId r
   return m;
 }
 
+msgs::RouteRelease release_msg(comm::AgentId robot, std::uint32_t route_id, std::uint32_t release,
+                               const planner::mapf::Watch& watch) {
+  msgs::RouteRelease m;
+  m.robot(robot);
+  m.route_id(route_id);
+  m.release(release);
+  for (std::size_t w = 0; w < watch.robots.size(); ++w) {
+    m.watch_robots().push_back(static_cast<std::uint16_t>(watch.robots[w]));
+    m.watch_lengths().push_back(static_cast<std::uint16_t>(watch.routes[w].size()));
+    const auto xy = to_xy(watch.routes[w]);
+    m.watch_xy().insert(m.watch_xy().end(), xy.begin(), xy.end());
+  }
+  for (const planner::mapf::Gate& g : watch.gates) {
+    m.gate_release().push_back(g.release);
+    for (std::uint32_t r : g.reached) m.gate_reached().push_back(static_cast<std::uint16_t>(r));
+  }
+  return m;
+}
+
+planner::mapf::Watch watch_from(const msgs::RouteRelease& m) {
+  planner::mapf::Watch w;
+  const std::size_t watched = m.watch_robots().size();
+  if (m.watch_lengths().size() != watched) throw std::runtime_error("a watch whose robots and routes do not pair up");
+  std::size_t cells = 0;
+  for (std::uint16_t n : m.watch_lengths()) cells += n;
+  if (m.watch_xy().size() != 2 * cells) throw std::runtime_error("a watch whose routes do not fill its cells");
+  if (m.gate_reached().size() != m.gate_release().size() * watched) {
+    throw std::runtime_error("a watch whose gates do not name every watched robot");
+  }
+  const std::vector<planner::Cell> all = from_xy(m.watch_xy());
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < watched; ++i) {
+    w.robots.push_back(m.watch_robots()[i]);
+    w.routes.emplace_back(all.begin() + static_cast<std::ptrdiff_t>(at),
+                          all.begin() + static_cast<std::ptrdiff_t>(at + m.watch_lengths()[i]));
+    at += m.watch_lengths()[i];
+  }
+  for (std::size_t g = 0; g < m.gate_release().size(); ++g) {
+    planner::mapf::Gate gate;
+    gate.release = m.gate_release()[g];
+    for (std::size_t i = 0; i < watched; ++i) gate.reached.push_back(m.gate_reached()[g * watched + i]);
+    w.gates.push_back(std::move(gate));
+  }
+  return w;
+}
+
 task::WaypointReport waypoint_report_from(const msgs::MemberStatus& m) { return {m.robot(), m.round(), m.state()}; }
 
 msgs::PlanReport plan_report_msg(const task::PlanTelemetry& p, int group) {

@@ -76,14 +76,12 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, 
     }
     return r.route_id();
   };
-  outlets_.release = [this, release](int index, std::uint32_t route_id, std::uint32_t step) {
+  outlets_.release = [this, release](int index, std::uint32_t route_id, std::uint32_t step,
+                                     const planner::mapf::Watch& watch) {
     if (index == self_index_) {
       robot_.release(route_id, step);
     } else if (release != nullptr) {
-      msgs::RouteRelease r;
-      r.robot(topology_.robot(group_, index));
-      r.route_id(route_id);
-      r.release(step);
+      msgs::RouteRelease r = app::release_msg(topology_.robot(group_, index), route_id, step, watch);
       release->send(r);
     }
   };

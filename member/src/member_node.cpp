@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "swarm/app/convert.hpp"
+#include "swarm/app/task_wire.hpp"
 
 namespace swarm::member {
 
@@ -78,9 +79,10 @@ MemberNode::MemberNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, 
   }, comm::Delivery::Reliable, leaders);
   agent.subscribe<msgs::RouteRelease>(topic::release(group), LinkClass::MemberLeader,
                                       [this](const msgs::RouteRelease& r) {
-                                        if (r.robot() == agent_.self() && from_leader(r.header())) {
-                                          robot_.release(r.route_id(), r.release());
-                                        }
+                                        if (r.robot() != agent_.self() || !from_leader(r.header())) return;
+                                        robot_.release(r.route_id(), r.release());
+                                        planner::mapf::Watch w = app::watch_from(r);
+                                        if (!w.gates.empty()) watched_.watch(r.route_id(), r.header().tick(), std::move(w));
                                       }, comm::Delivery::Reliable, leaders);
 }
 
@@ -110,6 +112,12 @@ void MemberNode::step(const msgs::Clock& clock) {
     patch_up_.send(patch);
     pending_up_.clear();
   }
+  // The robots' cells in this clock may open a watched release: the robot then sets off now.
+  std::vector<planner::Cell> cells;
+  cells.reserve(clock.robots().size());
+  for (const msgs::RobotState& r : clock.robots()) cells.push_back({r.x(), r.y()});
+  watched_.see(clock.tick(), std::move(cells));
+  if (const auto open = watched_.opened()) robot_.release(open->route_id, open->release);
   const RobotAgent::Step s = robot_.step(clock.tick());
   publish_motion(motion_, agent_.self(), s);
   // Progress and what the robot holds go to the leader when they change, all again to a new
@@ -143,6 +151,7 @@ std::string MemberNode::report_json() const {
   return nlohmann::json{{"replans", robot_.replans()},
                         {"assignments", assignments_},
                         {"routes", routes_},
+                        {"releases_watched", watched_.releases_opened()},
                         {"orders_not_from_the_leader", not_from_leader_}}
       .dump();
 }

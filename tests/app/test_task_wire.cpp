@@ -111,6 +111,28 @@ TEST(TaskWire, ARouteCarriesEveryFieldAndTheNodesNumbering) {
   EXPECT_EQ(m.start_tick(), 30u);
 }
 
+TEST(TaskWire, AReleaseCarriesItsWatchAndAWatchThatDoesNotFitIsRefused) {
+  planner::mapf::Watch w;
+  w.robots = {7, 2};
+  w.routes = {{{1, 1}, {2, 1}, {3, 1}}, {{5, 5}, {5, 6}}};
+  w.gates = {{4, {1, 0}}, {5, {2, 1}}};
+  const msgs::RouteRelease m = release_msg(6, 99, 3, w);
+  EXPECT_EQ(m.robot(), 6);
+  EXPECT_EQ(m.route_id(), 99u);
+  EXPECT_EQ(m.release(), 3u);
+  EXPECT_EQ(watch_from(m), w);
+  EXPECT_EQ(watch_from(release_msg(6, 99, 3, {})), planner::mapf::Watch{});  // a release alone
+  msgs::RouteRelease short_gates = m;
+  short_gates.gate_reached().pop_back();
+  EXPECT_THROW(watch_from(short_gates), std::runtime_error);
+  msgs::RouteRelease short_route = m;
+  short_route.watch_lengths()[1] = 3;
+  EXPECT_THROW(watch_from(short_route), std::runtime_error);
+  msgs::RouteRelease unpaired = m;
+  unpaired.watch_lengths().pop_back();
+  EXPECT_THROW(watch_from(unpaired), std::runtime_error);
+}
+
 TEST(TaskWire, TheClockGivesEveryRobotAndEachGroupsLeader) {
   const comm::Topology t(2, 2);
   msgs::Clock c;

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "swarm/planner/grid/motion.hpp"
+#include "swarm/planner/grid/rng.hpp"
 
 namespace swarm::planner {
 namespace {
@@ -193,6 +194,48 @@ class Solver {
     return any;
   }
 
+  // 2-opt and exchanges until neither improves (or `stop`).
+  void improve(Tours& t, int& taken, const std::function<bool()>& stop) const {
+    for (bool improved = true; improved && !(stop && stop());) {
+      improved = two_opt(t, taken);
+      improved = exchange(t, taken, stop) || improved;
+    }
+  }
+
+  // Ruin and recreate (Schrimpf, Schneider, Stamm-Wilbrandt and Dueck, J. Comput. Phys. 2000):
+  // the local search stops where no single move or swap helps, and a route's last targets are
+  // often placed badly for want of a joint move. Each round takes `ruined` targets out, half of
+  // them from the longest route, puts each back where the score grows least, searches locally
+  // again, and keeps the result if it scores better.
+  void ruin_and_recreate(Tours& best, int rounds, std::size_t ruined, Rng& rng, int& taken,
+                         const std::function<bool()>& stop) const {
+    for (int round = 0; round < rounds && !(stop && stop()); ++round) {
+      Tours t = best;
+      std::vector<int> out;
+      const auto take_from = [&](int r) {
+        auto& o = t.order[static_cast<std::size_t>(r)];
+        const std::size_t i = static_cast<std::size_t>(rng.below(o.size()));
+        t.length[static_cast<std::size_t>(r)] -= removal(t, r, i);
+        out.push_back(o[i]);
+        o.erase(o.begin() + static_cast<std::ptrdiff_t>(i));
+      };
+      const auto longest = static_cast<int>(std::max_element(t.length.begin(), t.length.end()) - t.length.begin());
+      while (out.size() < ruined / 2 && !t.order[static_cast<std::size_t>(longest)].empty()) take_from(longest);
+      std::size_t left = 0;
+      for (const auto& o : t.order) left += o.size();
+      while (out.size() < ruined && left > 0) {
+        const int r = static_cast<int>(rng.below(static_cast<std::uint64_t>(robots_)));
+        if (t.order[static_cast<std::size_t>(r)].empty()) continue;
+        take_from(r);
+        --left;
+      }
+      for (std::size_t i = out.size(); i > 1; --i) std::swap(out[i - 1], out[static_cast<std::size_t>(rng.below(i))]);
+      for (const int g : out) insert_best(t, g);
+      improve(t, taken, stop);
+      if (score(t) < score(best)) best = std::move(t);
+    }
+  }
+
   // Moving one target to another route (or its best place in its own), and swapping two targets
   // of different routes, whenever the score drops.
   bool exchange(Tours& t, int& taken, const std::function<bool()>& stop) const {
@@ -210,6 +253,29 @@ class Solver {
   }
 
  private:
+  // Target g where the score grows least; left out if no route reaches it (cannot happen: it was
+  // on one).
+  void insert_best(Tours& t, int g) const {
+    const Score now = score(t);
+    Score best{kFar, kFar};
+    int best_r = -1;
+    std::size_t best_p = 0;
+    for (int r = 0; r < robots_; ++r) {
+      const auto& o = t.order[static_cast<std::size_t>(r)];
+      const std::int64_t rest = longest_but(t, r, r);
+      for (std::size_t p = 0; p <= o.size(); ++p) {
+        const std::int64_t add = detour(before(t, r, p), g, p < o.size() ? o[p] : -1);
+        if (add >= kFar) continue;
+        const Score s{std::max(rest, t.length[static_cast<std::size_t>(r)] + add), now.sum + add};
+        if (s < best) best = s, best_r = r, best_p = p;
+      }
+    }
+    if (best_r < 0) return;
+    auto& o = t.order[static_cast<std::size_t>(best_r)];
+    t.length[static_cast<std::size_t>(best_r)] += detour(before(t, best_r, best_p), g, best_p < o.size() ? o[best_p] : -1);
+    o.insert(o.begin() + static_cast<std::ptrdiff_t>(best_p), g);
+  }
+
   // Removing position i of route a saves this many moves.
   [[nodiscard]] std::int64_t removal(const Tours& t, int a, std::size_t i) const {
     return detour(before(t, a, i), t.order[static_cast<std::size_t>(a)][i], after(t, a, i));
@@ -355,14 +421,13 @@ CoverTours cover_tours(const OccupancyGrid& map, const std::vector<std::uint8_t>
 
   const Solver solver(d, robots.size(), targets.size());
   std::vector<Tours> tried = {solver.nearest_neighbour(), solver.farthest_insertion()};
-  for (Tours& t : tried) {
-    for (bool improved = true; improved && !(stop && stop());) {
-      improved = solver.two_opt(t, out.improvements);
-      improved = solver.exchange(t, out.improvements, stop) || improved;
-    }
-  }
+  for (Tours& t : tried) solver.improve(t, out.improvements, stop);
+  Tours best = Solver::score(tried[1]) < Solver::score(tried[0]) ? tried[1] : tried[0];
+  Rng rng(config.seed);
+  const double squared = static_cast<double>(targets.size()) * static_cast<double>(targets.size());
+  const int rounds = static_cast<int>(std::min<double>(config.ruin_rounds, config.ruin_work / squared));
+  solver.ruin_and_recreate(best, rounds, std::min(config.ruined_targets, targets.size()), rng, out.improvements, stop);
   out.stopped = stop && stop();
-  const Tours& best = Solver::score(tried[1]) < Solver::score(tried[0]) ? tried[1] : tried[0];
 
   // The cell routes: shortest paths between consecutive targets, skipping a target its route has
   // already passed.

@@ -12,6 +12,7 @@
 #include "swarm/config/task_config.hpp"
 #include "swarm/planner/coverage/cover_tours.hpp"
 #include "swarm/planner/grid/deadline.hpp"
+#include "swarm/planner/grid/rng.hpp"
 #include "swarm/planner/traffic/rehearsal.hpp"
 #include "swarm/tasks/cover/cover_settings.hpp"
 #include "swarm/planner/explore/frontier.hpp"
@@ -66,8 +67,8 @@ namespace {
 constexpr int kSecondPlanTicks = 4;
 
 // What a division costs to drive, compared in this order: the ticks its drive is estimated to take
-// (a rehearsal of the traffic layer's plan for it, driven by the plan's dependencies with each
-// wait for another robot costing its release's way to the robot, docs/traffic.md; and when its
+// (a rehearsal of the traffic layer's plan for it, driven by the plan's dependencies, each robot
+// setting off the tick after the robots it waits on have gone, docs/traffic.md; and when its
 // routes miss cells to cover, the second division and plan those wait for once every route is
 // driven: kSecondPlanTicks and the way from the nearest route's end to the farthest of them); the
 // cells missed; the steps the plan takes (the longest route plus whatever the robots wait or step
@@ -250,6 +251,7 @@ CoverGcsTask::Division CoverGcsTask::divide_by_tours(const GcsContext& ctx, cons
   for (int r : robots) at.push_back(ctx.cell_of(r));
   planner::CoverToursConfig cfg;
   cfg.max_targets = config_.tour_candidate_cells();
+  cfg.seed = planner::mix_seed(ctx.setup.world.scenario.seed(), seq_);
   const planner::CoverTours tours = planner::cover_tours(known_, cells, at, cfg, stop);
   Division out;
   if (!tours.solved) return out;
@@ -291,15 +293,11 @@ std::pair<int, int> CoverGcsTask::rehearsed_ticks(const GcsContext& ctx, const s
       planner::traffic::rehearse(layer_map(ctx, known_), planner::MotionModel::four(), layer_agents(ctx, robots, routes), window,
                                  traffic_config(ctx.setup.world.scenario.seed(), phase_), 4 * static_cast<int>(longest) + 4 * window);
   if (!plan.finished) return {plan.makespan, plan.makespan};
-  // A dependency's cost, from the robot waited for leaving to the other entering: the waiting
-  // robot's leader sees the cell left in that tick's clock (positions are shared in real time,
-  // whatever the group), and its release takes the member<->leader link to the robot, whose next
-  // command reaches the simulator a tick later: 2 ticks with exact links, the link's mean delay on
-  // top.
-  const comm::LinkTable& links = ctx.setup.links;
-  const comm::LinkParams& member_leader = links[comm::LinkClass::MemberLeader];
-  const int release_delay = static_cast<int>(member_leader.delay_ticks) + static_cast<int>(member_leader.jitter_ticks) / 2;
-  const auto lag = [&](int, int) { return 2 + release_delay; };
+  // A dependency's cost, from the robot waited for leaving to the other entering: one tick, the
+  // step itself. Robot positions are shared in real time, and the waiting robot's member sees the
+  // cell left in that tick's clock and sets off (its release's watch, tasks/mapf/mapf_leader.hpp),
+  // whatever the group and whatever the member<->leader link's delay.
+  const auto lag = [](int, int) { return 1; };
   try {
     return {planner::traffic::driven_ticks(plan.paths, lag), plan.makespan};
   } catch (const std::invalid_argument&) {

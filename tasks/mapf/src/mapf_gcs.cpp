@@ -255,10 +255,7 @@ void MapfGcsTask::step(GcsContext& ctx) {
   }
   if (lost && !holding_ && !all_done) {
     holding_ = true;
-    // Lifelong, the robots stop where they stand: their releases may reach windows ahead.
-    std::vector<std::int32_t> hold{static_cast<std::int32_t>(seq_)};
-    if (window_ > 0) hold.push_back(kHoldStop);
-    send_order(ctx, task::OrderKind::Hold, std::move(hold));
+    send_order(ctx, task::OrderKind::Hold, {static_cast<std::int32_t>(seq_)});
     std::fprintf(stderr, "gcs: mapf: a planned robot was lost at tick %u; holding plan %u\n", ctx.tick(), seq_);
     return;
   }

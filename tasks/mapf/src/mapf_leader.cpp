@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "swarm/tasks/mapf/mapf_gcs.hpp"  // the messages' contract (kHoldStop)
+#include "swarm/tasks/mapf/mapf_gcs.hpp"  // the messages' contract (kContinues)
 
 namespace swarm::leader {
 
@@ -58,6 +58,7 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
   index_of_.assign(n, -1);
   progress_.assign(n, 0);
   released_.assign(n, 0);
+  watched_.assign(n, {});
   route_id_.assign(n, 0);
   base_.assign(n, 0);
   own_.clear();
@@ -114,12 +115,12 @@ void MapfGroupTask::on_order(const task::Order& o, GroupContext& ctx) {
   if (!in_plan(plan)) return;  // stale
   if (o.kind == task::OrderKind::Hold) {
     holding_ = true;
-    // Timed, every robot holds its whole route: stop them. Timed driving is chosen only with no
-    // link delay, so every robot of the plan stops at the same tick: a frozen step of a valid plan.
-    // By the graph a robot may stop anywhere within its release: no robot is released into a cell
-    // before the robots planned there earlier have left it.
-    const bool stop = o.values.size() > 1 && o.values[1] == gcs::kHoldStop;
-    if ((timed_ || stop) && !adopting_) stop_own_robots(ctx);
+    // Every robot stops where it stands. Timed, each holds its whole route; timed driving is chosen
+    // only with no link delay, so every robot of the plan stops at the same tick: a frozen step of
+    // a valid plan. By the graph a robot may stop anywhere (no robot is released into a cell before
+    // the robots planned there earlier have left it), and it must be told: its watch (release())
+    // could open its route further at any time.
+    if (!adopting_) stop_own_robots(ctx);
     return;
   }
   if (o.kind == task::OrderKind::Rotate) {
@@ -285,9 +286,22 @@ void MapfGroupTask::release(GroupContext& ctx) {
     const auto ku = static_cast<std::size_t>(k);
     if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
     const std::uint32_t may = planner::mapf::releasable(adg_, k, progress_, planner::mapf::Rotations::Held);
-    if (may <= released_[ku]) continue;
-    released_[ku] = may;
-    ctx.out.release(index_of_[ku], route_id_[ku], may - base_[ku]);
+    // A member judges the steps after its release itself, from the robots' cells in the clock,
+    // and so sets off in the tick the robots it waits on have gone, not once this release has
+    // reached it. The leader's own robot needs no watch: its leader looks every tick.
+    planner::mapf::Watch watch;
+    if (index_of_[ku] != ctx.self) watch = planner::mapf::watch_release(adg_, k, progress_, kWatchGates);
+    std::vector<std::uint32_t> gates;
+    for (const planner::mapf::Gate& g : watch.gates) gates.push_back(g.release);
+    const bool further = may > released_[ku];
+    if (!further && gates == watched_[ku]) continue;
+    released_[ku] = std::max(released_[ku], may);
+    watched_[ku] = std::move(gates);
+    for (int& r : watch.robots) r = robot_of_[static_cast<std::size_t>(r)];
+    for (planner::mapf::Gate& g : watch.gates) g.release -= base_[ku];
+    ctx.out.release(index_of_[ku], route_id_[ku], released_[ku] - base_[ku], watch);
+    if (!watch.gates.empty()) ++watches_sent_;
+    if (!further) continue;
     ++releases_sent_;
     note(k);
   }
@@ -361,7 +375,10 @@ void MapfGroupTask::gcs_back(GroupContext&) {
 }
 
 nlohmann::json MapfGroupTask::numbers() const {
-  return {{"plans", plans_taken_}, {"windows_continued", plans_continued_}, {"releases_sent", releases_sent_}};
+  return {{"plans", plans_taken_},
+          {"windows_continued", plans_continued_},
+          {"releases_sent", releases_sent_},
+          {"watches_sent", watches_sent_}};
 }
 
 }  // namespace swarm::leader

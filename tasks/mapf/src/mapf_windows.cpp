@@ -306,7 +306,7 @@ void MapfGcsTask::cut_for_repick(GcsContext& ctx) {
   hold_why_ = repick_;
   repick_ = nullptr;
   holding_ = true;
-  send_order(ctx, task::OrderKind::Hold, {static_cast<std::int32_t>(seq_), kHoldStop});
+  send_order(ctx, task::OrderKind::Hold, {static_cast<std::int32_t>(seq_)});
 }
 
 }  // namespace swarm::gcs

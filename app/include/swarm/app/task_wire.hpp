@@ -12,6 +12,7 @@
 #include "swarm/comm/topology.hpp"
 #include "swarm/config/scenario.hpp"
 #include "swarm/planner/grid/map_patch.hpp"
+#include "swarm/planner/mapf/release_watch.hpp"
 #include "swarm_msgs.h"
 
 namespace swarm::app {
@@ -28,6 +29,13 @@ msgs::TaskReport report_msg(const task::Report& report, std::uint32_t phase);
 task::Report report_from(const msgs::TaskReport& msg);
 
 msgs::Route route_msg(const task::Route& route, std::uint32_t phase, comm::AgentId robot, std::uint32_t route_id);
+
+// A release with the watch that may open the route further (planner/mapf/release_watch.hpp; the
+// watched robots by agent id, the gates' releases in steps of the route as sent).
+msgs::RouteRelease release_msg(comm::AgentId robot, std::uint32_t route_id, std::uint32_t release,
+                               const planner::mapf::Watch& watch);
+// Throws on a watch whose parts do not fit together.
+planner::mapf::Watch watch_from(const msgs::RouteRelease& msg);
 
 task::WaypointReport waypoint_report_from(const msgs::MemberStatus& msg);
 

@@ -42,6 +42,7 @@
 #include "swarm/leader/group_map.hpp"
 #include "swarm/member/robot_agent.hpp"
 #include "swarm/planner/grid/grid.hpp"
+#include "swarm/planner/mapf/release_watch.hpp"
 
 namespace swarm::leader {
 
@@ -49,8 +50,11 @@ namespace swarm::leader {
 struct GroupOutlets {
   // Gives the route a number of its own (route ids never repeat in a run) and returns it.
   std::function<std::uint32_t(int index, const task::Route&)> route;
-  // Robot `index` may drive its route `route_id` as far as step `release`.
-  std::function<void(int index, std::uint32_t route_id, std::uint32_t release)> release;
+  // Robot `index` may drive its route `route_id` as far as step `release`, and as far as `watch`
+  // opens it (planner/mapf/release_watch.hpp: watched robots by agent id, gates in steps of the
+  // route as sent; the leader's own robot needs none, its leader looks every tick).
+  std::function<void(int index, std::uint32_t route_id, std::uint32_t release, const planner::mapf::Watch& watch)>
+      release;
   std::function<void(const task::Report&)> report;
   // A planning round's waypoints, one per robot of the group by index (none: stay), to the members
   // (the leader's own robot is the task's to assign).

@@ -1,7 +1,8 @@
 // swarm-member's node: a RobotAgent wired to its topics. Scans come from the simulator, map
 // changes go up to the group leader, the leader's group map changes and its orders come down:
 // waypoints (exploration: the robot plans its own way) or routes to follow exactly (every other
-// task), with releases; the member reports its progress along a route. A member knows no task.
+// task), with releases and the watches that open a route further as the robots in the clock move
+// (watched_releases.hpp); the member reports its progress along a route. A member knows no task.
 //
 // It obeys only its group's leader of the moment (comm/leadership.hpp): orders from a robot that
 // did not lead the group at the tick they were sent are dropped and counted. A standby leader's
@@ -18,6 +19,7 @@
 #include "swarm/comm/lockstep.hpp"
 #include "swarm/app/role.hpp"
 #include "swarm/member/robot_agent.hpp"
+#include "swarm/member/watched_releases.hpp"
 #include "swarm/planner/grid/map_patch.hpp"
 
 namespace swarm::member {
@@ -45,6 +47,7 @@ class MemberNode {
   bool from_leader(const msgs::Stamp& stamp);
 
   RobotAgent& robot_;
+  WatchedReleases watched_;  // the leader's release watches, followed in the clock
   comm::LeaderLog leaders_;
   std::function<void(const std::vector<planner::CellChange>&)> to_leader_;  // set while leading
   std::uint64_t not_from_leader_ = 0;

@@ -16,7 +16,10 @@
 //     the route it joins stays shortest.
 // Local search, until nothing improves or `stop`: within a route 2-opt (reversing a stretch) and
 // moving one target; between routes moving one target, or swapping two, from any route to
-// another. A move is taken when it lowers (longest route, sum of routes), in that order.
+// another. A move is taken when it lowers (longest route, sum of routes), in that order. Then
+// rounds of ruin and recreate from the better (config below): `ruined_targets` targets taken out
+// (half from the longest route), each put back where the score grows least, the local search
+// again, the result kept if it scores better.
 // The cell route then follows shortest paths between consecutive targets; a target passed on the
 // way is dropped from its later visit.
 //
@@ -24,8 +27,8 @@
 //   if (t.solved) t.routes[i];   // robot i: robot_cells[i] first, 4-connected steps
 //   t.owner[index];               // the robot whose list holds that target cell, -1: none
 //
-// Deterministic. Cost: one BFS per target, O(targets^2) per local-search pass; sets larger than
-// config.max_targets are not attempted (solved = false). Thread-safe: no shared state.
+// Deterministic for one seed. Cost: one BFS per target, O(targets^2) per local-search pass, a few
+// passes per ruin round; sets larger than config.max_targets are not attempted (solved = false). Thread-safe: no shared state.
 #pragma once
 
 #include <cstddef>
@@ -39,6 +42,12 @@ namespace swarm::planner {
 
 struct CoverToursConfig {
   std::size_t max_targets = 600;
+  // Rounds of ruin and recreate: at most ruin_rounds, and at most ruin_work / targets² (each
+  // round's local search costs about targets²: 600 targets take 27 rounds, about 0.3 s).
+  int ruin_rounds = 1000;
+  double ruin_work = 1e7;
+  std::size_t ruined_targets = 12;
+  std::uint64_t seed = 1;  // the ruin's choices
 };
 
 struct CoverTours {

@@ -9,9 +9,9 @@
 //   int ticks = traffic::driven_ticks(r.paths, [](int from, int to) { return 1; });
 //
 // Driven by the plan's action-dependency graph (planner/mapf/adg.hpp), a robot enters a cell only
-// once its leader has seen that the robots planned there before have left: every such wait costs
-// the release's way to the robot. driven_ticks() estimates the drive with that cost per
-// dependency (the caller's `lag`, in ticks, from the robot waited for to the one waiting).
+// once the robots planned there before have left, and without the plan's waits: a robot that waits
+// on nobody drives on. driven_ticks() estimates that drive with a cost per dependency (the
+// caller's `lag`, in ticks, from the robot waited for leaving to the one waiting entering).
 //
 // The windows are planned as the layer plans them while driving (each from where the last ends,
 // the robots' priorities kept), so with the driver's seed and window the rehearsal is the plan.

@@ -23,9 +23,9 @@
 //     its robots whose progress or release changed; state Done when all its robots of plan s have
 //     arrived; Held after a hold when they all stand still.
 //   Order Progress, kAllGroups: values = [s, robot, step, release, ...], relayed.
-//   Order Hold, seq s: stop releasing plan s. values = [s] or [s, kHoldStop]: with kHoldStop
-//     each leader also stops its robots where they stand (an empty route each), as a timed plan's
-//     hold does, instead of letting them drive to their release; Held once all are confirmed.
+//   Order Hold, seq s: stop releasing plan s; each leader stops its robots where they stand (an
+//     empty route each: a robot's release may reach windows ahead, and its member may open its
+//     route further by itself, planner/mapf/release_watch.hpp); Held once all are confirmed.
 //   Order Rotate, kAllGroups, seq s: values = [s, q, T]: the robots of the plan's
 //     rotation q (planner/mapf/adg.hpp: robots moving round a cycle of cells in one time step)
 //     make their step of it at tick T, all together. Driven by the graph, leaders never release a
@@ -36,8 +36,8 @@
 // The first plan is made at the phase's start, from where the robots stand (a phase after another
 // starts once they all stand still: gcs/gcs_node.hpp).
 // A planned robot lost midway, or a group's leader replaced by its standby: the GCS holds the
-// plan (lifelong, with kHoldStop: a robot's release may reach windows ahead), waits until every
-// group reports its robots still, and plans again from where the living robots stand (seq s + 1).
+// plan (every robot stops where it stands), waits until every group reports its robots still, and
+// plans again from where the living robots stand (seq s + 1).
 // Complete when every group of the current plan has reported Done; given up when a plan cannot be
 // made (proven infeasible, or none within the time limit): the mission ends there, incomplete.
 #pragma once
@@ -55,9 +55,6 @@
 #include "swarm/planner/traffic/traffic.hpp"
 
 namespace swarm::gcs {
-
-// Order Hold's second value: stop the robots where they stand (see the contract above).
-inline constexpr std::int32_t kHoldStop = 1;
 
 // The traffic planner's settings for a phase of a run: one seed per phase, so that a rehearsal of
 // the layer (planner/traffic/rehearsal.hpp) plans what the driver will.

@@ -38,6 +38,7 @@
 
 #include "swarm/leader/group_task.hpp"
 #include "swarm/planner/mapf/adg.hpp"
+#include "swarm/planner/mapf/release_watch.hpp"
 
 namespace swarm::leader {
 
@@ -53,6 +54,9 @@ class MapfGroupTask : public GroupTask {
   [[nodiscard]] nlohmann::json numbers() const override;
 
   static constexpr std::uint32_t kRefreshTicks = 16;  // the whole report again, this often
+  // How many gates a release's watch carries (planner/mapf/release_watch.hpp): enough for a
+  // member to follow another through an aisle while the next release is on a delayed link.
+  static constexpr std::size_t kWatchGates = 8;
 
  private:
   void take_plan(const task::Order& order, GroupContext& ctx);
@@ -92,6 +96,8 @@ class MapfGroupTask : public GroupTask {
   std::vector<int> index_of_;                 // plan index -> group index (-1: another group's)
   std::vector<std::uint32_t> progress_;       // per plan index: the route step it is known at
   std::vector<std::uint32_t> released_;       // per plan index: how far it may drive
+  // per plan index (own robots): the gates' releases of the watch last sent with a release
+  std::vector<std::vector<std::uint32_t>> watched_;
   std::vector<std::uint32_t> route_id_;       // per plan index (own robots)
   // per plan index (own robots): the route step its current route message starts at (a rotation
   // sends the rest of the route anew, with its start tick)
@@ -108,6 +114,7 @@ class MapfGroupTask : public GroupTask {
   bool reported_done_ = false;
   bool reported_held_ = false;
   std::uint64_t releases_sent_ = 0;
+  std::uint64_t watches_sent_ = 0;
   std::uint64_t plans_taken_ = 0;
   std::uint64_t plans_continued_ = 0;
 };
