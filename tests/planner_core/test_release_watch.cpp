@@ -30,6 +30,10 @@ TEST(ReleaseWatch, AFollowerGetsAGateForEachStepOfTheRobotAhead) {
   EXPECT_EQ(watch_release(d, 1, {0, 0}, 2).routes[0].size(), 3u);
   EXPECT_TRUE(watch_release(d, 0, {0, 0}, 8).gates.empty());
   EXPECT_TRUE(watch_release(d, 1, {3, 0}, 8).gates.empty());  // released to its end already
+  // Its leader knows less of robot 0 than of robot 1, which has made 2 steps: the gates of those
+  // steps are there (the caller drops them), and the last holds the needs of all.
+  const Watch behind = watch_release(d, 1, {0, 2}, 8);
+  EXPECT_EQ(behind.gates, (std::vector<Gate>{{1, {1}}, {2, {2}}, {3, {3}}}));
 }
 
 TEST(ReleaseWatch, AGateOpensOnlyOnStepsSeenOneAtATime) {

@@ -291,11 +291,13 @@ void MapfGroupTask::release(GroupContext& ctx) {
     // reached it. The leader's own robot needs no watch: its leader looks every tick.
     planner::mapf::Watch watch;
     if (index_of_[ku] != ctx.self) watch = planner::mapf::watch_release(adg_, k, progress_, kWatchGates);
+    const bool further = may > released_[ku];
+    released_[ku] = std::max(released_[ku], may);
+    // Gates the release has passed say nothing new (each gate holds the needs of those before it).
+    std::erase_if(watch.gates, [&](const planner::mapf::Gate& g) { return g.release <= released_[ku]; });
     std::vector<std::uint32_t> gates;
     for (const planner::mapf::Gate& g : watch.gates) gates.push_back(g.release);
-    const bool further = may > released_[ku];
     if (!further && gates == watched_[ku]) continue;
-    released_[ku] = std::max(released_[ku], may);
     watched_[ku] = std::move(gates);
     for (int& r : watch.robots) r = robot_of_[static_cast<std::size_t>(r)];
     for (planner::mapf::Gate& g : watch.gates) g.release -= base_[ku];

@@ -48,6 +48,9 @@ struct Watch {
 // The gates past what `progress` releases robot `robot` to (releasable(), rotations held), at
 // most `max_gates`: each the next step that waits, opened by its unmet needs. Stops at a rotation
 // (the GCS releases those) and at the route's end. Empty when nothing waits on another robot.
+// Each gate's needs include every earlier gate's, so a gate may be dropped (one the robot has
+// passed, say: its caller may know less of the others than of it) without making a later one
+// wrong.
 [[nodiscard]] Watch watch_release(const Dependencies& adg, int robot, const std::vector<std::uint32_t>& progress,
                                   std::size_t max_gates);
 
