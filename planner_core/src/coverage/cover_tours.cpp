@@ -64,10 +64,34 @@ struct Tours {
   std::vector<std::int64_t> length;
 };
 
-// The objective: the longest route, then the sum of routes.
+// The objective: the longest route, then how many routes are that long, then the sum of routes.
+// The count lets the search make progress on a plateau of the longest: each route brought below it
+// is a step towards lowering it.
 struct Score {
-  std::int64_t longest = 0, sum = 0;
-  bool operator<(const Score& o) const { return longest != o.longest ? longest < o.longest : sum < o.sum; }
+  std::int64_t longest = 0;
+  int at_longest = 0;
+  std::int64_t sum = 0;
+  bool operator<(const Score& o) const {
+    if (longest != o.longest) return longest < o.longest;
+    return at_longest != o.at_longest ? at_longest < o.at_longest : sum < o.sum;
+  }
+};
+
+// The longest among some routes, and how many are that long.
+struct Longest {
+  std::int64_t length = 0;
+  int count = 0;
+  void add(std::int64_t l) {
+    if (l > length) length = l, count = 0;
+    count += l == length ? 1 : 0;
+  }
+  // With routes of lengths `a` and `b` (-1: none) added, and the sum of all routes.
+  [[nodiscard]] Score with(std::int64_t a, std::int64_t b, std::int64_t sum) const {
+    Longest l = *this;
+    if (a >= 0) l.add(a);
+    if (b >= 0) l.add(b);
+    return {l.length, l.count, sum};
+  }
 };
 
 class Solver {
@@ -152,16 +176,16 @@ class Solver {
   }
 
   [[nodiscard]] static Score score(const Tours& t) {
-    Score s;
-    for (const std::int64_t l : t.length) s.longest = std::max(s.longest, l), s.sum += l;
-    return s;
+    std::int64_t sum = 0;
+    for (const std::int64_t l : t.length) sum += l;
+    return longest_but(t, -1, -1).with(-1, -1, sum);
   }
 
   // The longest route among all but robots a and b.
-  [[nodiscard]] static std::int64_t longest_but(const Tours& t, int a, int b) {
-    std::int64_t most = 0;
+  [[nodiscard]] static Longest longest_but(const Tours& t, int a, int b) {
+    Longest most;
     for (std::size_t r = 0; r < t.length.size(); ++r) {
-      if (static_cast<int>(r) != a && static_cast<int>(r) != b) most = std::max(most, t.length[r]);
+      if (static_cast<int>(r) != a && static_cast<int>(r) != b) most.add(t.length[r]);
     }
     return most;
   }
@@ -206,7 +230,8 @@ class Solver {
   // the local search stops where no single move or swap helps, and a route's last targets are
   // often placed badly for want of a joint move. Each round takes `ruined` targets out, half of
   // them from the longest route, puts each back where the score grows least, searches locally
-  // again, and keeps the result if it scores better.
+  // again, and keeps the result unless it scores worse: a min-max score has wide plateaus, and a
+  // walk along one finds the way down that strict improvement stops short of.
   void ruin_and_recreate(Tours& best, int rounds, std::size_t ruined, Rng& rng, int& taken,
                          const std::function<bool()>& stop) const {
     for (int round = 0; round < rounds && !(stop && stop()); ++round) {
@@ -232,7 +257,7 @@ class Solver {
       for (std::size_t i = out.size(); i > 1; --i) std::swap(out[i - 1], out[static_cast<std::size_t>(rng.below(i))]);
       for (const int g : out) insert_best(t, g);
       improve(t, taken, stop);
-      if (score(t) < score(best)) best = std::move(t);
+      if (!(score(best) < score(t))) best = std::move(t);
     }
   }
 
@@ -257,16 +282,16 @@ class Solver {
   // on one).
   void insert_best(Tours& t, int g) const {
     const Score now = score(t);
-    Score best{kFar, kFar};
+    Score best{kFar, 0, kFar};
     int best_r = -1;
     std::size_t best_p = 0;
     for (int r = 0; r < robots_; ++r) {
       const auto& o = t.order[static_cast<std::size_t>(r)];
-      const std::int64_t rest = longest_but(t, r, r);
+      const Longest rest = longest_but(t, r, r);
       for (std::size_t p = 0; p <= o.size(); ++p) {
         const std::int64_t add = detour(before(t, r, p), g, p < o.size() ? o[p] : -1);
         if (add >= kFar) continue;
-        const Score s{std::max(rest, t.length[static_cast<std::size_t>(r)] + add), now.sum + add};
+        const Score s = rest.with(t.length[static_cast<std::size_t>(r)] + add, -1, now.sum + add);
         if (s < best) best = s, best_r = r, best_p = p;
       }
     }
@@ -291,13 +316,13 @@ class Solver {
     for (int b = 0; b < robots_; ++b) {
       if (b == a) continue;
       const auto& o = t.order[static_cast<std::size_t>(b)];
-      const std::int64_t rest = longest_but(t, a, b);
+      const Longest rest = longest_but(t, a, b);
       for (std::size_t p = 0; p <= o.size(); ++p) {
         const std::int64_t add = detour(before(t, b, p), g, p < o.size() ? o[p] : -1);
         if (add >= kFar) continue;
         const std::int64_t lb = t.length[static_cast<std::size_t>(b)] + add;
-        const Score s{std::max({rest, la, lb}), now.sum - t.length[static_cast<std::size_t>(a)] -
-                                                    t.length[static_cast<std::size_t>(b)] + la + lb};
+        const Score s = rest.with(la, lb, now.sum - t.length[static_cast<std::size_t>(a)] -
+                                              t.length[static_cast<std::size_t>(b)] + la + lb);
         if (s < best) best = s, best_b = b, best_p = p;
       }
     }
@@ -328,7 +353,7 @@ class Solver {
     for (int b = 0; b < robots_; ++b) {
       if (b == a) continue;
       const auto& o = t.order[static_cast<std::size_t>(b)];
-      const std::int64_t rest = longest_but(t, a, b);
+      const Longest rest = longest_but(t, a, b);
       for (std::size_t j = 0; j < o.size(); ++j) {
         const int u = o[j];
         const std::int64_t da = replaced(pa, g, u, na);
@@ -336,7 +361,7 @@ class Solver {
         if (da >= kFar / 2 || db >= kFar / 2) continue;
         const std::int64_t la = t.length[static_cast<std::size_t>(a)] + da;
         const std::int64_t lb = t.length[static_cast<std::size_t>(b)] + db;
-        const Score s{std::max({rest, la, lb}), now.sum + da + db};
+        const Score s = rest.with(la, lb, now.sum + da + db);
         if (s < best) best = s, best_b = b, best_j = j;
       }
     }
@@ -353,6 +378,17 @@ class Solver {
   const Distances& d_;
   int robots_, targets_;
 };
+
+// The two greedy tours, each improved by the local search, the better after `rounds` of ruin and
+// recreate.
+Tours best_tours(const Solver& solver, int rounds, std::size_t ruined, Rng& rng, int& taken,
+                 const std::function<bool()>& stop) {
+  std::vector<Tours> tried = {solver.nearest_neighbour(), solver.farthest_insertion()};
+  for (Tours& t : tried) solver.improve(t, taken, stop);
+  Tours best = Solver::score(tried[1]) < Solver::score(tried[0]) ? tried[1] : tried[0];
+  solver.ruin_and_recreate(best, rounds, ruined, rng, taken, stop);
+  return best;
+}
 
 }  // namespace
 
@@ -420,13 +456,10 @@ CoverTours cover_tours(const OccupancyGrid& map, const std::vector<std::uint8_t>
   }
 
   const Solver solver(d, robots.size(), targets.size());
-  std::vector<Tours> tried = {solver.nearest_neighbour(), solver.farthest_insertion()};
-  for (Tours& t : tried) solver.improve(t, out.improvements, stop);
-  Tours best = Solver::score(tried[1]) < Solver::score(tried[0]) ? tried[1] : tried[0];
   Rng rng(config.seed);
   const double squared = static_cast<double>(targets.size()) * static_cast<double>(targets.size());
   const int rounds = static_cast<int>(std::min<double>(config.ruin_rounds, config.ruin_work / squared));
-  solver.ruin_and_recreate(best, rounds, std::min(config.ruined_targets, targets.size()), rng, out.improvements, stop);
+  const Tours best = best_tours(solver, rounds, std::min(config.ruined_targets, targets.size()), rng, out.improvements, stop);
   out.stopped = stop && stop();
 
   // The cell routes: shortest paths between consecutive targets, skipping a target its route has

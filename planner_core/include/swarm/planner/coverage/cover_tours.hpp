@@ -16,10 +16,10 @@
 //     the route it joins stays shortest.
 // Local search, until nothing improves or `stop`: within a route 2-opt (reversing a stretch) and
 // moving one target; between routes moving one target, or swapping two, from any route to
-// another. A move is taken when it lowers (longest route, sum of routes), in that order. Then
-// rounds of ruin and recreate from the better (config below): `ruined_targets` targets taken out
-// (half from the longest route), each put back where the score grows least, the local search
-// again, the result kept if it scores better.
+// another. A move is taken when it lowers (longest route, routes that long, sum of routes), in
+// that order. Then rounds of ruin and recreate from the better (config below): `ruined_targets`
+// targets taken out (half from the longest route), each put back where the score grows least, the
+// local search again, the result kept unless it scores worse.
 // The cell route then follows shortest paths between consecutive targets; a target passed on the
 // way is dropped from its later visit.
 //
