@@ -407,6 +407,16 @@ TEST(ExperimentAnalysis, TheKneeIsNotEndedByANoisyCap) {
   EXPECT_FALSE(tight->uncertain_at.has_value());
   // A cap whose interval lies wholly past 5 % (+6 % [+5.5, +6.5]) ends the walk although its mean is close.
   EXPECT_EQ(knee_of({{2000, 300, true, -1, 1}, {1000, 318, true, 5.5, 6.5}}, 300, 5.0)->cap, 2000.0);
+  // A cap passed over as noisy is no knee itself: 1,000 is +60 % on average ([-10, +130]), so the
+  // knee stays at 2,000 until a cap below comes back within 5 % on average (500: +2 %).
+  EXPECT_EQ(knee_of({{2000, 300, true, -1, 1}, {1000, 480, true, -10, 130}, {250, 600, true, 50, 150}}, 300, 5.0)->cap,
+            2000.0);
+  const auto back = knee_of({{2000, 300, true, -1, 1}, {1000, 480, true, -10, 130}, {500, 306, true, -20, 24},
+                             {250, 600, true, 50, 150}},
+                            300, 5.0);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->cap, 500.0);
+  EXPECT_EQ(back->uncertain_at, std::optional<double>(1000.0));
 }
 
 // A latency sweep of a chained mission (explore,cover) on fabricated runs: besides the whole

@@ -45,10 +45,12 @@ struct Knee {
   // that it costs less than the tolerance (nullopt: every one is clearly within it).
   std::optional<double> uncertain_at;
 };
-// The knee: going down from the largest cap, the last one before the first that is incomplete or
-// slower than uncapped_steps by more than tolerance_percent. With an interval, "slower" means its
-// lower end is past the tolerance, so that one noisy cap does not end the walk; without one, its
-// mean. nullopt when the largest cap already is slower.
+// The knee: going down from the largest cap until the first that is incomplete or slower than
+// uncapped_steps by more than tolerance_percent, the smallest whose mean steps are within the
+// tolerance. With an interval, "slower" means its lower end is past the tolerance, so that one
+// noisy cap does not end the walk; such a cap, with its mean past the tolerance, is passed over
+// but is no knee. Without an interval, "slower" is its mean. nullopt when no cap before the end
+// of the walk has its mean within the tolerance.
 [[nodiscard]] std::optional<Knee> knee_of(const std::vector<KneePoint>& points, double uncapped_steps,
                                           double tolerance_percent);
 

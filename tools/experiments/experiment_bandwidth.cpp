@@ -205,7 +205,7 @@ std::optional<Knee> knee_of(const std::vector<KneePoint>& points, double uncappe
                                      : !(p.steps <= uncapped_steps * (1 + tolerance_percent / 100.0));
     if (!p.all_complete || slower) break;
     if (has_interval && p.high_pct > tolerance_percent && !uncertain_at) uncertain_at = p.cap;
-    knee = Knee{p.cap, uncertain_at};
+    if (p.steps <= uncapped_steps * (1 + tolerance_percent / 100.0)) knee = Knee{p.cap, uncertain_at};
   }
   return knee;
 }
