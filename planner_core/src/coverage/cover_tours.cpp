@@ -379,17 +379,6 @@ class Solver {
   int robots_, targets_;
 };
 
-// The two greedy tours, each improved by the local search, the better after `rounds` of ruin and
-// recreate.
-Tours best_tours(const Solver& solver, int rounds, std::size_t ruined, Rng& rng, int& taken,
-                 const std::function<bool()>& stop) {
-  std::vector<Tours> tried = {solver.nearest_neighbour(), solver.farthest_insertion()};
-  for (Tours& t : tried) solver.improve(t, taken, stop);
-  Tours best = Solver::score(tried[1]) < Solver::score(tried[0]) ? tried[1] : tried[0];
-  solver.ruin_and_recreate(best, rounds, ruined, rng, taken, stop);
-  return best;
-}
-
 }  // namespace
 
 std::size_t longest_moves(const std::vector<std::vector<Cell>>& routes) {
@@ -456,10 +445,13 @@ CoverTours cover_tours(const OccupancyGrid& map, const std::vector<std::uint8_t>
   }
 
   const Solver solver(d, robots.size(), targets.size());
+  std::vector<Tours> tried = {solver.nearest_neighbour(), solver.farthest_insertion()};
+  for (Tours& t : tried) solver.improve(t, out.improvements, stop);
+  Tours best = Solver::score(tried[1]) < Solver::score(tried[0]) ? tried[1] : tried[0];
   Rng rng(config.seed);
   const double squared = static_cast<double>(targets.size()) * static_cast<double>(targets.size());
   const int rounds = static_cast<int>(std::min<double>(config.ruin_rounds, config.ruin_work / squared));
-  const Tours best = best_tours(solver, rounds, std::min(config.ruined_targets, targets.size()), rng, out.improvements, stop);
+  solver.ruin_and_recreate(best, rounds, std::min(config.ruined_targets, targets.size()), rng, out.improvements, stop);
   out.stopped = stop && stop();
 
   // The cell routes: shortest paths between consecutive targets, skipping a target its route has
