@@ -201,11 +201,11 @@ std::optional<Knee> knee_of(const std::vector<KneePoint>& points, double uncappe
   std::optional<double> uncertain_at;
   for (const KneePoint& p : sorted) {
     const bool has_interval = std::isfinite(p.low_pct) && std::isfinite(p.high_pct);
-    const bool slower = has_interval ? p.low_pct > tolerance_percent
-                                     : !(p.steps <= uncapped_steps * (1 + tolerance_percent / 100.0));
+    const bool within_on_average = p.steps <= uncapped_steps * (1 + tolerance_percent / 100.0);
+    const bool slower = has_interval ? p.low_pct > tolerance_percent : !within_on_average;
     if (!p.all_complete || slower) break;
     if (has_interval && p.high_pct > tolerance_percent && !uncertain_at) uncertain_at = p.cap;
-    if (p.steps <= uncapped_steps * (1 + tolerance_percent / 100.0)) knee = Knee{p.cap, uncertain_at};
+    if (within_on_average) knee = Knee{p.cap, uncertain_at};
   }
   return knee;
 }
