@@ -1,11 +1,16 @@
 #!/usr/bin/env bash
 # compose-test.sh --after-up hook: once the mission is under way (the GCS has printed tick 40),
-# takes SERVICE's container off the compose project's network for SECONDS, then reconnects it
-# with the address it had (a different one would leave its peers sending to the old address).
-# Usage: cut_link.sh SERVICE SECONDS   (needs COMPOSE_PROJECT_NAME, as compose-test.sh sets)
+# cuts SERVICE's container's link for SECONDS, then heals it. The link is set down inside the
+# container's network namespace (set_link.py, from a helper container that shares it), as a pulled
+# cable would be: the container keeps its address, which Fast DDS announced at start-up and its
+# peers keep sending to. (Taking it off the Docker network and putting it back does not keep it:
+# Docker hands out the lowest free address at the reconnection.)
+# Usage: cut_link.sh SERVICE SECONDS   (needs COMPOSE_PROJECT_NAME and SWARM_IMAGE, as compose-test.sh sets)
 set -euo pipefail
 service=$1 seconds=$2
 project=${COMPOSE_PROJECT_NAME:?cut_link.sh runs as compose-test.sh --after-up}
+image=${SWARM_IMAGE:?cut_link.sh runs as compose-test.sh --after-up}
+here=$(cd "$(dirname "$0")" && pwd)
 of_service() {
   docker ps -q --filter "label=com.docker.compose.project=$project" --filter "label=com.docker.compose.service=$1" |
     head -n 1
@@ -13,18 +18,17 @@ of_service() {
 gcs=$(of_service gcs)
 cid=$(of_service "$service")
 [[ -n $gcs && -n $cid ]] || { echo "cut_link: no running gcs or $service container" >&2; exit 1; }
-net=$(docker network ls -q --filter "label=com.docker.compose.project=$project" | head -n 1)
-[[ -n $net ]] || { echo "cut_link: the project has no network" >&2; exit 1; }
-net_name=$(docker network inspect -f '{{.Name}}' "$net")
-address() { docker inspect -f "{{with index .NetworkSettings.Networks \"$net_name\"}}{{.IPAddress}}{{end}}" "$cid"; }
+address=$(docker inspect -f '{{range .NetworkSettings.Networks}}{{.IPAddress}} {{end}}' "$cid" | awk '{print $1}')
+[[ -n $address ]] || { echo "cut_link: $service has no address" >&2; exit 1; }
+set_link() {
+  docker run --rm -i --network "container:$cid" --cap-add NET_ADMIN --user 0 --entrypoint python3 \
+    "$image" - "$address" "$1" <"$here/set_link.py"
+}
 
-bash "$(dirname "$0")/wait_for_tick.sh" 40
-before=$(address)
+bash "$here/wait_for_tick.sh" 40
 start=$SECONDS
-docker network disconnect "$net" "$cid"
-echo "cut_link: $service ($before) disconnected from $net_name"
+set_link down
+echo "cut_link: $service ($address) cut off"
 sleep "$seconds"
-docker network connect --alias "$service" "$net" "$cid"
-after=$(address)
-echo "cut_link: $service reconnected after $((SECONDS - start)) s, address $after"
-[[ $after == "$before" ]] || { echo "cut_link: $service came back as $after, not $before" >&2; exit 1; }
+set_link up
+echo "cut_link: $service's link healed after $((SECONDS - start)) s, address $address"
