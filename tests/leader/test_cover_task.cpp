@@ -126,13 +126,15 @@ TEST(CoverTask, AfterExplorationTheDivisionCheaperToDriveIsDriven) {
                            c["moves_in_other_groups_parts"].get<int>(), c["route_moves"].get<int>());
   };
   const auto longest = [&](const char* candidate) { return compared[candidate]["longest_route_moves"].get<int>(); };
-  EXPECT_EQ(longest("leaders"), 21);
-  EXPECT_EQ(longest("robots"), 18);
+  // The DARP divisions' longest routes after balancing by work (cover.route_balance_rounds); with
+  // cells alone they were 21 and 18.
+  EXPECT_EQ(longest("leaders"), 19);
+  EXPECT_EQ(longest("robots"), 17);
   EXPECT_EQ(longest("tours"), 14);
   EXPECT_EQ(std::get<2>(key("leaders")), 23);
-  EXPECT_EQ(std::get<2>(key("robots")), 18);
+  EXPECT_EQ(std::get<2>(key("robots")), 17);
   EXPECT_EQ(std::get<0>(key("leaders")), 23 + 4 + 2);
-  EXPECT_EQ(std::get<0>(key("robots")), 18 + 4 + 2);
+  EXPECT_EQ(std::get<0>(key("robots")), 17 + 4 + 2);
   EXPECT_EQ(std::get<0>(key("tours")), 14);
   EXPECT_EQ(std::get<1>(key("leaders")), 1);
   EXPECT_EQ(std::get<1>(key("robots")), 1);

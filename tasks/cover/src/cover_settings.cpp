@@ -21,6 +21,7 @@ planner::CoverRoutesConfig cover_routes_config(const swarm::scenario::Cover& c, 
   out.darp.max_iterations = static_cast<int>(c.darp_max_iterations());
   out.darp.seed = planner::mix_seed(seed, salt);
   out.candidates = static_cast<int>(std::max<std::uint32_t>(1, c.route_candidates()));
+  out.balance_rounds = static_cast<int>(c.route_balance_rounds());
   switch (c.order()) {
     case swarm::scenario::ORDER_PLOW: out.order = planner::CoverOrder::Plow; break;
     case swarm::scenario::ORDER_GROUP_K: out.order = planner::CoverOrder::GroupK; break;
@@ -35,6 +36,7 @@ nlohmann::json division_json(const planner::CoverRoutes& plan) {
                       {"finished_by", d.finished_by},
                       {"darp_iterations", d.iterations},
                       {"candidates_tried", plan.candidates_tried},
+                      {"balance_rounds", plan.balance_rounds},
                       {"chosen", plan.chosen},
                       {"repair_moves", d.repair_moves},
                       {"darp_seconds", plan.seconds_division},

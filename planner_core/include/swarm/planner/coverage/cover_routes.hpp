@@ -14,6 +14,9 @@
 //   r.routes[i]   // robot i's route: robot_cells[i] first, every cell of its region visited
 //   r.darp        // the division (status, iterations, alpha, ...); r.seconds: its wall time
 //
+// Several divisions may be tried (CoverRoutesConfig::candidates, other starts and seeds; then
+// balance_rounds, other portions), and the one whose longest route is shortest is kept.
+//
 // Deterministic per config.darp.seed; interruptible through `stop` (the best division so far is
 // used). Thread-safe: no shared state.
 #pragma once
@@ -43,12 +46,20 @@ struct CoverRoutesConfig {
   // are not equal in work (a one-cell corridor is swept there and back), so the division alone
   // cannot tell which is best.
   int candidates = 1;
+  // With routes: rounds that divide again by work rather than by cells, after the candidates. Each
+  // round scales every robot's DARP portion by sqrt(mean route / its route), from the last round's
+  // routes (the best candidate's first), and divides again from the best candidate's start; the
+  // division whose longest route is shortest is kept, as among candidates. A region's moves per
+  // cell depend on its shape (a dead-end aisle is swept there and back, open floor once) and on
+  // the drive to it, so equal cells can be far from equal moves.
+  int balance_rounds = 0;
 };
 
 struct CoverRoutes {
   DarpResult darp;
   int candidates_tried = 1;                // divisions made (CoverRoutesConfig::candidates)
-  int chosen = 0;                          // the one kept, from 0
+  int balance_rounds = 0;                  // rounds made (CoverRoutesConfig::balance_rounds)
+  int chosen = 0;                          // the one kept, from 0: candidates, then rounds
   std::vector<Cell> starts;                // where each robot's region grew from (its nearest set cell)
   std::vector<std::vector<Cell>> routes;   // per robot; {its cell} when it has nothing to cover
   std::vector<int> region_cells;           // per robot
