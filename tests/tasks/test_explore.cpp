@@ -95,6 +95,22 @@ TEST(ExploreTask, ThroughTheTrafficLayerEveryMapIsExploredWithoutAConflict) {
   }
 }
 
+// A new round's plan starts a new chain of windows. Progress the GCS had received along the old
+// chain and not yet relayed must not go out under the new plan's number: the leaders would read it
+// as progress along the new routes. On MovingAI room-32-32-4 (seed 1) it did, at tick 209: two
+// robots were released into cells that robots of other groups had yet to pass, and four robots
+// stood in vertex conflicts for 18 ticks (36 events) until the next round.
+TEST(ExploreTask, ANewRoundRelaysNoProgressAlongTheLastPlan) {
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+      std::string("map: '") + SWARM_BENCHMARKS_DIR + "/movingai/room-32-32-4.map' start { x: 3.1 y: 3.3 } seed: 1 "
+      "groups: 3 robots_per_group: 3 max_ticks: 3000 mission { phase { explore {} } }"));
+  const auto m = s.run_to_end();
+  ASSERT_TRUE(m["complete"].get<bool>()) << m.dump();
+  const auto& p = swarm::test::phase_named(m, "explore");
+  EXPECT_GT(p["task"]["planning_rounds"].get<int>(), 10);
+  swarm::test::expect_no_conflict(p);
+}
+
 // Late messages only make robots wait: with member<->leader delay and jitter, and with a member
 // and (in another run) a leader lost midway, exploration still ends without a conflict.
 TEST(ExploreTask, ThroughTheTrafficLayerWithDelayAndLossesNoRobotCollides) {

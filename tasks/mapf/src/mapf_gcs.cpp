@@ -70,6 +70,12 @@ void MapfGcsTask::begin_plan(const GcsContext& ctx) {
   for (int g = 0; g < t.groups(); ++g) plan_leaders_.push_back(ctx.leader_of(g));
 }
 
+void MapfGcsTask::begin_chain(const GcsContext& ctx) {
+  begin_plan(ctx);
+  chain_first_ = seq_;
+  relay_.clear();
+}
+
 void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
   if (window_ > 0) {
     plan_window(ctx, why);
@@ -100,8 +106,7 @@ void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
       in.map.set(ctx.cell_of(r), planner::CellState::Occupied);
     }
   }
-  begin_plan(ctx);
-  chain_first_ = seq_;
+  begin_chain(ctx);
 
   planner::mapf::SolverConfig solver = tasks::mapf_solver_config(config_, ctx.setup.world.scenario.seed());
   planner::mapf::Result res = planner::mapf::solve(in, solver, planner::mapf::StopCondition::after(config_.time_limit_s()));

@@ -96,8 +96,7 @@ void MapfGcsTask::plan_window(GcsContext& ctx, const char* why) {
     return;
   }
   planned_ = may_move;
-  begin_plan(ctx);
-  chain_first_ = seq_;
+  begin_chain(ctx);
   no_continuation_ = false;
   window_reached_.assign(static_cast<std::size_t>(t.robots()), {});
   window_paths_.assign(planned_.size(), {});

@@ -166,6 +166,10 @@ class MapfGcsTask : public GcsTask {
   bool take_window(const planner::traffic::Window& w, int at);
   // A new plan's bookkeeping: its number, and which groups are in it under which leaders.
   void begin_plan(const GcsContext& ctx);
+  // A plan that does not continue the last one: begin_plan, and a new chain. Progress reported
+  // along the old chain and not yet relayed is dropped: relayed under the new plan's number, it
+  // would be read as progress along the new routes, and release robots into cells not yet free.
+  void begin_chain(const GcsContext& ctx);
   void note_plan(GcsContext& ctx, const char* why, const planner::mapf::Result& res);  // metrics + log
   // `continues`: res.paths are the grown plan, whose new window starts at time *continues.
   void send_plan(GcsContext& ctx, const planner::mapf::Result& res, std::optional<int> continues = std::nullopt);
