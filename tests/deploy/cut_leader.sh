@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # A link is cut and healed in the docker-compose deployment: leader-1's container's link is set
-# down for 10 s while the real-time mission runs, then up again (cut_link.sh). The simulator declares it lost (1 s liveliness lease), its standby member-1-1 takes the
-# group over and keeps it; leader-1 is re-admitted when it speaks again and serves as a member;
-# what was sent to or by it during the cut arrives after the reconnection (DDS keeps the session
-# for the 30 s participant lease and resends), so every message reaches every receiver it was
-# meant for, and the mission completes.
+# down for 10 s while the real-time mission runs, then up again (cut_link.sh). The simulator
+# declares it lost (1 s liveliness lease), its standby member-1-1 takes the group over and keeps
+# it; leader-1 is re-admitted when it speaks again and serves as a member; what was sent to or by
+# it during the cut arrives after the reconnection (DDS keeps the session for the 30 s participant
+# lease and resends), so every message reaches every receiver it was meant for, and the mission
+# completes.
 # Usage: cut_leader.sh SOURCE_DIR BIN_DIR OUT_DIR
 set -euo pipefail
 src=$1 bin=$2 out=$3

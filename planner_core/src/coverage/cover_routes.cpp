@@ -241,17 +241,16 @@ CoverRoutes divide_and_route(const OccupancyGrid& map, const std::vector<std::ui
   double division = best.seconds_division, routes = best.seconds_routes;
   // Only a division as good as the best (converged, or as balanced; covering as much) with a
   // shorter longest route replaces it.
-  const auto consider = [&](CoverRoutes& r, int index) {
+  const auto consider = [&](const CoverRoutes& r, int index) {
     division += r.seconds_division;
     routes += r.seconds_routes;
     const std::size_t covered = cells_covered(map, cells, r);
     const bool as_good = (r.darp.status == DarpStatus::Converged || best.darp.status != DarpStatus::Converged) &&
                          covered >= best_covered;
-    if (!as_good || longest_route(r) >= longest_route(best)) return false;
+    if (!as_good || longest_route(r) >= longest_route(best)) return;
     best = r;
     best.chosen = index;
     best_covered = covered;
-    return true;
   };
   int tried = 1;
   for (int k = 1; k < config.candidates && !(stop && stop()); ++k) {
