@@ -10,6 +10,7 @@
 #include "swarm_test/metrics_fixture.hpp"
 #include "swarm_test/phase_checks.hpp"
 #include "swarm/tasks/explore/waypoint_report.hpp"
+#include "swarm/tasks/mapf/mapf_gcs.hpp"
 
 namespace swarm::tasks {
 namespace {
@@ -109,6 +110,28 @@ TEST(ExploreTask, ANewRoundRelaysNoProgressAlongTheLastPlan) {
   const auto& p = swarm::test::phase_named(m, "explore");
   EXPECT_GT(p["task"]["planning_rounds"].get<int>(), 10);
   swarm::test::expect_no_conflict(p);
+}
+
+// A new round's waypoints continue the plan being driven: each robot drives the rest of it and goes
+// on to its new waypoint without a stop. The plan is held, stopping every robot, only once it has
+// grown to its limit (MapfGcsTask::kPlanSteps); it starts afresh, too, when every robot has
+// reached its waypoint and stands anyway.
+TEST(ExploreTask, ThroughTheTrafficLayerANewRoundStopsNoRobot) {
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+      "map: 'maze1' groups: 3 robots_per_group: 3 max_ticks: 3000 mission { phase { explore {} } }"));
+  const auto m = s.run_to_end();
+  ASSERT_TRUE(m["complete"].get<bool>()) << m.dump();
+  const auto& p = swarm::test::phase_named(m, "explore");
+  swarm::test::expect_no_conflict(p);
+  const auto& traffic = p["task"]["traffic"];
+  const int ticks = p["end_tick"].get<int>() - p["start_tick"].get<int>();
+  const int window = traffic["window_steps"].get<int>();
+  int continued = 0;
+  for (const auto& plan : traffic["plans"]) continued += plan.contains("continues") ? 1 : 0;
+  EXPECT_EQ(continued, traffic["repicks_continued"].get<int>());
+  // Two rounds may come before one window takes them up; most rounds continue the plan.
+  EXPECT_GE(2 * continued, p["task"]["planning_rounds"].get<int>()) << traffic.dump();
+  EXPECT_LE(traffic["repicks_held"].get<int>(), ticks / (gcs::MapfGcsTask::kPlanSteps - 2 * window)) << traffic.dump();
 }
 
 // Late messages only make robots wait: with member<->leader delay and jitter, and with a member

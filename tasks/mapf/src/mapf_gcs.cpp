@@ -308,6 +308,8 @@ nlohmann::json MapfGcsTask::numbers() const {
             {"window_steps", window_},
             {"windows", windows_},
             {"windows_continued", windows_continued_},
+            {"repicks_continued", repicks_continued_},
+            {"repicks_held", repicks_held_},
             {"goals_done", goals_done_},
             {"goals_skipped", goals_skipped_},
             {"longest_wait_steps", traffic_ ? traffic_->longest_wait() : 0},

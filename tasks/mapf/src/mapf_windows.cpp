@@ -63,10 +63,7 @@ void MapfGcsTask::plan_window(GcsContext& ctx, const char* why) {
   const comm::Topology& t = ctx.setup.topology;
   const bool next = std::string(why) == kNextWindow;
   // Everyone but the living robots of led groups stands where it is: an obstacle to plan round.
-  std::vector<int> may_move;
-  for (int r = 0; r < t.robots(); ++r) {
-    if (ctx.alive(r) && ctx.alive(ctx.leader_of(t.group_of(static_cast<comm::AgentId>(r))))) may_move.push_back(r);
-  }
+  const std::vector<int> may_move = MapfGcsTask::may_move(ctx);
   if (map_grows_) known_ = ctx.fused.grid();
   if (!next) {
     repick_ = nullptr;
@@ -137,14 +134,31 @@ bool MapfGcsTask::take_window(const planner::traffic::Window& w, int at) {
   return true;
 }
 
-bool MapfGcsTask::time_to_extend(const GcsContext& ctx) const {
-  if (!by_graph_ || holding_ || failed_ || complete_ || no_continuation_ || repick_ != nullptr ||
-      window_paths_.empty() || window_reached_.empty() || adg_.routes.size() != planned_.size()) {
+bool MapfGcsTask::can_grow(const GcsContext& ctx) const {
+  if (!by_graph_ || holding_ || failed_ || complete_ || no_continuation_ || window_paths_.empty() ||
+      window_reached_.empty() || adg_.routes.size() != planned_.size()) {
     return false;
   }
+  // Past kPlanSteps the next plan starts afresh; and a robot that may move now but was not
+  // planned for (re-admitted) needs a new plan to be in it.
+  if (static_cast<int>(window_paths_.front().size()) - 1 + window_ > kPlanSteps) return false;
+  return planned_ == may_move(ctx);
+}
+
+std::vector<int> MapfGcsTask::may_move(const GcsContext& ctx) {
+  const comm::Topology& t = ctx.setup.topology;
+  std::vector<int> out;
+  for (int r = 0; r < t.robots(); ++r) {
+    if (ctx.alive(r) && ctx.alive(ctx.leader_of(t.group_of(static_cast<comm::AgentId>(r))))) out.push_back(r);
+  }
+  return out;
+}
+
+bool MapfGcsTask::time_to_extend(const GcsContext& ctx) const {
+  if (!can_grow(ctx)) return false;
   const int end = static_cast<int>(window_paths_.front().size()) - 1;
-  if (end + window_ > kPlanSteps) return false;  // then the next plan starts afresh
-  bool more = false;
+  // New sequences continue the plan from its end (repick).
+  bool more = repick_ != nullptr;
   for (std::size_t k = 0; k < planned_.size(); ++k) {
     const auto ur = static_cast<std::size_t>(planned_[k]);
     const auto& seq = sequences_[ur];
@@ -167,6 +181,20 @@ bool MapfGcsTask::time_to_extend(const GcsContext& ctx) const {
 void MapfGcsTask::extend_window(GcsContext& ctx) {
   const comm::Topology& t = ctx.setup.topology;
   const int end = static_cast<int>(window_paths_.front().size()) - 1;
+  if (repick_ != nullptr) {
+    // The plan keeps the stops it gets each robot past; the new sequences follow them from its end.
+    if (map_grows_) known_ = ctx.fused.grid();
+    std::vector<std::vector<Stop>> next = pick_routes_(ctx, known_, planned_, repick_);
+    next.resize(static_cast<std::size_t>(t.robots()));
+    for (const int r : planned_) {
+      auto& seq = sequences_[static_cast<std::size_t>(r)];
+      seq.resize(std::min(seq.size(), window_reached_[static_cast<std::size_t>(r)].size()));
+      seq.insert(seq.end(), next[static_cast<std::size_t>(r)].begin(), next[static_cast<std::size_t>(r)].end());
+    }
+    plans_.push_back({{"tick", ctx.tick()}, {"why", repick_}, {"continues", seq_}});
+    repick_ = nullptr;
+    ++repicks_continued_;
+  }
   // The next window from where the plan leaves every robot; the robots not planned for stand.
   std::vector<planner::traffic::Agent> agents(static_cast<std::size_t>(t.robots()));
   for (int r = 0; r < t.robots(); ++r) {
@@ -300,11 +328,14 @@ void MapfGcsTask::cut_for_repick(GcsContext& ctx) {
   // A window is driven for half its steps at least: new sequences that come faster than the robots
   // can stop and start again would keep them standing.
   if (repick_ == nullptr || holding_ || ctx.tick() < window_tick_ + static_cast<std::uint32_t>(window_ / 2)) return;
+  // A plan that can grow takes the new sequences up from its end, without a stop (extend_window).
+  if (can_grow(ctx)) return;
   // Every robot stops where it stands (not at its release: that may be the window's end), and the
   // next window starts from there once every group stands still.
   hold_why_ = repick_;
   repick_ = nullptr;
   holding_ = true;
+  ++repicks_held_;
   send_order(ctx, task::OrderKind::Hold, {static_cast<std::int32_t>(seq_)});
 }
 

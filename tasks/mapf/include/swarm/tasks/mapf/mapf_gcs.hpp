@@ -119,10 +119,11 @@ class MapfGcsTask : public GcsTask {
   MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phase, bool map_given, Lifelong lifelong);
   // Lifelong, once complete: asks the picker for new sequences and drives them.
   void restart(GcsContext& ctx, const char* why);
-  // Lifelong: the picker has new sequences (a new planning round's waypoints). Once the window
-  // being driven has run half its steps it is held with every robot stopped where it stands, and
-  // the next is planned from there with the picker's sequences (at once if the drive was complete,
-  // at its end if it ends first).
+  // Lifelong: the picker has new sequences (a new planning round's waypoints). A plan that can grow
+  // takes them up in its next window, planned from its end: each robot drives the rest of the plan
+  // and goes on without a stop. Otherwise, once the window being driven has run half its steps, it
+  // is held with every robot stopped where it stands, and the next is planned from there with the
+  // picker's sequences (at once if the drive was complete, at its end if it ends first).
   void repick(GcsContext& ctx, const char* why);
   void start(GcsContext& ctx) override;
   void step(GcsContext& ctx) override;
@@ -157,6 +158,11 @@ class MapfGcsTask : public GcsTask {
   // trip) of the plan's end, the next window is planned from the plan's end and sent as its
   // continuation, so the robots drive on without waiting for the slowest (docs/traffic.md).
   [[nodiscard]] bool time_to_extend(const GcsContext& ctx) const;
+  // Lifelong, by the graph: the plan may grow by a window (below kPlanSteps, the robots it plans for
+  // still the ones that may move).
+  [[nodiscard]] bool can_grow(const GcsContext& ctx) const;
+  // The living robots of led groups, by id: the others stand where they are.
+  [[nodiscard]] static std::vector<int> may_move(const GcsContext& ctx);
   void extend_window(GcsContext& ctx);
   // Lifelong: robot `robot`'s pick-ups and drops in the window from the plan's time `from` on, in
   // steps of its part of the plan from there.
@@ -228,6 +234,8 @@ class MapfGcsTask : public GcsTask {
   std::uint32_t chain_first_ = 0;  // the seq of the current plan's first window
   bool no_continuation_ = false;    // the current plan cannot grow (its next window found none)
   std::uint64_t windows_continued_ = 0;
+  std::uint64_t repicks_continued_ = 0;  // new sequences taken up by a window that continues the plan
+  std::uint64_t repicks_held_ = 0;       // new sequences that held the plan, stopping every robot
   std::unique_ptr<planner::traffic::Planner> traffic_;
   std::uint64_t windows_ = 0;
   std::uint64_t goals_done_ = 0;
