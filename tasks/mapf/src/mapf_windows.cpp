@@ -181,9 +181,9 @@ bool MapfGcsTask::time_to_extend(const GcsContext& ctx) const {
 void MapfGcsTask::extend_window(GcsContext& ctx) {
   const comm::Topology& t = ctx.setup.topology;
   const int end = static_cast<int>(window_paths_.front().size()) - 1;
+  if (map_grows_) known_ = ctx.fused.grid();
   if (repick_ != nullptr) {
     // The plan keeps the stops it gets each robot past; the new sequences follow them from its end.
-    if (map_grows_) known_ = ctx.fused.grid();
     std::vector<std::vector<Stop>> next = pick_routes_(ctx, known_, planned_, repick_);
     next.resize(static_cast<std::size_t>(t.robots()));
     for (const int r : planned_) {
@@ -210,7 +210,6 @@ void MapfGcsTask::extend_window(GcsContext& ctx) {
     for (std::size_t g = window_reached_[ur].size(); g < seq.size(); ++g) agent.goals.push_back(seq[g].cell);
   }
   if (map_grows_) {
-    known_ = ctx.fused.grid();
     planner::OccupancyGrid map = known_;
     for (const auto& a : agents) map.set(a.at, planner::CellState::Free);
     traffic_->set_map(map);
