@@ -87,14 +87,9 @@ void MapfGcsTask::plan(GcsContext& ctx, const char* why) {
   planned_.clear();
   planner::mapf::Instance in;
   in.map = known_;
-  std::vector<int> may_move;
+  const std::vector<int> may_move = MapfGcsTask::may_move(ctx);
   for (int r = 0; r < t.robots(); ++r) {
-    const bool led = ctx.alive(ctx.leader_of(t.group_of(static_cast<comm::AgentId>(r))));
-    if (ctx.alive(r) && led) {
-      may_move.push_back(r);
-    } else {
-      in.map.set(ctx.cell_of(r), planner::CellState::Occupied);
-    }
+    if (!std::binary_search(may_move.begin(), may_move.end(), r)) in.map.set(ctx.cell_of(r), planner::CellState::Occupied);
   }
   if (pick_goals_) goals_ = pick_goals_(ctx, in.map, may_move);
   for (const int r : may_move) {

@@ -161,7 +161,7 @@ class MapfGcsTask : public GcsTask {
   // Lifelong, by the graph: the plan may grow by a window (below kPlanSteps, the robots it plans for
   // still the ones that may move).
   [[nodiscard]] bool can_grow(const GcsContext& ctx) const;
-  // The living robots of led groups, by id: the others stand where they are.
+  // The living robots of led groups, in increasing id: the others stand where they are.
   [[nodiscard]] static std::vector<int> may_move(const GcsContext& ctx);
   void extend_window(GcsContext& ctx);
   // Lifelong: robot `robot`'s pick-ups and drops in the window from the plan's time `from` on, in
