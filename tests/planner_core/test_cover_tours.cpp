@@ -52,6 +52,21 @@ TEST(CoverTours, ACorridorIsSplitInTheMiddle) {
   EXPECT_EQ(t.region_cells, (std::vector<int>{5, 5}));
 }
 
+// The same corridor when B sets off 4 moves after A: A sweeps 7 cells (6 moves) and B 3 (2 moves,
+// ending 6 moves after A's start), so both end together; without the start B would end 4 later.
+TEST(CoverTours, ARobotThatSetsOffLaterGetsTheShorterShare) {
+  const auto art = swarm::test::ascii_map({"A........B"});
+  const std::vector<Cell> robots = {art.at.at('A'), art.at.at('B')};
+  const auto set = every_free(art.grid);
+  CoverToursConfig config;
+  config.starts = {0, 4};
+  const CoverTours t = cover_tours(art.grid, set, robots, config);
+  expect_valid(art.grid, set, robots, t);
+  EXPECT_EQ(t.region_cells, (std::vector<int>{7, 3}));
+  EXPECT_EQ(t.routes[0].size() - 1, 6U);
+  EXPECT_EQ(t.routes[1].size() - 1, 2U);
+}
+
 // Four corners of an open room from its centre: one robot needs 6 moves to the first corner and
 // 6 between corners (24); two robots take two neighbouring corners each (12).
 TEST(CoverTours, TheCornersOfARoomFromItsCentre) {

@@ -44,6 +44,34 @@ TEST(Rehearsal, RoutesThatMeetHeadOnCostMoreThanTheirLength) {
   EXPECT_LE(late, 8 + 2 * 3);
 }
 
+// Three robots in a row that the plan moves as one, each into the cell the one ahead leaves in the
+// same step: 3 steps planned. Driven by the graph, each sets off only once it has seen the cell
+// ahead left, a lag behind the one ahead, so the last arrives 2 lags later; a robot that may start
+// only later (its route still on the way) holds up the ones behind it.
+TEST(Rehearsal, AQueueThatThePlanMovesAsOnePaysALagPerRobot) {
+  const std::vector<std::vector<Cell>> paths = {
+      {{0, 0}, {1, 0}, {2, 0}, {3, 0}},
+      {{1, 0}, {2, 0}, {3, 0}, {4, 0}},
+      {{2, 0}, {3, 0}, {4, 0}, {5, 0}},
+  };
+  EXPECT_EQ(driven_ticks(paths, [](int, int) { return 1; }), 5);
+  EXPECT_EQ(driven_ticks(paths, [](int, int) { return 2; }), 7);
+  EXPECT_EQ(driven_ticks(paths, [](int, int) { return 1; }, {0, 0, 2}), 7);  // the head starts at 2
+  EXPECT_EQ(driven_ticks(paths, [](int, int) { return 1; }, {2, 0, 0}), 5);  // the tail's start is no later
+}
+
+// Four robots round a square in one step: a rotation goes in one tick, with no lag among them.
+TEST(Rehearsal, ARotationGoesTogether) {
+  const std::vector<std::vector<Cell>> paths = {
+      {{0, 0}, {1, 0}},
+      {{1, 0}, {1, 1}},
+      {{1, 1}, {0, 1}},
+      {{0, 1}, {0, 0}},
+  };
+  EXPECT_EQ(driven_ticks(paths, [](int, int) { return 1; }), 1);
+  EXPECT_EQ(driven_ticks(paths, [](int, int) { return 1; }, {0, 0, 3, 0}), 4);  // all wait for the last
+}
+
 // A goal behind a robot that never moves is skipped, not chased for ever.
 TEST(Rehearsal, AGoalBehindAStandingRobotIsSkipped) {
   const auto art = swarm::test::ascii_map({"A.F.G"});

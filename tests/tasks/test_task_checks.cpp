@@ -41,6 +41,8 @@ TEST(TaskChecks, EachTaskChecksItsOwnSettings) {
             "t.pbtxt: field mission.phase[0].cover.traffic_window_steps: must be >= 1 (got 0)");
   EXPECT_EQ(check_error("mission { phase { cover { route_balance_rounds: 257 } } }"),
             "t.pbtxt: field mission.phase[0].cover.route_balance_rounds: must be in [0, 256] (got 257)");
+  EXPECT_EQ(check_error("mission { phase { cover { tour_seeds: 0 } } }"),
+            "t.pbtxt: field mission.phase[0].cover.tour_seeds: must be in [1, 16] (got 0)");
   EXPECT_EQ(check_error("mission { phase { explore {} } phase { mapf { w: 0.5 time_limit_s: 0 } } }"),
             "t.pbtxt: field mission.phase[1].mapf.w: must be a finite number >= 1 (got 0.5)\n"
             "t.pbtxt: field mission.phase[1].mapf.time_limit_s: must be a number > 0, or inf for no limit (got 0)");

@@ -96,8 +96,15 @@ struct Longest {
 
 class Solver {
  public:
-  Solver(const Distances& d, std::size_t robots, std::size_t targets)
-      : d_(d), robots_(static_cast<int>(robots)), targets_(static_cast<int>(targets)) {}
+  Solver(const Distances& d, std::size_t robots, std::size_t targets, const std::vector<int>& starts)
+      : d_(d), robots_(static_cast<int>(robots)), targets_(static_cast<int>(targets)), start_(robots, 0) {
+    for (std::size_t r = 0; r < robots && r < starts.size(); ++r) start_[r] = std::max(0, starts[r]);
+  }
+
+  // Every robot with no target: its length is its start.
+  [[nodiscard]] Tours empty() const {
+    return {std::vector<std::vector<int>>(static_cast<std::size_t>(robots_)), start_};
+  }
 
   // The node before position `p` of robot r's list, and the target after it (-1: none).
   [[nodiscard]] int before(const Tours& t, int r, std::size_t p) const {
@@ -114,8 +121,7 @@ class Solver {
   }
 
   [[nodiscard]] Tours nearest_neighbour() const {
-    Tours t{std::vector<std::vector<int>>(static_cast<std::size_t>(robots_)),
-            std::vector<std::int64_t>(static_cast<std::size_t>(robots_), 0)};
+    Tours t = empty();
     std::vector<std::uint8_t> taken(static_cast<std::size_t>(targets_), 0), done(static_cast<std::size_t>(robots_), 0);
     std::vector<int> at(static_cast<std::size_t>(robots_));
     std::iota(at.begin(), at.end(), 0);
@@ -144,8 +150,7 @@ class Solver {
   }
 
   [[nodiscard]] Tours farthest_insertion() const {
-    Tours t{std::vector<std::vector<int>>(static_cast<std::size_t>(robots_)),
-            std::vector<std::int64_t>(static_cast<std::size_t>(robots_), 0)};
+    Tours t = empty();
     std::vector<std::pair<std::int64_t, int>> by_reach;  // (-nearest robot, target)
     for (int g = 0; g < targets_; ++g) {
       std::int64_t nearest = kFar;
@@ -377,6 +382,7 @@ class Solver {
 
   const Distances& d_;
   int robots_, targets_;
+  std::vector<std::int64_t> start_;
 };
 
 }  // namespace
@@ -444,7 +450,7 @@ CoverTours cover_tours(const OccupancyGrid& map, const std::vector<std::uint8_t>
     }
   }
 
-  const Solver solver(d, robots.size(), targets.size());
+  const Solver solver(d, robots.size(), targets.size(), config.starts);
   std::vector<Tours> tried = {solver.nearest_neighbour(), solver.farthest_insertion()};
   for (Tours& t : tried) solver.improve(t, out.improvements, stop);
   Tours best = Solver::score(tried[1]) < Solver::score(tried[0]) ? tried[1] : tried[0];

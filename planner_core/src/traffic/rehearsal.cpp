@@ -1,6 +1,7 @@
 #include "swarm/planner/traffic/rehearsal.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "swarm/planner/mapf/adg.hpp"
 
@@ -38,10 +39,14 @@ Rehearsal rehearse(const OccupancyGrid& map, const MotionModel& motion, std::vec
   return out;
 }
 
-int driven_ticks(const std::vector<std::vector<Cell>>& paths, const std::function<int(int, int)>& lag) {
+int driven_ticks(const std::vector<std::vector<Cell>>& paths, const std::function<int(int, int)>& lag,
+                 const std::vector<int>& start) {
   const mapf::Dependencies adg = mapf::dependencies(paths);
-  // Every step in the order the plan has them: a need is always a step planned earlier, but for a
-  // rotation's, planned at the same time.
+  // Every step in the order the plan has them. A need is on a step planned earlier, or, where the
+  // plan has one robot follow another into the cell it leaves, on a step of the same time: those
+  // are taken in the order of their chain (a follow costs the lag like any other need, since the
+  // follower sets off only once it sees the cell left). A rotation's needs are on its members'
+  // earlier steps (adg.hpp), and its members move in one tick.
   struct Step {
     int time, robot;
     std::uint32_t k;
@@ -49,21 +54,56 @@ int driven_ticks(const std::vector<std::vector<Cell>>& paths, const std::functio
   std::vector<Step> steps;
   std::vector<std::vector<int>> entered(adg.routes.size());
   for (std::size_t r = 0; r < adg.routes.size(); ++r) {
-    entered[r].assign(adg.routes[r].size(), 0);
+    entered[r].assign(adg.routes[r].size(), -1);
+    entered[r][0] = r < start.size() ? start[r] : 0;
     for (std::uint32_t k = 1; k < adg.routes[r].size(); ++k) steps.push_back({adg.planned_time[r][k], static_cast<int>(r), k});
   }
   std::stable_sort(steps.begin(), steps.end(), [](const Step& a, const Step& b) { return a.time < b.time; });
   int last = 0;
-  for (const Step& s : steps) {
-    const auto r = static_cast<std::size_t>(s.robot);
-    int t = entered[r][s.k - 1] + 1;
-    for (const mapf::Need& n : adg.needs[r][s.k]) {
-      const auto j = static_cast<std::size_t>(n.robot);
-      if (adg.planned_time[j][n.step] >= s.time) continue;  // a rotation: together
-      t = std::max(t, entered[j][n.step] + lag(n.robot, s.robot));
+  std::vector<Step> pending;
+  for (std::size_t begin = 0; begin < steps.size();) {
+    std::size_t end = begin;
+    while (end < steps.size() && steps[end].time == steps[begin].time) ++end;
+    // One time step: a step whose followed step is not timed yet waits for the next pass (a chain
+    // of n follows takes n passes); then a rotation's members go at the latest of them, and the
+    // follows are timed again until nothing changes.
+    for (std::size_t i = begin; i < end; ++i) entered[static_cast<std::size_t>(steps[i].robot)][steps[i].k] = -1;
+    for (bool changed = true; changed;) {
+      changed = false;
+      pending.assign(steps.begin() + static_cast<std::ptrdiff_t>(begin), steps.begin() + static_cast<std::ptrdiff_t>(end));
+      while (!pending.empty()) {
+        const std::size_t before = pending.size();
+        std::erase_if(pending, [&](const Step& s) {
+          const auto r = static_cast<std::size_t>(s.robot);
+          int t = entered[r][s.k - 1] + 1;
+          for (const mapf::Need& n : adg.needs[r][s.k]) {
+            const int left = entered[static_cast<std::size_t>(n.robot)][n.step];
+            if (left < 0) return false;
+            t = std::max(t, left + lag(n.robot, s.robot));
+          }
+          changed = changed || (entered[r][s.k] >= 0 && t > entered[r][s.k]);
+          entered[r][s.k] = std::max(entered[r][s.k], t);
+          return true;
+        });
+        if (pending.size() == before) throw std::invalid_argument("driven_ticks: follows in a cycle that is no rotation");
+      }
+      for (std::size_t i = begin; i < end; ++i) {
+        const int q = adg.rotation_of[static_cast<std::size_t>(steps[i].robot)][steps[i].k];
+        if (q < 0) continue;
+        const auto& members = adg.rotations[static_cast<std::size_t>(q)];
+        int together = 0;
+        for (const mapf::Need& m : members) together = std::max(together, entered[static_cast<std::size_t>(m.robot)][m.step]);
+        for (const mapf::Need& m : members) {
+          int& e = entered[static_cast<std::size_t>(m.robot)][m.step];
+          changed = changed || e != together;
+          e = together;
+        }
+      }
     }
-    entered[r][s.k] = t;
-    last = std::max(last, t);
+    for (std::size_t i = begin; i < end; ++i) {
+      last = std::max(last, entered[static_cast<std::size_t>(steps[i].robot)][steps[i].k]);
+    }
+    begin = end;
   }
   return last;
 }

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <functional>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 #include <utility>
 
@@ -245,13 +246,18 @@ CoverGcsTask::Division CoverGcsTask::divide_among_robots(const GcsContext& ctx, 
 
 CoverGcsTask::Division CoverGcsTask::divide_by_tours(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
                                                      const std::vector<int>& robots,
-                                                     const std::function<bool()>& stop) const {
+                                                     const std::function<bool()>& stop, std::uint32_t variant) const {
   const comm::Topology& t = ctx.setup.topology;
   std::vector<Cell> at;
   for (int r : robots) at.push_back(ctx.cell_of(r));
   planner::CoverToursConfig cfg;
   cfg.max_targets = config_.tour_candidate_cells();
-  cfg.seed = planner::mix_seed(ctx.setup.world.scenario.seed(), seq_);
+  cfg.seed = planner::mix_seed(ctx.setup.world.scenario.seed(), seq_ + (std::uint64_t{variant} << 32));
+  // Every other seed plans the members' later start in: their routes shorter by it.
+  if (variant % 2 == 1) {
+    const std::vector<int> arrivals = route_arrivals(ctx);
+    for (const int r : robots) cfg.starts.push_back(arrivals[static_cast<std::size_t>(r)]);
+  }
   const planner::CoverTours tours = planner::cover_tours(known_, cells, at, cfg, stop);
   Division out;
   if (!tours.solved) return out;
@@ -283,6 +289,19 @@ CoverGcsTask::Division CoverGcsTask::divide_by_tours(const GcsContext& ctx, cons
   return out;
 }
 
+std::vector<int> CoverGcsTask::route_arrivals(const GcsContext& ctx) {
+  // A leader drives its own robot from the tick the routes reach it; a member's route has the
+  // member<->leader link still to go: a tick, and the link's delay and mean jitter in lockstep.
+  const auto& link = ctx.setup.world.scenario.links().member_leader();
+  const int member = 1 + static_cast<int>(link.delay_ticks() + link.jitter_ticks() / 2);
+  std::vector<int> out(static_cast<std::size_t>(ctx.setup.topology.robots()), member);
+  for (int g = 0; g < ctx.setup.topology.groups(); ++g) {
+    const int leader = ctx.leader_of(g);
+    if (leader >= 0 && leader < static_cast<int>(out.size())) out[static_cast<std::size_t>(leader)] = 0;
+  }
+  return out;
+}
+
 std::pair<int, int> CoverGcsTask::rehearsed_ticks(const GcsContext& ctx, const std::vector<std::vector<Cell>>& routes,
                                                   const std::vector<int>& robots) const {
   // As the layer plans (tasks/mapf/mapf_windows.cpp): every route cell a goal, the same windows and seed.
@@ -299,7 +318,7 @@ std::pair<int, int> CoverGcsTask::rehearsed_ticks(const GcsContext& ctx, const s
   // whatever the group and whatever the member<->leader link's delay.
   const auto lag = [](int, int) { return 1; };
   try {
-    return {planner::traffic::driven_ticks(plan.paths, lag), plan.makespan};
+    return {planner::traffic::driven_ticks(plan.paths, lag, route_arrivals(ctx)), plan.makespan};
   } catch (const std::invalid_argument&) {
     return {plan.makespan, plan.makespan};  // never: the layer's plans are free of conflicts
   }
@@ -313,15 +332,18 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
   // The candidates, in the order ties go: the groups' division (hierarchical), the division among
   // all robots (flat, or hierarchical with flat_candidate: a share grown from the leader's cell
   // can lie far from the group's other robots, while this one starts every region at its robot),
-  // the tours (few cells left). The one cheapest to drive (DriveCost) is driven.
-  std::vector<std::pair<const char*, Division>> candidates;
+  // the tours (few cells left; one from each of `tour_seeds` seeds, every other one planning the
+  // members' later start in). The one cheapest to drive (DriveCost) is driven.
+  std::vector<std::pair<std::string, Division>> candidates;
   if (config_.hierarchical()) candidates.emplace_back("leaders", divide_among_groups(ctx, cells, robots, stop));
   if (!config_.hierarchical() || config_.flat_candidate()) {
     candidates.emplace_back("robots", divide_among_robots(ctx, cells, robots, stop));
   }
-  if (config_.tour_candidate_cells() > 0) {
-    Division tours = divide_by_tours(ctx, cells, robots, stop);
-    if (!tours.json.is_null()) candidates.emplace_back("tours", std::move(tours));
+  // The tours from each seed are a candidate each: "tours", then "tours-2", "tours-3", ...
+  for (std::uint32_t v = 0; config_.tour_candidate_cells() > 0 && v < std::max(1u, config_.tour_seeds()); ++v) {
+    Division tours = divide_by_tours(ctx, cells, robots, stop, v);
+    if (tours.json.is_null()) break;  // too many cells: so for every seed
+    candidates.emplace_back(v == 0 ? std::string("tours") : "tours-" + std::to_string(v + 1), std::move(tours));
   }
   std::size_t best = 0;
   nlohmann::json compared = nlohmann::json::object();

@@ -80,6 +80,7 @@ TaskRow cover_row() {
     p.at_least(field + ".traffic_window_steps", 1, phase.cover().traffic_window_steps());
     p.in_range(field + ".route_candidates", 1, 16, phase.cover().route_candidates());
     p.in_range(field + ".route_balance_rounds", 0, 256, phase.cover().route_balance_rounds());
+    p.in_range(field + ".tour_seeds", 1, 16, phase.cover().tour_seeds());
     if (!phase.cover().traffic()) p.add(field + ".traffic", kOnlyTheLayer, "false");
   };
   return row;

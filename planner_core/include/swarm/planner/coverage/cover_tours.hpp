@@ -14,6 +14,7 @@
 //     unassigned target;
 //   - farthest first insertion: targets from the farthest from every robot, each inserted where
 //     the route it joins stays shortest.
+// A robot that sets off later (config.starts) counts its route from there.
 // Local search, until nothing improves or `stop`: within a route 2-opt (reversing a stretch) and
 // moving one target; between routes moving one target, or swapping two, from any route to
 // another. A move is taken when it lowers (longest route, routes that long, sum of routes), in
@@ -48,6 +49,9 @@ struct CoverToursConfig {
   double ruin_work = 1e7;
   std::size_t ruined_targets = 12;
   std::uint64_t seed = 1;  // the ruin's choices
+  // Per robot (empty: all 0): the moves it is behind the others before it can set off (its route's
+  // way to it). A route's length counts from there, so the longest is what the last robot ends at.
+  std::vector<int> starts;
 };
 
 struct CoverTours {

@@ -42,8 +42,12 @@ struct Rehearsal {
 
 // Ticks until every robot has driven its route of `paths` (timed, valid: no two robots on a cell)
 // when each route step is entered as soon as its robot stands before it and, for each robot the
-// plan has there earlier, lag(that robot, this robot) ticks after that robot left. Rotations
-// (robots moving round a cycle in one step) go together, without lag.
-[[nodiscard]] int driven_ticks(const std::vector<std::vector<Cell>>& paths, const std::function<int(int, int)>& lag);
+// plan has there earlier, lag(that robot, this robot) ticks after that robot left. That holds
+// where the plan has a robot follow another into the cell it leaves in the same step, too: the
+// follower learns of it a tick late, so a queue of robots that the plan moves as one pays a lag
+// per robot. Rotations (robots moving round a cycle in one step) go together. start[r]: the tick
+// robot r may first move (its route's arrival); 0 for robots past its end.
+[[nodiscard]] int driven_ticks(const std::vector<std::vector<Cell>>& paths, const std::function<int(int, int)>& lag,
+                               const std::vector<int>& start = {});
 
 }  // namespace swarm::planner::traffic

@@ -65,14 +65,16 @@ class CoverGcsTask : public GcsTask {
   // Among `robots` at once.
   Division divide_among_robots(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
                                const std::vector<int>& robots, const std::function<bool()>& stop) const;
+  // Per robot id: the ticks after the leaders' own robots that its route reaches it.
+  [[nodiscard]] static std::vector<int> route_arrivals(const GcsContext& ctx);
   // For `routes` (every robot id's) driven by `robots`: the ticks the drive is estimated to take
   // by the plan's dependencies, and the steps the traffic layer plans.
   std::pair<int, int> rehearsed_ticks(const GcsContext& ctx, const std::vector<std::vector<planner::Cell>>& routes,
                                       const std::vector<int>& robots) const;
-  // Among `robots` as tours (cover_tours.hpp); json is null when there are more cells than
-  // config_.tour_candidate_cells.
+  // Among `robots` as tours (cover_tours.hpp), solved from the `variant`th seed; json is null when
+  // there are more cells than config_.tour_candidate_cells.
   Division divide_by_tours(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
-                           const std::vector<int>& robots, const std::function<bool()>& stop) const;
+                           const std::vector<int>& robots, const std::function<bool()>& stop, std::uint32_t variant) const;
 
   swarm::scenario::Cover config_;
   std::uint32_t phase_;
