@@ -46,7 +46,7 @@ struct Rehearsal {
 // where the plan has a robot follow another into the cell it leaves in the same step, too: the
 // follower learns of it a tick late, so a queue of robots that the plan moves as one pays a lag
 // per robot. Rotations (robots moving round a cycle in one step) go together. start[r]: the tick
-// robot r may first move (its route's arrival); 0 for robots past its end.
+// robot r stands ready at (its route's arrival; 0 where start has no entry).
 [[nodiscard]] int driven_ticks(const std::vector<std::vector<Cell>>& paths, const std::function<int(int, int)>& lag,
                                const std::vector<int>& start = {});
 
