@@ -65,40 +65,32 @@ int driven_ticks(const std::vector<std::vector<Cell>>& paths, const std::functio
     std::size_t end = begin;
     while (end < steps.size() && steps[end].time == steps[begin].time) ++end;
     // One time step: a step whose followed step is not timed yet waits for the next pass (a chain
-    // of n follows takes n passes); then a rotation's members go at the latest of them, and the
-    // follows are timed again until nothing changes.
-    for (std::size_t i = begin; i < end; ++i) entered[static_cast<std::size_t>(steps[i].robot)][steps[i].k] = -1;
-    for (bool changed = true; changed;) {
-      changed = false;
-      pending.assign(steps.begin() + static_cast<std::ptrdiff_t>(begin), steps.begin() + static_cast<std::ptrdiff_t>(end));
-      while (!pending.empty()) {
-        const std::size_t before = pending.size();
-        std::erase_if(pending, [&](const Step& s) {
-          const auto r = static_cast<std::size_t>(s.robot);
-          int t = entered[r][s.k - 1] + 1;
-          for (const mapf::Need& n : adg.needs[r][s.k]) {
-            const int left = entered[static_cast<std::size_t>(n.robot)][n.step];
-            if (left < 0) return false;
-            t = std::max(t, left + lag(n.robot, s.robot));
-          }
-          changed = changed || (entered[r][s.k] >= 0 && t > entered[r][s.k]);
-          entered[r][s.k] = std::max(entered[r][s.k], t);
-          return true;
-        });
-        if (pending.size() == before) throw std::invalid_argument("driven_ticks: follows in a cycle that is no rotation");
-      }
-      for (std::size_t i = begin; i < end; ++i) {
-        const int q = adg.rotation_of[static_cast<std::size_t>(steps[i].robot)][steps[i].k];
-        if (q < 0) continue;
-        const auto& members = adg.rotations[static_cast<std::size_t>(q)];
-        int together = 0;
-        for (const mapf::Need& m : members) together = std::max(together, entered[static_cast<std::size_t>(m.robot)][m.step]);
-        for (const mapf::Need& m : members) {
-          int& e = entered[static_cast<std::size_t>(m.robot)][m.step];
-          changed = changed || e != together;
-          e = together;
+    // of n follows takes n passes). Then a rotation's members go at the latest of them: no robot
+    // outside a rotation follows one of its members in its step (the cell left is its next
+    // member's), so nothing timed in this step depends on that.
+    pending.assign(steps.begin() + static_cast<std::ptrdiff_t>(begin), steps.begin() + static_cast<std::ptrdiff_t>(end));
+    while (!pending.empty()) {
+      const std::size_t before = pending.size();
+      std::erase_if(pending, [&](const Step& s) {
+        const auto r = static_cast<std::size_t>(s.robot);
+        int t = entered[r][s.k - 1] + 1;
+        for (const mapf::Need& n : adg.needs[r][s.k]) {
+          const int left = entered[static_cast<std::size_t>(n.robot)][n.step];
+          if (left < 0) return false;
+          t = std::max(t, left + lag(n.robot, s.robot));
         }
-      }
+        entered[r][s.k] = t;
+        return true;
+      });
+      if (pending.size() == before) throw std::invalid_argument("driven_ticks: follows in a cycle that is no rotation");
+    }
+    for (std::size_t i = begin; i < end; ++i) {
+      const int q = adg.rotation_of[static_cast<std::size_t>(steps[i].robot)][steps[i].k];
+      if (q < 0) continue;
+      const auto& members = adg.rotations[static_cast<std::size_t>(q)];
+      int together = 0;
+      for (const mapf::Need& m : members) together = std::max(together, entered[static_cast<std::size_t>(m.robot)][m.step]);
+      for (const mapf::Need& m : members) entered[static_cast<std::size_t>(m.robot)][m.step] = together;
     }
     for (std::size_t i = begin; i < end; ++i) {
       last = std::max(last, entered[static_cast<std::size_t>(steps[i].robot)][steps[i].k]);
