@@ -81,17 +81,27 @@ TEST(Rehearsal, AGoalBehindAStandingRobotIsSkipped) {
   EXPECT_EQ(r.skipped, 1);
 }
 
-// Two robots that push each other back into a dead end (PIBT's known limit, traffic.hpp) never
-// finish: the rehearsal stops at the cap and says so.
+// Two robots that must pass each other in a corridor with no room to do so never finish: the
+// rehearsal stops at the cap and says so.
 TEST(Rehearsal, AStandOffStopsAtTheCap) {
+  const auto art = swarm::test::ascii_map({"A.....B"});
+  std::vector<Agent> agents = {{art.at.at('A'), {art.at.at('B')}}, {art.at.at('B'), {art.at.at('A')}}};
+  const Rehearsal r = rehearse(art.grid, MotionModel::four(), agents, 8, {}, 64);
+  EXPECT_FALSE(r.finished);
+  EXPECT_EQ(r.makespan, 64);
+}
+
+// Where the corridor has room beside it, the same meeting ends: PIBT alone pushes them back into
+// the dead ends for ever, but its swap lets them pass (traffic.hpp).
+TEST(Rehearsal, AStandOffWithRoomBesideItEnds) {
   const auto art = swarm::test::ascii_map({
       "##...##",
       "A.....B",
   });
   std::vector<Agent> agents = {{art.at.at('A'), {art.at.at('B')}}, {art.at.at('B'), {art.at.at('A')}}};
   const Rehearsal r = rehearse(art.grid, MotionModel::four(), agents, 8, {}, 64);
-  EXPECT_FALSE(r.finished);
-  EXPECT_EQ(r.makespan, 64);
+  EXPECT_TRUE(r.finished);
+  EXPECT_EQ(r.makespan, 9);  // 6 along, and one aside and back
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 
 #include "swarm/planner/grid/map_io.hpp"
 #include "swarm/planner/grid/rng.hpp"
+#include "swarm/planner/mapf/solver.hpp"
 #include "swarm_test/data.hpp"
 #include "swarm_test/free_region.hpp"
 #include "swarm_test/ascii_grid.hpp"
@@ -119,6 +120,110 @@ TEST(Traffic, TwoRobotsMeetingHeadOnInAOneCellCorridorPass) {
   const int took = drive(p, art.grid, MotionModel::four(), agents, 8, 10);
   ASSERT_GT(took, 0);
   EXPECT_LE(took, 32);
+}
+
+// The same meeting where the corridor has no room at either end, only one pocket in its middle
+// (a tree): PIBT alone never gets them past each other. With the swap, the robot heading away
+// from the pocket backs up, pulling the other along, until one can step into the pocket.
+TEST(Traffic, TwoRobotsMeetingHeadOnInACorridorWithOnePocketPass) {
+  for (std::uint64_t seed = 0; seed < 4; ++seed) {
+    const auto art = swarm::test::ascii_map({
+        "#########",
+        "#A.....B#",
+        "####.####",
+        "#########",
+    });
+    std::vector<Agent> agents = {{art.at.at('A'), {art.at.at('B')}}, {art.at.at('B'), {art.at.at('A')}}};
+    Planner p(art.grid, MotionModel::four(), {.seed = seed});
+    const int took = drive(p, art.grid, MotionModel::four(), agents, 8, 10);
+    EXPECT_GT(took, 0) << seed;
+    EXPECT_LE(took, 2 * 8) << seed;
+    EXPECT_EQ(p.rescues(), 0u) << seed;  // the swap alone
+  }
+}
+
+// In the same corridor A, at the far end, is bound for the cell beyond B's goal: B must first step
+// into the pocket and let A by. PIBT stands or pushes them back and forth; after kNoProgressSteps
+// without progress the planner rescues them with a complete plan (LaCAM) round the two.
+TEST(Traffic, ARobotBoundPastAnothersGoalInACorridorIsRescued) {
+  const auto art = swarm::test::ascii_map({
+      "#########",
+      "#abx..BA#",
+      "####.####",
+      "#########",
+  });
+  std::vector<Agent> agents = {{art.at.at('A'), {art.at.at('a')}}, {art.at.at('B'), {art.at.at('b')}}};
+  Planner p(art.grid, MotionModel::four(), {.seed = 19});
+  const int took = drive(p, art.grid, MotionModel::four(), agents, 8, 10);
+  EXPECT_GT(took, 0);
+  EXPECT_LE(took, 4 * 8);
+  EXPECT_EQ(p.rescues(), 1u);
+  EXPECT_EQ(p.rescues_failed(), 0u);
+}
+
+// Every meeting on two small trees (a corridor with one pocket, one with two), 2 to 4 robots on
+// random cells with random goals, 50 seeds each: every one that has a plan at all (LaCAM, complete,
+// says which) is driven to its end, and where none exists (robots on a tree cannot always trade
+// places) nothing is tried by a conflict (drive() checks every step).
+TEST(Traffic, EveryMeetingOnSmallTreesThatHasAPlanIsDriven) {
+  const std::vector<std::vector<std::string>> trees = {
+      {"#########", "#.......#", "####.####", "#########"},
+      {"#########", "#.......#", "##.###.##", "#########"},
+  };
+  int feasible = 0, driven = 0, infeasible = 0, rescued = 0;
+  for (const auto& rows : trees) {
+    const OccupancyGrid map = swarm::test::grid_from(rows);
+    const std::vector<Cell> cells = swarm::test::free_region(map);
+    for (std::size_t n = 2; n <= 4; ++n) {
+      for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+        Rng rng(seed * 31 + n);
+        std::vector<Cell> from = cells, to = cells;
+        for (std::size_t i = from.size(); i > 1; --i) std::swap(from[i - 1], from[rng.below(i)]);
+        for (std::size_t i = to.size(); i > 1; --i) std::swap(to[i - 1], to[rng.below(i)]);
+        std::vector<Agent> agents;
+        for (std::size_t a = 0; a < n; ++a) agents.push_back({from[a], {to[a]}});
+        const mapf::Instance in{map, MotionModel::four(), std::vector<Cell>(from.begin(), from.begin() + static_cast<std::ptrdiff_t>(n)),
+                                std::vector<Cell>(to.begin(), to.begin() + static_cast<std::ptrdiff_t>(n))};
+        mapf::SolverConfig lacam;
+        lacam.kind = mapf::SolverKind::Lacam;
+        const mapf::Result r = mapf::solve(in, lacam, mapf::StopCondition::never());
+        Planner p(map, MotionModel::four(), {.seed = seed});
+        if (r.status == mapf::Status::Infeasible) {
+          // No plan puts them all on their goals at once; they may still each pass theirs.
+          ++infeasible;
+          (void)drive(p, map, MotionModel::four(), agents, 8, 10);
+          continue;
+        }
+        ASSERT_EQ(r.status, mapf::Status::Solved);
+        ++feasible;
+        driven += drive(p, map, MotionModel::four(), agents, 8, 10) > 0 ? 1 : 0;
+        rescued += p.rescues() > 0 ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_EQ(driven, feasible);
+  EXPECT_EQ(feasible + infeasible, 300);
+  EXPECT_EQ(infeasible, 39);
+  EXPECT_EQ(rescued, 88);  // PIBT with its swap stalls in this many
+}
+
+// Three robots in a dead-end corridor off a room, the two at its far end bound for the room and the
+// one at its mouth for the far end: only by backing the third out into the room first can they
+// pass, which PIBT does by itself where the corridor opens into a room. 8-connected, as
+// exploration's and collection's robots move.
+TEST(Traffic, RobotsInADeadEndPassThroughTheRoomItOpensInto) {
+  const auto art = swarm::test::ascii_map({
+      "##########",
+      "#...######",
+      "#...C.BA##",
+      "#...######",
+      "##########",
+  });
+  std::vector<Agent> agents = {{art.at.at('A'), {{1, 3}}}, {art.at.at('B'), {{1, 1}}}, {art.at.at('C'), {art.at.at('A')}}};
+  Planner p(art.grid, MotionModel::eight(), {.seed = 5});
+  const int took = drive(p, art.grid, MotionModel::eight(), agents, 8, 20);
+  EXPECT_GT(took, 0);
+  EXPECT_EQ(p.rescues(), 0u);  // priority inheritance backs the third robot out on its own
 }
 
 // An explored map grows: the door between two rooms is not known free at first, so the goal

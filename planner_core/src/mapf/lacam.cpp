@@ -10,6 +10,7 @@
 #include <unordered_set>
 
 #include "agent_model.hpp"
+#include "swarm/planner/mapf/pibt_swap.hpp"
 #include "solvers.hpp"
 #include "swarm/planner/grid/rng.hpp"
 
@@ -368,34 +369,16 @@ class Lacam {
     }
     return n;
   }
-  // Must the pusher and the puller trade places? (They are in a corridor with the puller in the
-  // pusher's way, and the puller gains by moving behind the pusher.)
   bool swap_required(int pusher, int puller, int v_pusher, int v_puller) {
-    while (dist_[static_cast<std::size_t>(pusher)](v_puller) < dist_[static_cast<std::size_t>(pusher)](v_pusher)) {
-      int other = -1;
-      const int n = degree_excluding(v_puller, v_pusher, other);
-      if (n >= 2) return false;  // room to step aside
-      if (n == 0) break;
-      v_pusher = v_puller;
-      v_puller = other;
-    }
-    const int dq_p = dist_[static_cast<std::size_t>(puller)](v_pusher), dq_q = dist_[static_cast<std::size_t>(puller)](v_puller);
-    const int dp_p = dist_[static_cast<std::size_t>(pusher)](v_pusher), dp_q = dist_[static_cast<std::size_t>(pusher)](v_puller);
-    return dq_p < dq_q && (dp_p == 0 || dp_q < dp_p);
+    return mapf::swap_required(
+        pusher, puller, v_pusher, v_puller,
+        [this](int cell, int excluded, int& other) { return degree_excluding(cell, excluded, other); },
+        [this](int agent, int v) { return dist_[static_cast<std::size_t>(agent)](v); });  // the tables grow as asked
   }
-  // Is there a place off the corridor behind the puller where the two can trade places?
-  bool swap_possible(int v_pusher_origin, int v_puller_origin) const {
-    int v_pusher = v_pusher_origin;
-    int v_puller = v_puller_origin;
-    while (v_puller != v_pusher_origin) {
-      int other = -1;
-      const int n = degree_excluding(v_puller, v_pusher, other);
-      if (n >= 2) return true;
-      if (n == 0) return false;
-      v_pusher = v_puller;
-      v_puller = other;
-    }
-    return false;
+  bool swap_possible(int v_pusher, int v_puller) const {
+    return mapf::swap_possible(v_pusher, v_puller, [this](int cell, int excluded, int& other) {
+      return degree_excluding(cell, excluded, other);
+    });
   }
   int swap_partner(int a, const std::vector<int>& cand, const Config& cur) {
     const int u = cell_now(a, cur);

@@ -8,12 +8,17 @@
 #include <utility>
 
 #include "swarm/planner/grid/rng.hpp"
+#include "swarm/planner/mapf/pibt_swap.hpp"
+#include "swarm/planner/mapf/solver.hpp"
 
 namespace swarm::planner::traffic {
 
 namespace {
 // Above this many cached distances (256 MB of ints) the tables of goals no robot heads for go.
 constexpr std::size_t kMaxTableCells = std::size_t{64} << 20;
+// A rescue's search budget, in LaCAM's polls of its stop condition (one per 64 of its steps): a
+// count, not a time, so that a run stays the same under any load.
+constexpr int kRescuePolls = 512;
 }  // namespace
 
 Planner::Planner(OccupancyGrid map, MotionModel motion, Config config)
@@ -44,6 +49,18 @@ void Planner::set_map(const OccupancyGrid& map) {
     tables_.clear();
     table_cells_ = 0;
   }
+  // A rescue goes on while its region stays free (an explored map only grows, mostly).
+  for (std::size_t i = 0; i < region_.size(); ++i) {
+    if (region_[i] && !free_[i]) {
+      end_rescue();
+      return;
+    }
+  }
+}
+
+void Planner::end_rescue() {
+  rescue_.clear();
+  region_.clear();
 }
 
 int Planner::steps_to(int goal, int cell) {
@@ -114,7 +131,7 @@ bool Planner::push(int a, int parent) {
   add(here);
   motion_.for_each_neighbour(map_, map_.cell_of(here), [&](Cell c, double) {
     const int ci = map_.index(c);
-    if (passable(ci)) add(ci);
+    if (passable(ci) && (region_.empty() || !region_[static_cast<std::size_t>(ci)])) add(ci);  // a rescue's region is its own
   });
   const auto better = [](const Candidate& x, const Candidate& y) {
     if (x.dist != y.dist) return x.dist < y.dist;
@@ -124,6 +141,10 @@ bool Planner::push(int a, int parent) {
   for (std::size_t i = 1; i < n; ++i) {  // insertion sort: at most 9 cells
     for (std::size_t j = i; j > 0 && better(cand[j], cand[j - 1]); --j) std::swap(cand[j], cand[j - 1]);
   }
+  // Head-on in a corridor: a backs away, its partner following into its cell, until they reach a
+  // branch where they can trade places (LaCAM*'s swap, Okumura IJCAI 2023).
+  const int swapper = swap_partner(a, cand[0].cell);
+  if (swapper >= 0) std::reverse(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(n));
   for (std::size_t k = 0; k < n; ++k) {
     const int v = cand[k].cell;
     const auto uv = static_cast<std::size_t>(v);
@@ -133,11 +154,66 @@ bool Planner::push(int a, int parent) {
     next_[ua] = v;
     const int b = on_now_[uv];
     if (b >= 0 && b != a && next_[static_cast<std::size_t>(b)] < 0 && !push(b, a)) continue;
+    const auto us = static_cast<std::size_t>(swapper);
+    if (k == 0 && swapper >= 0 && next_[us] < 0 && on_next_[static_cast<std::size_t>(here)] < 0) {
+      next_[us] = here;
+      on_next_[static_cast<std::size_t>(here)] = swapper;
+    }
     return true;
   }
   next_[ua] = here;
   on_next_[static_cast<std::size_t>(here)] = a;
   return false;
+}
+
+int Planner::side_ways(int cell, int excluded, int& other) const {
+  int count = 0;
+  motion_.for_each_neighbour(map_, map_.cell_of(cell), [&](Cell c, double) {
+    const int nb = map_.index(c);
+    if (nb == excluded || !passable(nb)) return;
+    // A robot resting on its goal at the end of a dead end leaves no room there.
+    const int who = on_now_[static_cast<std::size_t>(nb)];
+    if (who >= 0 && goal_[static_cast<std::size_t>(who)] < 0 && dead_end(nb)) return;
+    ++count;
+    other = nb;
+  });
+  return count;
+}
+
+bool Planner::dead_end(int cell) const {
+  int open = 0;
+  motion_.for_each_neighbour(map_, map_.cell_of(cell), [&](Cell c, double) { open += passable(map_.index(c)) ? 1 : 0; });
+  return open == 1;
+}
+
+bool Planner::swap_required(int pusher, int puller, int at_pusher, int at_puller) {
+  if (goal_[static_cast<std::size_t>(pusher)] < 0 || goal_[static_cast<std::size_t>(puller)] < 0) return false;
+  return mapf::swap_required(pusher, puller, at_pusher, at_puller,
+                             [this](int cell, int excluded, int& other) { return side_ways(cell, excluded, other); },
+                             [this](int a, int cell) { return distance(a, cell); });
+}
+
+bool Planner::swap_possible(int at_pusher, int at_puller) const {
+  return mapf::swap_possible(at_pusher, at_puller,
+                             [this](int cell, int excluded, int& other) { return side_ways(cell, excluded, other); });
+}
+
+int Planner::swap_partner(int a, int best) {
+  const int here = now_[static_cast<std::size_t>(a)];
+  if (best == here || goal_[static_cast<std::size_t>(a)] < 0) return -1;
+  const int b = on_now_[static_cast<std::size_t>(best)];
+  if (b >= 0 && next_[static_cast<std::size_t>(b)] < 0 && swap_required(a, b, here, best) && swap_possible(best, here)) {
+    return b;
+  }
+  // Clearing: a robot beside a that must pass it first.
+  int partner = -1;
+  motion_.for_each_neighbour(map_, map_.cell_of(here), [&](Cell c, double) {
+    const int nb = map_.index(c);
+    const int k = on_now_[static_cast<std::size_t>(nb)];
+    if (partner >= 0 || k < 0 || nb == best || !passable(nb)) return;
+    if (swap_required(k, a, here, best) && swap_possible(best, here)) partner = k;
+  });
+  return partner;
 }
 
 Window Planner::plan(const std::vector<Agent>& agents, int steps) {
@@ -184,6 +260,15 @@ Window Planner::plan(const std::vector<Agent>& agents, int steps) {
     for (double& b : base_) b = rng.uniform01();
     priority_ = base_;
     waiting_.assign(n, 0);
+    stall_goal_.assign(n, -1);
+    nearest_.assign(n, 0);
+    stalled_.assign(n, 0);
+  }
+  // A rescue is driven on only from where it left its robots, none of them fixed since.
+  for (std::size_t a = 0; a < n && !rescue_.empty(); ++a) {
+    const auto& path = rescue_[a];
+    if (path.empty()) continue;
+    if (agents[a].fixed || path[std::min(rescue_step_, path.size() - 1)] != now_[a]) end_rescue();
   }
 
   Window w;
@@ -239,6 +324,13 @@ Window Planner::plan(const std::vector<Agent>& agents, int steps) {
         on_next_[static_cast<std::size_t>(now_[a])] = static_cast<int>(a);
       }
     }
+    // A rescue's robots take their plan's step; the others, kept out of its region, PIBT's.
+    if (!rescue_.empty()) ++rescue_step_;
+    for (std::size_t a = 0; a < rescue_.size(); ++a) {
+      if (rescue_[a].empty()) continue;
+      next_[a] = rescue_[a][std::min(rescue_step_, rescue_[a].size() - 1)];
+      on_next_[static_cast<std::size_t>(next_[a])] = static_cast<int>(a);
+    }
     for (const int a : order) {
       if (next_[static_cast<std::size_t>(a)] < 0) push(a, -1);
     }
@@ -266,11 +358,160 @@ Window Planner::plan(const std::vector<Agent>& agents, int steps) {
         priority_[a] = base_[a];
       }
     }
+    if (!rescue_.empty()) {
+      if (rescue_step_ >= rescue_until_) end_rescue();
+    } else {
+      watch_for_stalls(agents);
+    }
     ++steps_planned_;
   }
   for (std::size_t a = 0; a < n; ++a) on_now_[static_cast<std::size_t>(now_[a])] = -1;
   w.waiting = waiting_;
   return w;
+}
+
+void Planner::watch_for_stalls(const std::vector<Agent>& agents) {
+  std::vector<int> stalled, with_goal;
+  bool progress = false;
+  // After rescues that found no plan (none may exist: robots on a tree cannot always trade places),
+  // the next waits twice as long.
+  const int backoff = 1 << std::min(failed_in_a_row_, 6);
+  for (std::size_t a = 0; a < agents.size(); ++a) {
+    if (goal_[a] < 0 || agents[a].fixed) {
+      stall_goal_[a] = -1;
+      stalled_[a] = 0;
+      continue;
+    }
+    with_goal.push_back(static_cast<int>(a));
+    const int d = distance(static_cast<int>(a), now_[a]);
+    if (goal_[a] != stall_goal_[a] || d < nearest_[a]) {
+      progress = true;
+      stall_goal_[a] = goal_[a];
+      nearest_[a] = d;
+      stalled_[a] = 0;
+    } else if (++stalled_[a] >= kStallSteps * backoff) {
+      stalled.push_back(static_cast<int>(a));
+    }
+  }
+  no_progress_ = progress || with_goal.empty() ? 0 : no_progress_ + 1;
+  // No robot nearer its goal than it ever was for a while: PIBT is stuck (standing, or pushing the
+  // same robots back and forth), and every robot with a goal is stalled.
+  if (no_progress_ >= kNoProgressSteps * backoff) stalled = with_goal;
+  if (stalled.empty()) return;
+  // Counted again from here, so a rescue that failed is tried again only after as long a stall.
+  std::fill(stalled_.begin(), stalled_.end(), 0);
+  no_progress_ = 0;
+  if (plan_rescue(agents, stalled)) {
+    ++rescues_;
+    failed_in_a_row_ = 0;
+  } else {
+    ++rescues_failed_;
+    ++failed_in_a_row_;  // the next tries a region twice as wide
+  }
+}
+
+bool Planner::plan_rescue(const std::vector<Agent>& agents, const std::vector<int>& stalled) {
+  // The region: the passable cells within `radius` moves of a stalled robot (wider after each
+  // failure), as a graph under the robots' motion model (4- or 8-connected), so that LaCAM moves
+  // the robots as PIBT does. Its robots are planned in it; the others keep out of it meanwhile.
+  const int radius = kRescueRadius << std::min(failed_in_a_row_, 12);
+  std::vector<int> depth(map_.size(), -1);
+  std::vector<int> cell_of;  // the region's cells, in the order they were reached
+  for (const int a : stalled) {
+    const int c = now_[static_cast<std::size_t>(a)];
+    if (depth[static_cast<std::size_t>(c)] < 0) {
+      depth[static_cast<std::size_t>(c)] = 0;
+      cell_of.push_back(c);
+    }
+  }
+  for (std::size_t head = 0; head < cell_of.size(); ++head) {
+    const int c = cell_of[head];
+    if (depth[static_cast<std::size_t>(c)] >= radius) continue;
+    motion_.for_each_neighbour(map_, map_.cell_of(c), [&](Cell nc, double) {
+      const int ni = map_.index(nc);
+      if (!passable(ni) || depth[static_cast<std::size_t>(ni)] >= 0) return;
+      depth[static_cast<std::size_t>(ni)] = depth[static_cast<std::size_t>(c)] + 1;
+      cell_of.push_back(ni);
+    });
+  }
+  std::vector<int> vertex_of(map_.size(), -1);
+  for (std::size_t v = 0; v < cell_of.size(); ++v) vertex_of[static_cast<std::size_t>(cell_of[v])] = static_cast<int>(v);
+  std::vector<mapf::Edge> edges;
+  for (std::size_t v = 0; v < cell_of.size(); ++v) {
+    motion_.for_each_neighbour(map_, map_.cell_of(cell_of[v]), [&](Cell c, double) {
+      const int u = vertex_of[static_cast<std::size_t>(map_.index(c))];
+      if (u > static_cast<int>(v)) edges.push_back({static_cast<int>(v), u});
+    });
+  }
+  mapf::Instance in;
+  in.graph = mapf::Graph(static_cast<int>(cell_of.size()), std::move(edges));
+  const mapf::Graph& g = *in.graph;
+
+  // Its robots, the stalled first. Goals: for a robot with one, the cell of the region it can get to
+  // that is nearest its goal (its goal, when that lies inside); for one without, the nearest cell.
+  // No two the same: a robot whose best cell another has taken gets its next best.
+  std::vector<int> planned = stalled;
+  for (std::size_t a = 0; a < agents.size(); ++a) {
+    const int v = vertex_of[static_cast<std::size_t>(now_[a])];
+    if (v >= 0 && !agents[a].fixed && std::find(stalled.begin(), stalled.end(), static_cast<int>(a)) == stalled.end()) {
+      planned.push_back(static_cast<int>(a));
+    }
+  }
+  std::vector<bool> taken(cell_of.size(), false);
+  for (const int a : planned) {
+    const auto ua = static_cast<std::size_t>(a);
+    std::vector<int> reach{vertex_of[static_cast<std::size_t>(now_[ua])]};  // breadth-first within the region
+    std::vector<int> hops(cell_of.size(), -1);
+    hops[static_cast<std::size_t>(reach.front())] = 0;
+    for (std::size_t head = 0; head < reach.size(); ++head) {
+      for (const int u : g.neighbours(reach[head])) {
+        if (hops[static_cast<std::size_t>(u)] >= 0) continue;
+        hops[static_cast<std::size_t>(u)] = hops[static_cast<std::size_t>(reach[head])] + 1;
+        reach.push_back(u);
+      }
+    }
+    int best = -1, best_d = 0;
+    for (const int v : reach) {  // in order of hops: the first of equal distance is the nearest
+      if (taken[static_cast<std::size_t>(v)]) continue;
+      const int d = goal_[ua] >= 0 ? distance(a, cell_of[static_cast<std::size_t>(v)]) : 0;
+      if (best < 0 || d < best_d) {
+        best = v;
+        best_d = d;
+      }
+      if (goal_[ua] < 0) break;
+    }
+    if (best < 0) return false;  // more robots than cells
+    taken[static_cast<std::size_t>(best)] = true;
+    in.starts.push_back(mapf::vertex_cell(reach.front()));
+    in.goals.push_back(mapf::vertex_cell(best));
+  }
+  mapf::SolverConfig cfg;
+  cfg.kind = mapf::SolverKind::Lacam;
+  cfg.lacam.seed = mix_seed({config_.seed, steps_planned_});
+  int polls = 0;
+  mapf::StopCondition stop;
+  stop.predicate = [&polls] { return ++polls > kRescuePolls; };
+  const mapf::Result r = mapf::solve(in, cfg, stop);
+  if (r.status != mapf::Status::Solved) return false;
+  rescue_.assign(agents.size(), {});
+  for (std::size_t k = 0; k < planned.size(); ++k) {
+    auto& path = rescue_[static_cast<std::size_t>(planned[k])];
+    for (const Cell& v : r.paths[k]) path.push_back(cell_of[static_cast<std::size_t>(v.x)]);
+  }
+  region_.assign(map_.size(), false);
+  for (const int c : cell_of) region_[static_cast<std::size_t>(c)] = true;
+  // Driven only until every stalled robot has come nearer its goal than it ever was: it is past
+  // what held it, and PIBT takes over again (LaCAM's first plan is far from short: among 1,000
+  // robots one stalled 46 steps from its goal was planned 263 steps there).
+  rescue_until_ = 0;
+  for (const int a : stalled) {
+    const auto& path = rescue_[static_cast<std::size_t>(a)];
+    std::size_t t = 0;
+    while (t + 1 < path.size() && distance(a, path[t]) >= nearest_[static_cast<std::size_t>(a)]) ++t;
+    rescue_until_ = std::max(rescue_until_, t);
+  }
+  rescue_step_ = 0;
+  return true;
 }
 
 }  // namespace swarm::planner::traffic

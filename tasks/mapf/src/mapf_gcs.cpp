@@ -308,6 +308,8 @@ nlohmann::json MapfGcsTask::numbers() const {
             {"goals_done", goals_done_},
             {"goals_skipped", goals_skipped_},
             {"longest_wait_steps", traffic_ ? traffic_->longest_wait() : 0},
+            {"rescues", traffic_ ? traffic_->rescues() : 0},
+            {"rescues_failed", traffic_ ? traffic_->rescues_failed() : 0},
             {"rotations_ordered", rotations_ordered_},
             {"plans", plans_}};
   }

@@ -47,8 +47,8 @@ app::RoleSetup setup_from_text(const std::string& scenario_text) {
   return setup;
 }
 
-FakeSwarm::FakeSwarm(app::RoleSetup setup, std::set<comm::AgentId> scripted)
-    : setup_(std::move(setup)), scripted_(std::move(scripted)) {
+FakeSwarm::FakeSwarm(app::RoleSetup setup, std::set<comm::AgentId> scripted, gcs::GcsTaskFactory gcs_tasks)
+    : setup_(std::move(setup)), scripted_(std::move(scripted)), gcs_tasks_(std::move(gcs_tasks)) {
   const comm::Topology& t = setup_.topology;
   for (int a = 0; a < t.agents(); ++a) buses_.push_back(std::make_unique<comm::FakeBus>(net_));
   clock_ = std::make_unique<comm::LockstepClock>(*buses_[t.sim()], t, setup_.links);
@@ -60,8 +60,7 @@ FakeSwarm::FakeSwarm(app::RoleSetup setup, std::set<comm::AgentId> scripted)
   };
   const auto node = [&](comm::AgentId id) { return scripted_.count(id) == 0; };
   if (node(t.gcs())) {
-    gcs_ = std::make_unique<gcs::GcsNode>(agent(t.gcs()), setup_, dir_.str(), gcs::Progress::Style::None,
-                                          tasks::gcs_task);
+    gcs_ = std::make_unique<gcs::GcsNode>(agent(t.gcs()), setup_, dir_.str(), gcs::Progress::Style::None, gcs_tasks_);
   } else {
     agent(t.gcs());
   }

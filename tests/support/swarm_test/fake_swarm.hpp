@@ -53,7 +53,9 @@ app::RoleSetup setup_from_text(const std::string& scenario_text);
 
 class FakeSwarm {
  public:
-  explicit FakeSwarm(app::RoleSetup setup, std::set<comm::AgentId> scripted = {});
+  // `gcs_tasks`: the GCS's task for each phase (the registry's, unless a test drives its own).
+  explicit FakeSwarm(app::RoleSetup setup, std::set<comm::AgentId> scripted = {},
+                     gcs::GcsTaskFactory gcs_tasks = tasks::gcs_task);
 
   const comm::Topology& topology() const { return setup_.topology; }
   const app::RoleSetup& setup() const { return setup_; }
@@ -103,6 +105,7 @@ class FakeSwarm {
  private:
   app::RoleSetup setup_;
   std::set<comm::AgentId> scripted_;
+  gcs::GcsTaskFactory gcs_tasks_;
   std::map<comm::AgentId, std::function<void(const msgs::Clock&)>> scripts_;
   TempDir dir_;
   comm::FakeNetwork net_;

@@ -5,16 +5,26 @@
 //
 // Algorithm: PIBT, priority inheritance with backtracking (Okumura, Machida, Défago & Tamura,
 // "Priority inheritance with backtracking for iterative multi-agent path finding", AIJ 2022), in
-// its lifelong form: every step each robot, in order of priority, takes the neighbouring cell
-// (or its own) nearest its current goal that no robot of higher priority has taken; a robot
-// standing on that cell is asked, with the asker's priority, to move out of the way first, and if
-// it cannot, the asker tries its next cell. A robot's priority grows every step it is away from
-// its goal and falls back when it reaches one, so a robot that has been waiting eventually goes
-// first. Guarantee (the paper's Theorem 2): on a graph where every two adjacent cells lie on a
-// common cycle, the robot of highest priority reaches its goal, so every robot reaches each of
-// its goals in finite time. In a dead-end corridor (a tree) that does not hold: two robots that
-// must pass each other there need a pocket. The planner counts, per robot, the steps in a row in
-// which it had a goal and got no closer to it (`waiting`), so that its caller sees a robot stuck.
+// its lifelong form: every step each robot, in order of priority, takes the neighbouring cell (or
+// its own) nearest its current goal that no robot of higher priority has taken; a robot standing
+// on that cell is asked, with the asker's priority, to move out of the way first, and if it
+// cannot, the asker tries its next cell. A robot's priority grows every step it is away from its
+// goal and falls back when it reaches one, so a robot that has been waiting eventually goes first.
+// With the swap of LaCAM* (Okumura, IJCAI 2023): two robots head-on in a corridor back up together
+// to a branch and trade places there.
+//
+// Guarantee (the PIBT paper's Theorem 2): on a graph where every two adjacent cells lie on a common
+// cycle, the robot of highest priority reaches its goal, so every robot reaches each of its goals
+// in finite time. Where cells hang on the map like branches of a tree (a corridor with one pocket,
+// a dead end), that does not hold: robots that meet there can stand, or push each other back and
+// forth, for ever. So when no robot has come nearer its goal than it ever was for
+// kNoProgressSteps steps, or one has not for kStallSteps (far longer than PIBT keeps a robot
+// waiting in a crowd), the planner makes a rescue: LaCAM (Okumura, AAAI 2023;
+// planner/mapf/lacam.hpp), which is complete, plans the robots within kRescueRadius moves of the
+// stalled ones, each to the cell of that region nearest its goal, and the other robots keep out of
+// the region until the stalled ones are nearer their goals than they ever were; then PIBT goes on
+// (`rescues` counts them). The planner also counts, per robot, the steps in a row in which it had
+// a goal and got no closer to it (`waiting`), so that its caller sees a robot stuck.
 //
 // Robots that are `fixed` (stopped, or dead) never move and are obstacles to every other robot:
 // distances are measured around them, and a goal that only their cells reach, or one on a wall,
@@ -77,6 +87,18 @@ class Planner {
   // Steps planned so far; the most steps in a row any robot had a goal and got no closer to it.
   [[nodiscard]] std::uint64_t steps_planned() const { return steps_planned_; }
   [[nodiscard]] int longest_wait() const { return longest_wait_; }
+  // Complete plans made because PIBT stalled (see above), and how many of those LaCAM could not
+  // find within its budget (the robots then go on with PIBT, and a rescue is tried again later).
+  [[nodiscard]] std::uint64_t rescues() const { return rescues_; }
+  [[nodiscard]] std::uint64_t rescues_failed() const { return rescues_failed_; }
+
+  // Steps in which no robot, or one robot, came nearer its goal than it ever was, after which the
+  // planner makes a complete plan.
+  static constexpr int kNoProgressSteps = 16;
+  static constexpr int kStallSteps = 128;
+  // A rescue's region: the cells within this many moves of a stalled robot, twice as many after
+  // each rescue in a row that found no plan.
+  static constexpr int kRescueRadius = 8;
 
   static constexpr int kUnreachable = 1 << 29;
 
@@ -93,8 +115,24 @@ class Planner {
   // Drops the tables of goals no robot is heading for, once they hold more than a cap of cells.
   void trim_tables(const std::vector<Agent>& agents);
   bool push(int a, int parent);  // PIBT for agent a, asked by `parent` (-1: nobody)
+  // PIBT's swap (planner/mapf/pibt_swap.hpp): the robot that must trade places with `a`, which
+  // wants `best`, in a corridor too narrow to pass (-1: none); a robot without a goal never does.
+  int swap_partner(int a, int best);
+  bool swap_required(int pusher, int puller, int at_pusher, int at_puller);
+  bool swap_possible(int at_pusher, int at_puller) const;
+  // The passable neighbours of `cell` but `excluded`, not counting a dead end a robot without a goal
+  // rests in; `other`: the last of them.
+  int side_ways(int cell, int excluded, int& other) const;
+  bool dead_end(int cell) const;  // exactly one passable neighbour
   int distance(int a, int cell);
   bool passable(int cell) const { return free_[static_cast<std::size_t>(cell)] && !blocked_[static_cast<std::size_t>(cell)]; }
+  // After a step: counts each robot's steps without coming nearer its goal, and makes a rescue
+  // plan (rescue_) once one has stalled for kStallSteps.
+  void watch_for_stalls(const std::vector<Agent>& agents);
+  // LaCAM from the current configuration (now_) within a region round the `stalled` robots, driven
+  // until they are nearer their goals than they ever were; false if it found no plan.
+  bool plan_rescue(const std::vector<Agent>& agents, const std::vector<int>& stalled);
+  void end_rescue();
 
   OccupancyGrid map_;
   MotionModel motion_;
@@ -113,6 +151,18 @@ class Planner {
   std::vector<int> waiting_;  // per agent, kept across windows
   std::uint64_t steps_planned_ = 0;
   int longest_wait_ = 0;
+  // Stalls: per agent the goal cell it is measured against, the nearest it has come to it, and the
+  // steps since it last came nearer; and a rescue plan being driven (per agent its cells, empty:
+  // none) with the step of it the agents stand at.
+  std::vector<int> stall_goal_, nearest_, stalled_;
+  int no_progress_ = 0;  // steps in a row in which no robot came nearer its goal than it ever was
+  std::vector<std::vector<int>> rescue_;  // per agent: its cells in the rescue (empty: not in it)
+  std::vector<bool> region_;              // per cell: the rescue's region, which only its robots enter
+  std::size_t rescue_step_ = 0;
+  std::size_t rescue_until_ = 0;  // the step at which the rescue hands back to PIBT
+  int failed_in_a_row_ = 0;       // rescues that found no plan since the last that did
+  std::uint64_t rescues_ = 0;
+  std::uint64_t rescues_failed_ = 0;
 };
 
 }  // namespace swarm::planner::traffic
