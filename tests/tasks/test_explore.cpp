@@ -158,6 +158,23 @@ TEST(ExploreTask, ThroughTheTrafficLayerWithDelayAndLossesNoRobotCollides) {
   }
 }
 
+// A rotation's robots set off together at the tick the GCS names. When the next window grows the
+// plan before that tick, each robot's route is sent again, grown, and under member<->leader jitter
+// the grown version can reach the member first: it must carry the start tick too. Found on clutter
+// (seed 1, 1-5 ticks): without it member-0-2 set off four ticks before the rotation and ran into
+// member-2-1's cell, 4 conflict events.
+TEST(ExploreTask, ARotationsRouteGrownBeforeItSetsOffKeepsItsStartTick) {
+  const auto m = swarm::test::FakeSwarm(swarm::test::setup_from_text(
+                                            "map: 'clutter' groups: 3 robots_per_group: 3 max_ticks: 3000 seed: 1 "
+                                            "start { x: 3.05 y: 2.55 } links { member_leader { delay_ticks: 1 jitter_ticks: 4 } } "
+                                            "mission { phase { explore {} } }"))
+                     .run_to_end();
+  ASSERT_TRUE(m["complete"].get<bool>()) << m["ended"];
+  const auto& p = swarm::test::phase_named(m, "explore");
+  EXPECT_GE(p["task"]["traffic"]["rotations_ordered"].get<int>(), 1);
+  swarm::test::expect_no_conflict(p);
+}
+
 // A leader<->GCS delay of half the replanning interval or more: each round's waypoints reach the
 // GCS after the next round has begun. They are still the group's newest and are driven (before,
 // only the current round's were taken, and every robot stood for good: maze1 with 10 ticks each

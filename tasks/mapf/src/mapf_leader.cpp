@@ -60,6 +60,7 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
   released_.assign(n, 0);
   watched_.assign(n, {});
   route_id_.assign(n, 0);
+  route_start_.assign(n, 0);
   base_.assign(n, 0);
   own_.clear();
   report_.clear();
@@ -84,6 +85,7 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
     m.drop_steps = drops_[ku];
     if (timed_ && !o.values.empty()) m.start_tick = static_cast<std::uint32_t>(o.values[0]);
     route_id_[ku] = ctx.out.route(index_of_[ku], m);
+    route_start_[ku] = m.start_tick;
     note(k);
   }
 }
@@ -216,6 +218,7 @@ bool MapfGroupTask::extend_plan(const task::Order& o, GroupContext& ctx) {
     released_[ku] = std::max(released_[ku], planner::mapf::releasable(adg_, k, progress_, planner::mapf::Rotations::Held));
     task::Route m = route_from(ku, base_[ku]);
     m.grows = route_id_[ku];
+    m.start_tick = route_start_[ku];
     ctx.out.route(index_of_[ku], m);
     note(k);
   }
@@ -245,6 +248,7 @@ void MapfGroupTask::stop_own_robots(GroupContext& ctx) {
     if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
     const task::Route stop;  // empty: stop where it stands
     route_id_[ku] = ctx.out.route(index_of_[ku], stop);
+    route_start_[ku] = 0;
     stopping_.push_back(k);
   }
   stopped_all_ = stopping_.empty();
@@ -322,6 +326,7 @@ void MapfGroupTask::rotate(int q, std::uint32_t tick, GroupContext& ctx) {
     task::Route r = route_from(ku, from);
     r.start_tick = tick;
     route_id_[ku] = ctx.out.route(index_of_[ku], r);
+    route_start_[ku] = tick;
     note(static_cast<int>(ku));
   }
 }

@@ -99,6 +99,11 @@ class MapfGroupTask : public GroupTask {
   // per plan index (own robots): the gates' releases of the watch last sent with a release
   std::vector<std::vector<std::uint32_t>> watched_;
   std::vector<std::uint32_t> route_id_;       // per plan index (own robots)
+  // per plan index (own robots): the tick its route under route_id_ sets off at (0: at once). A
+  // route grown by the next window keeps it: under jitter the grown version can reach the member
+  // before the route it grows, and a rotation's robot that set off early would run into the robot
+  // whose cell it takes.
+  std::vector<std::uint32_t> route_start_;
   // per plan index (own robots): the route step its current route message starts at (a rotation
   // sends the rest of the route anew, with its start tick)
   std::vector<std::uint32_t> base_;
