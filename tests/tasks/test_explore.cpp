@@ -131,7 +131,10 @@ TEST(ExploreTask, ThroughTheTrafficLayerANewRoundStopsNoRobot) {
   EXPECT_EQ(continued, traffic["repicks_continued"].get<int>());
   // Two rounds may come before one window takes them up; most rounds continue the plan.
   EXPECT_GE(2 * continued, p["task"]["planning_rounds"].get<int>()) << traffic.dump();
-  EXPECT_LE(traffic["repicks_held"].get<int>(), ticks / (gcs::MapfGcsTask::kPlanSteps - 2 * window)) << traffic.dump();
+  // A hold each time the plan has grown to kPlanSteps. The plan's time runs ahead of the clock (a
+  // robot drives on past the waits its window planned, and a round's window is planned at once
+  // from the plan's end): here 256 steps in about 200 ticks.
+  EXPECT_LE(traffic["repicks_held"].get<int>(), 1 + ticks / (gcs::MapfGcsTask::kPlanSteps - 2 * window)) << traffic.dump();
 }
 
 // Late messages only make robots wait: with member<->leader delay and jitter, and with a member

@@ -146,15 +146,14 @@ void ExploreGcsTask::note_arrivals() {
 }
 
 void ExploreGcsTask::step(GcsContext& ctx) {
-  if (new_targets_) {
+  if (new_targets_ && !driving_) {
     new_targets_ = false;
-    if (driving_) {
-      drive_->repick(ctx, "round");
-    } else {
-      driving_ = true;
-      drive_->start(ctx);
-    }
+    driving_ = true;
+    drive_->start(ctx);
   } else if (driving_) {
+    // A round's waypoints go into the next window in the tick they come, not a tick later.
+    if (new_targets_) drive_->repick(ctx, "round");
+    new_targets_ = false;
     drive_->step(ctx);
   }
   std::vector<planner::Cell> robots;

@@ -169,6 +169,9 @@ bool MapfGcsTask::time_to_extend(const GcsContext& ctx) const {
     if (seq[planned].act != Stop::Act::kNone && seq[planned].cell == window_paths_[k].back()) return false;
   }
   if (!more) return false;
+  // New sequences go out at once: a robot whose part of the plan is done stands until they come,
+  // however far the leading robot still has to go.
+  if (repick_ != nullptr) return true;
   // The leading robot's time in the plan, as reported.
   int lead = 0;
   for (std::size_t k = 0; k < planned_.size(); ++k) lead = std::max(lead, adg_.planned_time[k][progress_[k]]);
