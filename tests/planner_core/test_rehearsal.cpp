@@ -58,6 +58,9 @@ TEST(Rehearsal, AQueueThatThePlanMovesAsOnePaysALagPerRobot) {
   EXPECT_EQ(driven_ticks(paths, [](int, int) { return 2; }), 7);
   EXPECT_EQ(driven_ticks(paths, [](int, int) { return 1; }, {0, 0, 2}), 7);  // the head starts at 2
   EXPECT_EQ(driven_ticks(paths, [](int, int) { return 1; }, {2, 0, 0}), 5);  // the tail's start is no later
+  // The same starts at once, the graph built once: the same ticks, in the order given.
+  EXPECT_EQ(driven_ticks_per_start(paths, [](int, int) { return 1; }, {{}, {0, 0, 2}, {2, 0, 0}, {0, 4, 0}}),
+            (std::vector<int>{5, 7, 5, 8}));  // a late middle holds up the tail: 5, 6, 7, then 6, 7, 8
 }
 
 // Four robots round a square in one step: a rotation goes in one tick, with no lag among them.

@@ -39,26 +39,45 @@ Rehearsal rehearse(const OccupancyGrid& map, const MotionModel& motion, std::vec
   return out;
 }
 
-int driven_ticks(const std::vector<std::vector<Cell>>& paths, const std::function<int(int, int)>& lag,
-                 const std::vector<int>& start) {
-  const mapf::Dependencies adg = mapf::dependencies(paths);
+namespace {
+
+// A plan's steps in the order its drive takes them, and its graph: built once, timed for any
+// arrival ticks.
+struct DriveOrder {
+  struct Step {
+    int time, robot;
+    std::uint32_t k;
+  };
+  mapf::Dependencies adg;
+  std::vector<Step> steps;
+};
+
+DriveOrder drive_order(const std::vector<std::vector<Cell>>& paths) {
+  DriveOrder o{mapf::dependencies(paths), {}};
+  for (std::size_t r = 0; r < o.adg.routes.size(); ++r) {
+    for (std::uint32_t k = 1; k < o.adg.routes[r].size(); ++k) {
+      o.steps.push_back({o.adg.planned_time[r][k], static_cast<int>(r), k});
+    }
+  }
+  std::stable_sort(o.steps.begin(), o.steps.end(),
+                   [](const DriveOrder::Step& a, const DriveOrder::Step& b) { return a.time < b.time; });
+  return o;
+}
+
+int time_drive(const DriveOrder& o, const std::function<int(int, int)>& lag, const std::vector<int>& start) {
+  const mapf::Dependencies& adg = o.adg;
+  const auto& steps = o.steps;
+  using Step = DriveOrder::Step;
   // Every step in the order the plan has them. A need is on a step planned earlier, or, where the
   // plan has one robot follow another into the cell it leaves, on a step of the same time: those
   // are taken in the order of their chain (a follow costs the lag like any other need, since the
   // follower sets off only once it sees the cell left). A rotation's needs are on its members'
   // earlier steps (adg.hpp), and its members move in one tick.
-  struct Step {
-    int time, robot;
-    std::uint32_t k;
-  };
-  std::vector<Step> steps;
   std::vector<std::vector<int>> entered(adg.routes.size());
   for (std::size_t r = 0; r < adg.routes.size(); ++r) {
     entered[r].assign(adg.routes[r].size(), -1);
     entered[r][0] = r < start.size() ? start[r] : 0;
-    for (std::uint32_t k = 1; k < adg.routes[r].size(); ++k) steps.push_back({adg.planned_time[r][k], static_cast<int>(r), k});
   }
-  std::stable_sort(steps.begin(), steps.end(), [](const Step& a, const Step& b) { return a.time < b.time; });
   int last = 0;
   std::vector<Step> pending;
   for (std::size_t begin = 0; begin < steps.size();) {
@@ -98,6 +117,23 @@ int driven_ticks(const std::vector<std::vector<Cell>>& paths, const std::functio
     begin = end;
   }
   return last;
+}
+
+}  // namespace
+
+int driven_ticks(const std::vector<std::vector<Cell>>& paths, const std::function<int(int, int)>& lag,
+                 const std::vector<int>& start) {
+  return time_drive(drive_order(paths), lag, start);
+}
+
+std::vector<int> driven_ticks_per_start(const std::vector<std::vector<Cell>>& paths,
+                                        const std::function<int(int, int)>& lag,
+                                        const std::vector<std::vector<int>>& starts) {
+  const DriveOrder order = drive_order(paths);
+  std::vector<int> out;
+  out.reserve(starts.size());
+  for (const std::vector<int>& start : starts) out.push_back(time_drive(order, lag, start));
+  return out;
 }
 
 }  // namespace swarm::planner::traffic

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <compare>
 #include <cstdio>
 #include <functional>
@@ -69,23 +70,25 @@ constexpr int kSecondPlanTicks = 4;
 
 // What a division costs to drive, compared in this order: the ticks its drive is estimated to take
 // (a rehearsal of the traffic layer's plan for it, driven by the plan's dependencies, each robot
-// setting off the tick after the robots it waits on have gone, docs/traffic.md; and when its
-// routes miss cells to cover, the second division and plan those wait for once every route is
-// driven: kSecondPlanTicks and the way from the nearest route's end to the farthest of them); the
-// cells missed; the steps the plan takes (the longest route plus whatever the robots wait or step
-// aside for one another); its moves onto cells of another group's part; the moves of all its
-// routes. Its longest route is kept to show.
+// setting off the tick after the robots it waits on have gone, docs/traffic.md; the mean over
+// draws of the routes' arrivals, which link jitter and loss spread; and when its routes miss cells
+// to cover, the second division and plan those wait for once every route is driven:
+// kSecondPlanTicks and the way from the nearest route's end to the farthest of them); the cells
+// missed; the steps the plan takes (the longest route plus whatever the robots wait or step aside
+// for one another); its moves onto cells of another group's part; the moves of all its routes.
+// Its longest route and the estimate's range over the draws are kept to show.
 struct DriveCost {
-  int driven = 0;
+  double driven = 0;
   std::size_t missed = 0;
   int planned = 0;
   std::size_t foreign = 0, all = 0, longest = 0;
+  int fastest = 0, slowest = 0;  // the drive's estimate in the draw of arrivals it is fastest / slowest in
   auto operator<=>(const DriveCost&) const = default;
 };
 
 DriveCost drive_cost(const std::vector<std::vector<Cell>>& routes, const std::vector<int>& group_of_cell,
                      const std::vector<std::uint8_t>& cells, const comm::Topology& t, const planner::OccupancyGrid& map,
-                     const std::function<std::pair<int, int>(const std::vector<std::vector<Cell>>&)>& rehearse) {
+                     const std::function<CoverGcsTask::Rehearsed(const std::vector<std::vector<Cell>>&)>& rehearse) {
   DriveCost c;
   std::vector<std::uint8_t> passed(map.size(), 0);
   for (const auto& route : routes) {
@@ -106,7 +109,11 @@ DriveCost drive_cost(const std::vector<std::vector<Cell>>& routes, const std::ve
       c.foreign += g >= 0 && g != own ? 1 : 0;
     }
   }
-  std::tie(c.driven, c.planned) = rehearse(routes);
+  const CoverGcsTask::Rehearsed r = rehearse(routes);
+  c.driven = r.mean_ticks;
+  c.fastest = r.fastest;
+  c.slowest = r.slowest;
+  c.planned = r.planned;
   if (c.missed > 0) {
     std::vector<Cell> ends;
     for (const auto& route : routes) {
@@ -116,13 +123,16 @@ DriveCost drive_cost(const std::vector<std::vector<Cell>>& routes, const std::ve
     int farthest = 0;
     for (const std::size_t i : missed) farthest = std::max(farthest, moves[i]);
     c.driven += kSecondPlanTicks + farthest;
+    c.fastest += kSecondPlanTicks + farthest;
+    c.slowest += kSecondPlanTicks + farthest;
   }
   return c;
 }
 
 nlohmann::json to_json(const DriveCost& c) {
   return {{"cells_missed", c.missed},
-          {"estimated_ticks", c.driven},
+          {"estimated_ticks", std::round(c.driven * 10) / 10},
+          {"estimated_ticks_range", {c.fastest, c.slowest}},
           {"planned_steps", c.planned},
           {"moves_in_other_groups_parts", c.foreign},
           {"route_moves", c.all},
@@ -302,8 +312,47 @@ std::vector<int> CoverGcsTask::route_arrivals(const GcsContext& ctx) {
   return out;
 }
 
-std::pair<int, int> CoverGcsTask::rehearsed_ticks(const GcsContext& ctx, const std::vector<std::vector<Cell>>& routes,
-                                                  const std::vector<int>& robots) const {
+std::vector<std::vector<int>> CoverGcsTask::arrival_draws(const GcsContext& ctx) const {
+  // From the GCS's order on: the order's way to each leader (its jitter is one draw for all
+  // leaders, so only a loss sets one apart), a member's route's way from its leader, and every
+  // robot's command's way to the simulator (a jitter draw and losses of its own), each loss
+  // costing the link's retransmission.
+  const auto& links = ctx.setup.world.scenario.links();
+  const auto& order = links.leader_gcs();
+  const auto& route = links.member_leader();
+  const auto& command = links.sim_robot();
+  const comm::Topology& t = ctx.setup.topology;
+  const bool spread = route.jitter_ticks() > 0 || command.jitter_ticks() > 0 || order.loss() > 0 || route.loss() > 0 ||
+                      command.loss() > 0;
+  planner::Rng rng(planner::mix_seed(ctx.setup.world.scenario.seed(), phase_, seq_, 0xa771ULL));
+  const auto retransmissions = [&rng](const swarm::scenario::Link& link) {
+    int ticks = 0;
+    while (link.loss() > 0 && rng.uniform01() < link.loss()) ticks += static_cast<int>(link.retransmit_ticks());
+    return ticks;
+  };
+  const auto jitter = [&rng](const swarm::scenario::Link& link) {
+    return static_cast<int>(rng.below(std::uint64_t{link.jitter_ticks()} + 1));
+  };
+  std::vector<std::vector<int>> draws(spread ? kArrivalDraws : 1);
+  for (std::vector<int>& at : draws) {
+    at.assign(static_cast<std::size_t>(t.robots()), 0);
+    for (int g = 0; g < t.groups(); ++g) {
+      const int leader = ctx.leader_of(g);
+      const int group_order = spread ? retransmissions(order) : 0;
+      for (int i = 0; i < t.robots_per_group(); ++i) {
+        const int r = t.robot(g, i);
+        int ticks = group_order;
+        if (r != leader) ticks += 1 + static_cast<int>(route.delay_ticks()) + (spread ? jitter(route) + retransmissions(route) : 0);
+        if (spread) ticks += jitter(command) + retransmissions(command);
+        at[static_cast<std::size_t>(r)] = ticks;
+      }
+    }
+  }
+  return draws;
+}
+
+CoverGcsTask::Rehearsed CoverGcsTask::rehearsed_ticks(const GcsContext& ctx, const std::vector<std::vector<Cell>>& routes,
+                                                      const std::vector<int>& robots) const {
   // As the layer plans (tasks/mapf/mapf_windows.cpp): every route cell a goal, the same windows and seed.
   std::size_t longest = 0;
   for (const int r : robots) longest = std::max(longest, routes[static_cast<std::size_t>(r)].size());
@@ -311,17 +360,22 @@ std::pair<int, int> CoverGcsTask::rehearsed_ticks(const GcsContext& ctx, const s
   const planner::traffic::Rehearsal plan =
       planner::traffic::rehearse(layer_map(ctx, known_), planner::MotionModel::four(), layer_agents(ctx, robots, routes), window,
                                  traffic_config(ctx.setup.world.scenario.seed(), phase_), 4 * static_cast<int>(longest) + 4 * window);
-  if (!plan.finished) return {plan.makespan, plan.makespan};
+  if (!plan.finished) return {static_cast<double>(plan.makespan), plan.makespan, plan.makespan, plan.makespan};
   // A dependency's cost, from the robot waited for leaving to the other entering: one tick, the
   // step itself. Robot positions are shared in real time, and the waiting robot's member sees the
   // cell left in that tick's clock and sets off (its release's watch, tasks/mapf/mapf_leader.hpp),
   // whatever the group and whatever the member<->leader link's delay.
   const auto lag = [](int, int) { return 1; };
+  std::vector<int> ticks;
   try {
-    return {planner::traffic::driven_ticks(plan.paths, lag, route_arrivals(ctx)), plan.makespan};
+    ticks = planner::traffic::driven_ticks_per_start(plan.paths, lag, arrival_draws(ctx));
   } catch (const std::invalid_argument&) {
-    return {plan.makespan, plan.makespan};  // never: the layer's plans are free of conflicts
+    return {static_cast<double>(plan.makespan), plan.makespan, plan.makespan, plan.makespan};  // never: the layer's plans are free of conflicts
   }
+  Rehearsed out{0, *std::min_element(ticks.begin(), ticks.end()), *std::max_element(ticks.begin(), ticks.end()), plan.makespan};
+  for (const int k : ticks) out.mean_ticks += k;
+  out.mean_ticks /= static_cast<double>(ticks.size());
+  return out;
 }
 
 std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,

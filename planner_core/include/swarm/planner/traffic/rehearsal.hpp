@@ -49,5 +49,10 @@ struct Rehearsal {
 // robot r stands ready at (its route's arrival; 0 where start has no entry).
 [[nodiscard]] int driven_ticks(const std::vector<std::vector<Cell>>& paths, const std::function<int(int, int)>& lag,
                                const std::vector<int>& start = {});
+// driven_ticks() of one plan for each of several start vectors (its routes arriving at different
+// ticks, as a link's jitter and loss make them): the plan's graph is built once.
+[[nodiscard]] std::vector<int> driven_ticks_per_start(const std::vector<std::vector<Cell>>& paths,
+                                                      const std::function<int(int, int)>& lag,
+                                                      const std::vector<std::vector<int>>& starts);
 
 }  // namespace swarm::planner::traffic

@@ -67,10 +67,26 @@ class CoverGcsTask : public GcsTask {
                                const std::vector<int>& robots, const std::function<bool()>& stop) const;
   // Per robot id: the ticks after the leaders' own robots that its route reaches it.
   [[nodiscard]] static std::vector<int> route_arrivals(const GcsContext& ctx);
+  // Per robot id, in each of kArrivalDraws draws of the links' jitter and loss: the tick its route
+  // reaches it, counted from the tick the leaders' own robots get theirs over exact links. One
+  // draw where no link has jitter or loss: the arrivals are known.
+  static constexpr int kArrivalDraws = 16;
+  [[nodiscard]] std::vector<std::vector<int>> arrival_draws(const GcsContext& ctx) const;
+
+ public:
+  // A rehearsal's estimate of a drive: the mean of its ticks over the draws of arrivals, the
+  // fewest and the most, and the steps the traffic layer plans.
+  struct Rehearsed {
+    double mean_ticks = 0;
+    int fastest = 0, slowest = 0;
+    int planned = 0;
+  };
+
+ private:
   // For `routes` (every robot id's) driven by `robots`: the ticks the drive is estimated to take
-  // by the plan's dependencies, and the steps the traffic layer plans.
-  std::pair<int, int> rehearsed_ticks(const GcsContext& ctx, const std::vector<std::vector<planner::Cell>>& routes,
-                                      const std::vector<int>& robots) const;
+  // by the plan's dependencies (over the draws of arrival_draws), and the steps the layer plans.
+  [[nodiscard]] Rehearsed rehearsed_ticks(const GcsContext& ctx, const std::vector<std::vector<planner::Cell>>& routes,
+                                          const std::vector<int>& robots) const;
   // Among `robots` as tours (cover_tours.hpp), solved from the `variant`th seed; json is null when
   // there are more cells than config_.tour_candidate_cells.
   Division divide_by_tours(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
