@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "swarm/config/task_config.hpp"
-#include "swarm/planner/explore/frontier.hpp"
+#include "swarm/planner/coverage/cover_bounds.hpp"
 #include "swarm/tasks/cover/cover_gcs.hpp"
 #include "swarm/tasks/mapf/mapf_leader.hpp"
 #include "swarm/tasks/mapf/mapf_settings.hpp"
@@ -14,10 +14,12 @@ namespace swarm::tasks {
 
 namespace {
 // The simulator's judge: the share of the coverage target the robots' footprints swept, when it
-// was all swept, and the curve of it (every 5 ticks). Also a second lower bound on the makespan
-// besides ⌈cells / robots⌉: some robot must reach the target cell farthest from every robot, so
-// no division and no route finishes before that many moves (where robots cover only the cell they
-// stand on; a wider footprint reaches a cell from elsewhere, and the bound is then not given).
+// was all swept, and the curve of it (every 5 ticks). Also two lower bounds on the makespan
+// besides ⌈cells / robots⌉ (planner/coverage/cover_bounds.hpp), from the ground truth at the
+// phase's start: the moves to the target cell farthest from every robot, and the moves each that
+// give the team a landing on every target cell of both chessboard colours (where robots cover
+// only the cell they stand on; a wider footprint reaches a cell from elsewhere, and the bounds are
+// then not given).
 class CoverJudge : public sim::PhaseJudge {
  public:
   sim::Progress progress(const sim::World& world) const override {
@@ -26,12 +28,8 @@ class CoverJudge : public sim::PhaseJudge {
   void start(sim::World& world, std::uint32_t tick) override {
     world.reset_coverage();
     curve_.emplace_back(tick, world.covered_fraction());
-    reach_bound_.reset();
-    if (world.footprint_radius() == 0) {
-      int farthest = 0;
-      for (int d : planner::step_distances(world.truth(), world.robots(), world.motion())) farthest = std::max(farthest, d);
-      reach_bound_ = farthest;
-    }
+    bounds_.reset();
+    if (world.footprint_radius() == 0) bounds_ = planner::cover_bounds(world.truth(), world.uncovered(), world.robots());
   }
   void after_tick(const sim::World& world, std::uint32_t k) override {
     if (!full_tick_ && world.covered_cells() >= world.coverage_target_cells()) full_tick_ = k;
@@ -49,14 +47,15 @@ class CoverJudge : public sim::PhaseJudge {
             // The orders' way to the robots: ticks from the phase's start to the first move.
             {"first_move_ticks", facts.first_move_tick ? nlohmann::json(*facts.first_move_tick - facts.start_tick)
                                                        : nlohmann::json(nullptr)},
-            {"reach_bound_moves", reach_bound_ ? nlohmann::json(*reach_bound_) : nlohmann::json(nullptr)},
+            {"reach_bound_moves", bounds_ ? nlohmann::json(bounds_->reach_moves) : nlohmann::json(nullptr)},
+            {"colour_bound_moves", bounds_ ? nlohmann::json(bounds_->colour_moves) : nlohmann::json(nullptr)},
             {"coverage_curve", curve}};
   }
 
  private:
   std::vector<std::pair<std::uint32_t, double>> curve_;  // (tick, covered fraction)
   std::optional<std::uint32_t> full_tick_;                // every target cell covered
-  std::optional<int> reach_bound_;  // moves to the target cell farthest from every robot
+  std::optional<planner::CoverBounds> bounds_;
 };
 }  // namespace
 

@@ -129,6 +129,7 @@ class World {
   int footprint_radius() const { return footprint_radius_; }
   int covered_cells() const { return coverage_.covered_cells(); }
   bool is_covered(planner::Cell c) const { return coverage_.is_covered(c); }
+  std::vector<std::uint8_t> uncovered() const { return coverage_.uncovered(); }  // a mask of the map's size
 
   const std::vector<MotionCounts>& counts() const { return counts_; }
   // Diagonal moves made so far, all robots: with counts()' moves, the driven length in cells
