@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
 #include "swarm/planner/coverage/cover_tours.hpp"
@@ -25,11 +26,17 @@ std::vector<std::uint8_t> uncovered(const OccupancyGrid& g, const std::vector<Ce
   return m;
 }
 
+// The bounds for robots on the drawing's cells marked by `letters`, every other free cell to cover.
+CoverBounds bounds_of(const swarm::test::AsciiMap& art, const std::string& letters) {
+  std::vector<Cell> robots;
+  for (const char l : letters) robots.push_back(art.at.at(l));
+  return cover_bounds(art.grid, uncovered(art.grid, robots), robots);
+}
+
 // One robot at the end of a corridor of 10 cells: 9 moves, whichever bound says it.
 TEST(CoverBounds, ACorridorTakesItsLength) {
   const auto art = swarm::test::ascii_map({"A........."});
-  const std::vector<Cell> robots = {art.at.at('A')};
-  const CoverBounds b = cover_bounds(art.grid, uncovered(art.grid, robots), robots);
+  const CoverBounds b = bounds_of(art, "A");
   EXPECT_TRUE(b.reachable);
   EXPECT_EQ(b.reach_moves, 9);
   // 5 cells of the other colour than A's (1, 3, 5, 7, 9): ⌈k/2⌉ >= 5 needs k = 9.
@@ -48,8 +55,7 @@ TEST(CoverBounds, ALatticeNeedsAMoveIntoEveryPassageAndOneOut) {
       ".#.#.#.",
       "A.....B",
   });
-  const std::vector<Cell> robots = {art.at.at('A'), art.at.at('B'), art.at.at('C')};
-  const CoverBounds b = cover_bounds(art.grid, uncovered(art.grid, robots), robots);
+  const CoverBounds b = bounds_of(art, "ABC");
   EXPECT_TRUE(b.reachable);
   EXPECT_EQ(b.reach_moves, 5);
   EXPECT_EQ(b.colour_moves, 11);
@@ -57,8 +63,7 @@ TEST(CoverBounds, ALatticeNeedsAMoveIntoEveryPassageAndOneOut) {
 
 TEST(CoverBounds, ACellNoRobotReachesIsSaid) {
   const auto art = swarm::test::ascii_map({"A.#.."});
-  const std::vector<Cell> robots = {art.at.at('A')};
-  const CoverBounds b = cover_bounds(art.grid, uncovered(art.grid, robots), robots);
+  const CoverBounds b = bounds_of(art, "A");
   EXPECT_FALSE(b.reachable);
   EXPECT_EQ(b.reach_moves, 1);
 }
