@@ -207,6 +207,33 @@ TEST(Traffic, EveryMeetingOnSmallTreesThatHasAPlanIsDriven) {
   EXPECT_EQ(rescued, 88);  // PIBT with its swap stalls in this many
 }
 
+// A robot dies in the way round a ring: the one heading past it must go the long way round, 27
+// steps from 1. Every step of that detour is progress on the new distances, so it is no stall and
+// no rescue is made (one measured against its best on the old distances would see 26 steps
+// without progress).
+TEST(Traffic, ADetourRoundADeadRobotIsProgress) {
+  const auto art = swarm::test::ascii_map({
+      "############",
+      "#A.BG......#",
+      "#.########.#",
+      "#.########.#",
+      "#.########.#",
+      "#..........#",
+      "############",
+  });
+  Planner p(art.grid, MotionModel::four(), {.seed = 3});
+  std::vector<Agent> agents = {{art.at.at('A'), {art.at.at('G')}}, {{10, 1}, {}}};
+  Window w = p.plan(agents, 1);  // one step towards G: 2 from it
+  expect_valid(art.grid, MotionModel::four(), agents, w, 1);
+  agents[0].at = w.paths[0].back();
+  ASSERT_EQ(agents[0].at, (Cell{2, 5}));
+  agents[1] = {art.at.at('B'), {}, true};  // now dead between it and G
+  const int took = drive(p, art.grid, MotionModel::four(), agents, 8, 8);
+  EXPECT_GT(took, 0);
+  EXPECT_EQ(p.rescues(), 0u);
+  EXPECT_EQ(p.rescues_failed(), 0u);
+}
+
 // Three robots in a dead-end corridor off a room, the two at its far end bound for the room and the
 // one at its mouth for the far end: only by backing the third out into the room first can they
 // pass, which PIBT does by itself where the corridor opens into a room. 8-connected, as

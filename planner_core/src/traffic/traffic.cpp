@@ -45,10 +45,7 @@ void Planner::set_map(const OccupancyGrid& map) {
   }
   map_ = map;
   // Every distance may have changed with one cell: the searches start again.
-  if (changed) {
-    tables_.clear();
-    table_cells_ = 0;
-  }
+  if (changed) forget_distances();
   // A rescue goes on while its region stays free (an explored map only grows, mostly).
   for (std::size_t i = 0; i < region_.size(); ++i) {
     if (region_[i] && !free_[i]) {
@@ -61,6 +58,14 @@ void Planner::set_map(const OccupancyGrid& map) {
 void Planner::end_rescue() {
   rescue_.clear();
   region_.clear();
+}
+
+void Planner::forget_distances() {
+  tables_.clear();
+  table_cells_ = 0;
+  // A robot's best distance was measured on the old distances: a detour round a new wall or a dead
+  // robot would otherwise count as no progress until it got back under that figure.
+  std::fill(stall_goal_.begin(), stall_goal_.end(), -1);
 }
 
 int Planner::steps_to(int goal, int cell) {
@@ -171,7 +176,7 @@ int Planner::side_ways(int cell, int excluded, int& other) const {
   motion_.for_each_neighbour(map_, map_.cell_of(cell), [&](Cell c, double) {
     const int nb = map_.index(c);
     if (nb == excluded || !passable(nb)) return;
-    // A robot resting on its goal at the end of a dead end leaves no room there.
+    // A robot without a goal resting at the end of a dead end leaves no room there.
     const int who = on_now_[static_cast<std::size_t>(nb)];
     if (who >= 0 && goal_[static_cast<std::size_t>(who)] < 0 && dead_end(nb)) return;
     ++count;
@@ -234,8 +239,7 @@ Window Planner::plan(const std::vector<Agent>& agents, int steps) {
   }
   if (blocked != blocked_) {
     blocked_ = std::move(blocked);
-    tables_.clear();
-    table_cells_ = 0;
+    forget_distances();
   }
   trim_tables(agents);
 
@@ -264,10 +268,14 @@ Window Planner::plan(const std::vector<Agent>& agents, int steps) {
     nearest_.assign(n, 0);
     stalled_.assign(n, 0);
   }
-  // A rescue is driven on only from where it left its robots, none of them fixed since.
+  // A rescue is driven on only from where it left its robots, none of them fixed since, and with
+  // no other robot in its region (a plan held and started again may leave one there).
   for (std::size_t a = 0; a < n && !rescue_.empty(); ++a) {
     const auto& path = rescue_[a];
-    if (path.empty()) continue;
+    if (path.empty()) {
+      if (region_[static_cast<std::size_t>(now_[a])]) end_rescue();
+      continue;
+    }
     if (agents[a].fixed || path[std::min(rescue_step_, path.size() - 1)] != now_[a]) end_rescue();
   }
 
@@ -503,12 +511,20 @@ bool Planner::plan_rescue(const std::vector<Agent>& agents, const std::vector<in
   // Driven only until every stalled robot has come nearer its goal than it ever was: it is past
   // what held it, and PIBT takes over again (LaCAM's first plan is far from short: among 1,000
   // robots one stalled 46 steps from its goal was planned 263 steps there).
+  // A plan that brings none of them nearer (one pushed back farther than the region reaches) is no
+  // rescue: it counts as failed, and the next region is wider.
   rescue_until_ = 0;
+  bool helps = false;
   for (const int a : stalled) {
     const auto& path = rescue_[static_cast<std::size_t>(a)];
     std::size_t t = 0;
     while (t + 1 < path.size() && distance(a, path[t]) >= nearest_[static_cast<std::size_t>(a)]) ++t;
+    helps = helps || distance(a, path[t]) < nearest_[static_cast<std::size_t>(a)];
     rescue_until_ = std::max(rescue_until_, t);
+  }
+  if (!helps) {
+    end_rescue();
+    return false;
   }
   rescue_step_ = 0;
   return true;

@@ -76,7 +76,8 @@ constexpr int kSecondPlanTicks = 4;
 // kSecondPlanTicks and the way from the nearest route's end to the farthest of them); the cells
 // missed; the steps the plan takes (the longest route plus whatever the robots wait or step aside
 // for one another); its moves onto cells of another group's part; the moves of all its routes.
-// Its longest route and the estimate's range over the draws are kept to show.
+// Its longest route and the estimate's range over the draws are kept to show (they break the
+// last ties too: ordered, so that the ranking is total and deterministic).
 struct DriveCost {
   double driven = 0;
   std::size_t missed = 0;

@@ -87,8 +87,9 @@ class Planner {
   // Steps planned so far; the most steps in a row any robot had a goal and got no closer to it.
   [[nodiscard]] std::uint64_t steps_planned() const { return steps_planned_; }
   [[nodiscard]] int longest_wait() const { return longest_wait_; }
-  // Complete plans made because PIBT stalled (see above), and how many of those LaCAM could not
-  // find within its budget (the robots then go on with PIBT, and a rescue is tried again later).
+  // Rescues driven because PIBT stalled (see above), and the rescues tried that failed: LaCAM found
+  // no plan within its budget, or none that brings a stalled robot nearer its goal (the robots then
+  // go on with PIBT, and a rescue in a region twice as wide is tried after twice as long).
   [[nodiscard]] std::uint64_t rescues() const { return rescues_; }
   [[nodiscard]] std::uint64_t rescues_failed() const { return rescues_failed_; }
 
@@ -97,7 +98,7 @@ class Planner {
   static constexpr int kNoProgressSteps = 16;
   static constexpr int kStallSteps = 128;
   // A rescue's region: the cells within this many moves of a stalled robot, twice as many after
-  // each rescue in a row that found no plan.
+  // each rescue in a row that failed (up to 2^12 times: the whole of any map).
   static constexpr int kRescueRadius = 8;
 
   static constexpr int kUnreachable = 1 << 29;
@@ -133,6 +134,7 @@ class Planner {
   // until they are nearer their goals than they ever were; false if it found no plan.
   bool plan_rescue(const std::vector<Agent>& agents, const std::vector<int>& stalled);
   void end_rescue();
+  void forget_distances();  // after the map or the fixed robots changed
 
   OccupancyGrid map_;
   MotionModel motion_;
