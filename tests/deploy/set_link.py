@@ -7,11 +7,16 @@ whatever address Docker hands out then, while its peers keep sending to the one 
 The runtime image has python3 (fastdds-tools needs it) and no iproute2, hence the ioctls.
 
 Usage: python3 set_link.py ADDRESS up|down
+       python3 set_link.py ADDRESS down SECONDS   # down, then up again SECONDS later
+
+The second form is one helper container for the whole cut: its length is then SECONDS, not
+SECONDS plus a second container's start-up (several seconds on a loaded machine).
 """
 import fcntl
 import socket
 import struct
 import sys
+import time
 
 SIOCGIFFLAGS, SIOCSIFFLAGS, SIOCGIFADDR = 0x8913, 0x8914, 0x8915
 IFF_UP = 0x1
@@ -30,19 +35,28 @@ def ipv4_address(sock, name):
     return socket.inet_ntoa(sockaddr[4:8])
 
 
+def set_state(sock, name, address, state):
+    flags = struct.unpack("H", request(sock, SIOCGIFFLAGS, name)[:2])[0]
+    flags = flags | IFF_UP if state == "up" else flags & ~IFF_UP
+    request(sock, SIOCSIFFLAGS, name, struct.pack("H", flags))
+    print(f"set_link.py: {name} ({address}) {state}", flush=True)
+
+
 def main():
-    if len(sys.argv) != 3 or sys.argv[2] not in ("up", "down"):
-        sys.exit("usage: set_link.py ADDRESS up|down")
-    address, state = sys.argv[1], sys.argv[2]
+    args = sys.argv[1:]
+    ok = len(args) == 2 and args[1] in ("up", "down")
+    ok = ok or (len(args) == 3 and args[1] == "down" and args[2].isdigit())
+    if not ok:
+        sys.exit("usage: set_link.py ADDRESS up|down [SECONDS]")
+    address, state = args[0], args[1]
     sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
     names = [name for _, name in socket.if_nameindex() if ipv4_address(sock, name) == address]
     if len(names) != 1:
         sys.exit(f"set_link.py: {len(names)} interfaces hold {address} here, expected one")
-    name = names[0]
-    flags = struct.unpack("H", request(sock, SIOCGIFFLAGS, name)[:2])[0]
-    flags = flags | IFF_UP if state == "up" else flags & ~IFF_UP
-    request(sock, SIOCSIFFLAGS, name, struct.pack("H", flags))
-    print(f"set_link.py: {name} ({address}) {state}")
+    set_state(sock, names[0], address, state)
+    if len(args) == 3:
+        time.sleep(int(args[2]))
+        set_state(sock, names[0], address, "up")
 
 
 main()

@@ -182,15 +182,17 @@ TEST(BadCommands, OfflineToolsRefuseNaNAndTakeAnyTimeLimit) {
   EXPECT_EQ(read_json(dir + "/d/result.json").at("status"), "converged") << r.output;
 }
 
-// A run stopped early still ends with metrics.json: what it did up to the stop, and why.
+// A run stopped early still ends with metrics.json: what it did up to the stop, and why. Each run
+// is stopped 12 s after it starts, not 6: each check wants ticks run before the stop, and starting
+// eleven processes and their discovery is slow on a loaded CI machine (a 6 s stop failed there).
 TEST(RunStoppedEarly, ATimeoutEndsTheRunWithItsMetrics) {
   const std::string dir = fresh_dir("stopped_by_timeout") + "/run";
   const CommandResult r = run_swarm("run --scenario " + source_path("scenarios/small.pbtxt") +
-                                    " --realtime --tick-ms 250 --max-ticks 2000 --timeout 6 --out " + dir);
+                                    " --realtime --tick-ms 250 --max-ticks 2000 --timeout 12 --out " + dir);
   EXPECT_EQ(r.exit_code, 1) << r.output;
   const nlohmann::json m = read_json(dir + "/metrics.json");
   EXPECT_EQ(m.at("complete"), false) << m.dump();
-  EXPECT_EQ(m.at("ended").get<std::string>().rfind("timed out after 6 s", 0), 0u) << m.at("ended");
+  EXPECT_EQ(m.at("ended").get<std::string>().rfind("timed out after 12 s", 0), 0u) << m.at("ended");
   EXPECT_GT(m.at("ticks_run").get<int>(), 5) << m.dump();
   EXPECT_FALSE(m.contains("partial")) << "the GCS's own metrics, up to the stop";
 }
@@ -198,7 +200,7 @@ TEST(RunStoppedEarly, ATimeoutEndsTheRunWithItsMetrics) {
 TEST(RunStoppedEarly, AnInterruptEndsTheRunWithItsMetrics) {
   const std::string dir = fresh_dir("stopped_by_sigint") + "/run";
   // `timeout -s INT` interrupts swarm run as a Ctrl-C would.
-  const std::string cmd = "timeout --preserve-status -s INT 6 " + std::string(SWARM_BIN_DIR) + "/swarm run --scenario " +
+  const std::string cmd = "timeout --preserve-status -s INT 12 " + std::string(SWARM_BIN_DIR) + "/swarm run --scenario " +
                           source_path("scenarios/small.pbtxt") + " --realtime --tick-ms 250 --max-ticks 2000 --out " +
                           dir + " > /dev/null 2>&1";
   const int status = std::system(cmd.c_str());
@@ -214,7 +216,7 @@ TEST(RunStoppedEarly, AMemberKilledMidRunLeavesTheGcsMetricsSayingSo) {
   // kill -9 of a member's process while the run goes on (not a planned fault).
   const std::string cmd = "sh -c '" + std::string(SWARM_BIN_DIR) + "/swarm run --scenario " +
                           source_path("scenarios/small.pbtxt") + " --realtime --tick-ms 250 --max-ticks 2000 --out " + dir +
-                          " > /dev/null 2>&1 & p=$!; sleep 5; pkill -9 -f \"[s]warm-member .*" + dir +
+                          " > /dev/null 2>&1 & p=$!; sleep 12; pkill -9 -f \"[s]warm-member .*" + dir +
                           "\"; wait $p; exit $?'";
   const int status = std::system(cmd.c_str());
   EXPECT_EQ(WEXITSTATUS(status), 1);
