@@ -1,5 +1,6 @@
 #include "swarm/planner/coverage/region_graph.hpp"
 
+#include <algorithm>
 #include <cassert>
 
 namespace swarm::planner {
@@ -85,6 +86,58 @@ bool simple_point(const RegionGraph& graph, const std::vector<int>& owner, int c
     if (mine(ring[(k + 1) % 4]) && mine(graph.next[ring[k]][kTowardsNext[k]])) ++joined;
   }
   return present > 0 && (joined == 4 || present - joined == 1);
+}
+
+std::vector<std::uint8_t> join_pieces(const OccupancyGrid& map, std::vector<std::uint8_t> mask) {
+  assert(mask.size() == map.size());
+  const RegionGraph set = RegionGraph::build(region_grid(map, mask));
+  int count = 0;
+  const std::vector<int> piece_of_set_cell = components(set, count);
+  if (count < 2) return mask;
+  const RegionGraph free = RegionGraph::build(region_grid(map, {}));
+  std::vector<int> piece(static_cast<std::size_t>(free.size()), -1);  // per Free cell, -1: not in the set
+  std::vector<int> size(static_cast<std::size_t>(count), 0);
+  for (int i = 0; i < set.size(); ++i) {
+    piece[static_cast<std::size_t>(free.index_of(set.cells[static_cast<std::size_t>(i)]))] = piece_of_set_cell[i];
+    ++size[static_cast<std::size_t>(piece_of_set_cell[i])];
+  }
+  std::vector<std::uint8_t> joined(static_cast<std::size_t>(count), 0);
+  joined[static_cast<std::size_t>(std::max_element(size.begin(), size.end()) - size.begin())] = 1;
+  std::vector<std::uint8_t> in_whole(static_cast<std::size_t>(free.size()), 0);  // the joined pieces and paths
+  for (int c = 0; c < free.size(); ++c) in_whole[c] = piece[c] >= 0 && joined[piece[c]];
+  std::vector<int> parent(static_cast<std::size_t>(free.size()));
+  std::vector<int> queue;
+  for (int left = count - 1; left > 0; --left) {
+    // Breadth-first from the whole so far, to the first cell of a piece not joined yet.
+    std::fill(parent.begin(), parent.end(), -2);
+    queue.clear();
+    for (int c = 0; c < free.size(); ++c) {
+      if (!in_whole[c]) continue;
+      parent[c] = -1;
+      queue.push_back(c);
+    }
+    int reached = -1;
+    for (std::size_t head = 0; head < queue.size() && reached < 0; ++head) {
+      for (const int n : free.next[static_cast<std::size_t>(queue[head])]) {
+        if (n < 0 || parent[n] != -2) continue;
+        parent[n] = queue[head];
+        if (piece[n] >= 0) {
+          reached = n;
+          break;
+        }
+        queue.push_back(n);
+      }
+    }
+    if (reached < 0) break;  // the rest no Free path reaches
+    const int p = piece[reached];
+    joined[p] = 1;
+    for (int c = 0; c < free.size(); ++c) in_whole[c] = in_whole[c] || piece[c] == p;
+    for (int c = parent[reached]; c >= 0 && !in_whole[c]; c = parent[c]) {
+      in_whole[c] = 1;
+      mask[static_cast<std::size_t>(map.index(free.cells[static_cast<std::size_t>(c)]))] = 1;
+    }
+  }
+  return mask;
 }
 
 OccupancyGrid region_grid(const OccupancyGrid& map, const std::vector<std::uint8_t>& mask) {

@@ -13,6 +13,7 @@
 
 #include "swarm/config/task_config.hpp"
 #include "swarm/planner/coverage/cover_tours.hpp"
+#include "swarm/planner/coverage/region_graph.hpp"
 #include "swarm/planner/grid/deadline.hpp"
 #include "swarm/planner/grid/rng.hpp"
 #include "swarm/planner/traffic/rehearsal.hpp"
@@ -389,10 +390,14 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
   // can lie far from the group's other robots, while this one starts every region at its robot),
   // the tours (few cells left; one from each of `tour_seeds` seeds, every other one planning the
   // members' later start in). The one cheapest to drive (DriveCost) is driven.
+  // The divisions take the cells that join the set's pieces too (robots standing in a one-cell
+  // door split off the room behind it, which a division would give to a robot whose route never
+  // leaves its own piece); the tours need only the cells to cover, and the costs count those.
+  const std::vector<std::uint8_t> joined = planner::join_pieces(known_, cells);
   std::vector<std::pair<std::string, Division>> candidates;
-  if (config_.hierarchical()) candidates.emplace_back("leaders", divide_among_groups(ctx, cells, robots, stop));
+  if (config_.hierarchical()) candidates.emplace_back("leaders", divide_among_groups(ctx, joined, robots, stop));
   if (!config_.hierarchical() || config_.flat_candidate()) {
-    candidates.emplace_back("robots", divide_among_robots(ctx, cells, robots, stop));
+    candidates.emplace_back("robots", divide_among_robots(ctx, joined, robots, stop));
   }
   // The tours from each seed are a candidate each: "tours", then "tours-2", "tours-3", ...
   for (std::uint32_t v = 0; config_.tour_candidate_cells() > 0 && v < std::max(1u, config_.tour_seeds()); ++v) {

@@ -57,6 +57,14 @@ struct RegionGraph {
 // region stays connected, provided it was), false may be a false alarm (a loop elsewhere).
 [[nodiscard]] bool simple_point(const RegionGraph& graph, const std::vector<int>& owner, int c, int r);
 
+// `mask` with its 4-connected pieces joined into one: from the largest piece, the nearest other
+// piece is joined by a shortest path of Free cells of `map` (those not in the mask are added),
+// then the nearest to all that, and so on; pieces no Free path reaches stay apart. Robots standing
+// in a one-cell door and just behind it leave the cells still to cover in two pieces, the room and
+// the rest; a division grows its regions from the robots' pieces, so a piece left apart would be
+// nobody's to drive.
+[[nodiscard]] std::vector<std::uint8_t> join_pieces(const OccupancyGrid& map, std::vector<std::uint8_t> mask);
+
 // A grid of the same size and geometry as `map` whose Free cells are the cells with mask[i] != 0
 // that are Free in `map` (an empty mask = every Free cell); everything else is Occupied.
 [[nodiscard]] OccupancyGrid region_grid(const OccupancyGrid& map, const std::vector<std::uint8_t>& mask);
