@@ -111,10 +111,10 @@ nlohmann::json warehouse_after_exploration(const std::string& cover_settings) {
 // robots and the tours are made too, each rehearsed through the traffic layer, and the one
 // cheapest to drive is driven: the fewest estimated ticks, then cells that no route passes, then
 // planned steps, then moves onto other groups' parts, then moves in all. Seed 2: the cells left
-// lie in pieces, which the divisions take joined (region_graph.hpp, join_pieces), so the groups'
-// division and the robots' pass every cell, in 18 planned steps each, estimated at 19 ticks. The
-// tours pass every cell; of the four solved, the third (16 steps) is estimated at 17 ticks and
-// driven, and the drive takes that from the routes' arrival at the leaders.
+// lie in two pieces, which the divisions take joined by one cell (region_graph.hpp, join_pieces),
+// so the groups' division and the robots' pass every cell, in 18 planned steps each, estimated at
+// 19 ticks. The tours pass every cell; of the four solved, the third (16 steps) is estimated at
+// 17 ticks and driven, and the drive takes that from the routes' arrival at the leaders.
 TEST(CoverTask, AfterExplorationTheDivisionCheaperToDriveIsDriven) {
   const auto m = warehouse_after_exploration("");
   const auto& cover = phase_named(m, "cover");
@@ -145,6 +145,8 @@ TEST(CoverTask, AfterExplorationTheDivisionCheaperToDriveIsDriven) {
   EXPECT_EQ(compared["tours-3"]["estimated_ticks_range"], nlohmann::json::array({17, 17}));
   EXPECT_EQ(std::get<1>(key("leaders")), 0);
   EXPECT_EQ(std::get<1>(key("robots")), 0);
+  EXPECT_EQ(division["pieces"], 2) << division.dump(1);
+  EXPECT_EQ(division["joining_cells"], 1) << division.dump(1);
   for (const char* tours : {"tours", "tours-2", "tours-3", "tours-4"}) {
     EXPECT_EQ(std::get<1>(key(tours)), 0) << tours;
     if (std::string(tours) != "tours-3") EXPECT_LT(key("tours-3"), key(tours)) << tours;

@@ -33,8 +33,10 @@ struct Joined {
 };
 
 Joined join(const OccupancyGrid& map, const std::vector<std::uint8_t>& set) {
-  const std::vector<std::uint8_t> joined = join_pieces(map, set);
+  int reported = -1;
+  const std::vector<std::uint8_t> joined = join_pieces(map, set, &reported);
   Joined out{pieces(map, set), pieces(map, joined), {}};
+  EXPECT_EQ(reported, out.before);
   for (int y = 0; y < map.height(); ++y) {
     for (int x = 0; x < map.width(); ++x) {
       const auto i = static_cast<std::size_t>(map.index({x, y}));

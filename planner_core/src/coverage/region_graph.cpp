@@ -88,11 +88,12 @@ bool simple_point(const RegionGraph& graph, const std::vector<int>& owner, int c
   return present > 0 && (joined == 4 || present - joined == 1);
 }
 
-std::vector<std::uint8_t> join_pieces(const OccupancyGrid& map, std::vector<std::uint8_t> mask) {
+std::vector<std::uint8_t> join_pieces(const OccupancyGrid& map, std::vector<std::uint8_t> mask, int* pieces) {
   assert(mask.size() == map.size());
   const RegionGraph set = RegionGraph::build(region_grid(map, mask));
   int count = 0;
   const std::vector<int> piece_of_set_cell = components(set, count);
+  if (pieces) *pieces = count;
   if (count < 2) return mask;
   const RegionGraph free = RegionGraph::build(region_grid(map, {}));
   std::vector<int> piece(static_cast<std::size_t>(free.size()), -1);  // per Free cell, -1: not in the set

@@ -393,7 +393,8 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
   // The divisions take the cells that join the set's pieces too (robots standing in a one-cell
   // door split off the room behind it, which a division would give to a robot whose route never
   // leaves its own piece); the tours need only the cells to cover, and the costs count those.
-  const std::vector<std::uint8_t> joined = planner::join_pieces(known_, cells);
+  int pieces = 0;
+  const std::vector<std::uint8_t> joined = planner::join_pieces(known_, cells, &pieces);
   std::vector<std::pair<std::string, Division>> candidates;
   if (config_.hierarchical()) candidates.emplace_back("leaders", divide_among_groups(ctx, joined, robots, stop));
   if (!config_.hierarchical() || config_.flat_candidate()) {
@@ -427,6 +428,10 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
   nothing_to_drive_ = goals == 0 && !tracker_.complete();
   chosen.json["tick"] = ctx.tick();
   chosen.json["why"] = why;
+  chosen.json["pieces"] = pieces;
+  std::size_t joining = 0;
+  for (std::size_t i = 0; i < cells.size(); ++i) joining += joined[i] && !cells[i] ? 1 : 0;
+  chosen.json["joining_cells"] = joining;
   divisions_.push_back(std::move(chosen.json));
   std::fprintf(stderr, "gcs: cover division (%s) at tick %u: %s\n", why, ctx.tick(), chosen.summary.c_str());
   return chosen.routes;

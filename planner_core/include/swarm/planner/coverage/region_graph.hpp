@@ -62,8 +62,9 @@ struct RegionGraph {
 // then the nearest to all that, and so on; pieces no Free path reaches stay apart. Robots standing
 // in a one-cell door and just behind it leave the cells still to cover in two pieces, the room and
 // the rest; a division grows its regions from the robots' pieces, so a piece left apart would be
-// nobody's to drive.
-[[nodiscard]] std::vector<std::uint8_t> join_pieces(const OccupancyGrid& map, std::vector<std::uint8_t> mask);
+// nobody's to drive. `pieces`, if given, receives the number of pieces the mask had.
+[[nodiscard]] std::vector<std::uint8_t> join_pieces(const OccupancyGrid& map, std::vector<std::uint8_t> mask,
+                                                    int* pieces = nullptr);
 
 // A grid of the same size and geometry as `map` whose Free cells are the cells with mask[i] != 0
 // that are Free in `map` (an empty mask = every Free cell); everything else is Occupied.
