@@ -74,7 +74,8 @@ constexpr int kSecondPlanTicks = 4;
 // setting off the tick after the robots it waits on have gone, docs/traffic.md; the mean over
 // draws of the routes' arrivals, which link jitter and loss spread; and when its routes miss cells
 // to cover, the second division and plan those wait for once every route is driven:
-// kSecondPlanTicks and the way from the nearest route's end to the farthest of them); the cells
+// kSecondPlanTicks, the way from the nearest route's end to the farthest of them and an even share
+// of them per robot, which a second plan cannot beat); the cells
 // missed; the steps the plan takes (the longest route plus whatever the robots wait or step aside
 // for one another); its moves onto cells of another group's part; the moves of all its routes.
 // Its longest route and the estimate's range over the draws are kept to show (they break the
@@ -124,9 +125,11 @@ DriveCost drive_cost(const std::vector<std::vector<Cell>>& routes, const std::ve
     const std::vector<int> moves = planner::step_distances(map, ends, planner::MotionModel::four());
     int farthest = 0;
     for (const std::size_t i : missed) farthest = std::max(farthest, moves[i]);
-    c.driven += kSecondPlanTicks + farthest;
-    c.fastest += kSecondPlanTicks + farthest;
-    c.slowest += kSecondPlanTicks + farthest;
+    const std::size_t robots = std::max<std::size_t>(ends.size(), 1);
+    const int share = static_cast<int>((missed.size() + robots - 1) / robots);
+    c.driven += kSecondPlanTicks + farthest + share;
+    c.fastest += kSecondPlanTicks + farthest + share;
+    c.slowest += kSecondPlanTicks + farthest + share;
   }
   return c;
 }
@@ -390,15 +393,21 @@ std::vector<std::vector<Cell>> CoverGcsTask::divide(const GcsContext& ctx, const
   // can lie far from the group's other robots, while this one starts every region at its robot),
   // the tours (few cells left; one from each of `tour_seeds` seeds, every other one planning the
   // members' later start in). The one cheapest to drive (DriveCost) is driven.
-  // The divisions take the cells that join the set's pieces too (robots standing in a one-cell
-  // door split off the room behind it, which a division would give to a robot whose route never
-  // leaves its own piece); the tours need only the cells to cover, and the costs count those.
+  // When the cells lie in pieces (robots standing in a one-cell door split off the room behind
+  // it), a division of them as they lie may give a piece to a robot whose route never leaves its
+  // own, and those cells wait for a second plan; each division is made of them joined into one
+  // piece too ("leaders-joined", "robots-joined": the joining cells are revisits, not targets),
+  // and the costs, which count only the cells to cover, choose.
   int pieces = 0;
   const std::vector<std::uint8_t> joined = planner::join_pieces(known_, cells, &pieces);
   std::vector<std::pair<std::string, Division>> candidates;
-  if (config_.hierarchical()) candidates.emplace_back("leaders", divide_among_groups(ctx, joined, robots, stop));
+  if (config_.hierarchical()) {
+    candidates.emplace_back("leaders", divide_among_groups(ctx, cells, robots, stop));
+    if (pieces > 1) candidates.emplace_back("leaders-joined", divide_among_groups(ctx, joined, robots, stop));
+  }
   if (!config_.hierarchical() || config_.flat_candidate()) {
-    candidates.emplace_back("robots", divide_among_robots(ctx, joined, robots, stop));
+    candidates.emplace_back("robots", divide_among_robots(ctx, cells, robots, stop));
+    if (pieces > 1) candidates.emplace_back("robots-joined", divide_among_robots(ctx, joined, robots, stop));
   }
   // The tours from each seed are a candidate each: "tours", then "tours-2", "tours-3", ...
   for (std::uint32_t v = 0; config_.tour_candidate_cells() > 0 && v < std::max(1u, config_.tour_seeds()); ++v) {
