@@ -16,6 +16,7 @@ packages=(
   debootstrap  # deploy/base-image.sh: the Debian base image where no registry is reachable
   libwebsocketpp-dev libasio-dev  # swarm view: its HTTP and WebSocket server (header-only)
   chromium  # the viewer's page tests: headless screenshots
+  python3  # maps/generate.py and maps/office.py (standard library only), tests/repo's office plan
 )
 
 missing=()
