@@ -21,6 +21,11 @@ constexpr std::size_t kMaxTableCells = std::size_t{64} << 20;
 constexpr int kRescuePolls = 512;
 }  // namespace
 
+int rescue_polls(std::size_t robots) {
+  const std::size_t r = std::max<std::size_t>(robots, 1);
+  return static_cast<int>(std::clamp<std::size_t>(kRescueConfigEntries / (64 * r), 1, kRescuePolls));
+}
+
 Planner::Planner(OccupancyGrid map, MotionModel motion, Config config)
     : map_(std::move(map)),
       motion_(motion),
@@ -422,24 +427,32 @@ bool Planner::plan_rescue(const std::vector<Agent>& agents, const std::vector<in
   // The region: the passable cells within `radius` moves of a stalled robot (wider after each
   // failure), as a graph under the robots' motion model (4- or 8-connected), so that LaCAM moves
   // the robots as PIBT does. Its robots are planned in it; the others keep out of it meanwhile.
+  // LaCAM keeps a distance table over the region for each of its robots, so the region stops
+  // growing (nearest cells first) once cells x robots reach kRescueTableEntries.
   const int radius = kRescueRadius << std::min(failed_in_a_row_, 12);
   std::vector<int> depth(map_.size(), -1);
   std::vector<int> cell_of;  // the region's cells, in the order they were reached
+  std::size_t robots = 0;    // the robots standing in it that may move
   for (const int a : stalled) {
     const int c = now_[static_cast<std::size_t>(a)];
     if (depth[static_cast<std::size_t>(c)] < 0) {
       depth[static_cast<std::size_t>(c)] = 0;
       cell_of.push_back(c);
+      ++robots;
     }
   }
-  for (std::size_t head = 0; head < cell_of.size(); ++head) {
+  bool full = false;
+  for (std::size_t head = 0; head < cell_of.size() && !full; ++head) {
     const int c = cell_of[head];
     if (depth[static_cast<std::size_t>(c)] >= radius) continue;
     motion_.for_each_neighbour(map_, map_.cell_of(c), [&](Cell nc, double) {
       const int ni = map_.index(nc);
-      if (!passable(ni) || depth[static_cast<std::size_t>(ni)] >= 0) return;
+      if (full || !passable(ni) || depth[static_cast<std::size_t>(ni)] >= 0) return;
       depth[static_cast<std::size_t>(ni)] = depth[static_cast<std::size_t>(c)] + 1;
       cell_of.push_back(ni);
+      const int who = on_now_[static_cast<std::size_t>(ni)];
+      if (who >= 0 && !agents[static_cast<std::size_t>(who)].fixed) ++robots;
+      full = (cell_of.size() + 1) * robots > kRescueTableEntries;
     });
   }
   std::vector<int> vertex_of(map_.size(), -1);
@@ -498,7 +511,8 @@ bool Planner::plan_rescue(const std::vector<Agent>& agents, const std::vector<in
   cfg.lacam.seed = mix_seed({config_.seed, steps_planned_});
   int polls = 0;
   mapf::StopCondition stop;
-  stop.predicate = [&polls] { return ++polls > kRescuePolls; };
+  const int budget = rescue_polls(planned.size());
+  stop.predicate = [&polls, budget] { return ++polls > budget; };
   const mapf::Result r = mapf::solve(in, cfg, stop);
   if (r.status != mapf::Status::Solved) return false;
   rescue_.assign(agents.size(), {});

@@ -175,10 +175,14 @@ bool MapfGcsTask::time_to_extend(const GcsContext& ctx) const {
   // The leading robot's time in the plan, as reported.
   int lead = 0;
   for (std::size_t k = 0; k < planned_.size(); ++k) lead = std::max(lead, adg_.planned_time[k][progress_[k]]);
-  // The window must reach the robots before the leader runs out: half a window ahead, plus the
-  // time its progress took to come and the order takes to reach the members.
+  // The window must reach the robots before the leading robot runs out: half a window ahead, plus
+  // the age of its progress (its leader saw it in the clock and reported it over the leader<->GCS
+  // link) and the time the order takes to reach the members (leaders, then members). Member<->leader
+  // delay counts once: a plan grown further ahead is one a new round's waypoints wait behind.
+  const comm::LinkTable& links = ctx.setup.links;
+  const auto age = static_cast<int>(comm::last_arrival_tick(links[comm::LinkClass::LeaderGcs], ctx.tick()) - ctx.tick()) + 1;
   const auto trip = static_cast<int>(start_tick(ctx) - ctx.tick());
-  return lead + window_ / 2 + 2 * trip >= end;
+  return lead + window_ / 2 + age + trip >= end;
 }
 
 void MapfGcsTask::extend_window(GcsContext& ctx) {

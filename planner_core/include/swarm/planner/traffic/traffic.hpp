@@ -51,6 +51,16 @@
 
 namespace swarm::planner::traffic {
 
+// A rescue's memory is capped, so that one among 1,000 robots on a large map cannot take
+// gigabytes: its region stops growing once its cells times its robots reach kRescueTableEntries
+// (LaCAM's distance table per robot, 4 bytes an entry: 128 MB), and LaCAM's search, which may keep
+// a configuration of four numbers a robot at each of its steps, stops after rescue_polls(robots)
+// polls (one per 64 steps), 512 at most: kRescueConfigEntries robots' states in all (about 16
+// bytes each: 128 MB). A count, not a time, so that a run stays the same under any load.
+inline constexpr std::size_t kRescueTableEntries = std::size_t{32} << 20;
+inline constexpr std::size_t kRescueConfigEntries = std::size_t{8} << 20;
+int rescue_polls(std::size_t robots);
+
 struct Agent {
   Cell at;
   std::vector<Cell> goals;  // to reach in this order; empty: none
@@ -98,7 +108,7 @@ class Planner {
   static constexpr int kNoProgressSteps = 16;
   static constexpr int kStallSteps = 128;
   // A rescue's region: the cells within this many moves of a stalled robot, twice as many after
-  // each rescue in a row that failed (up to 2^12 times: the whole of any map).
+  // each rescue in a row that failed (up to 2^12 times, or the memory cap above).
   static constexpr int kRescueRadius = 8;
 
   static constexpr int kUnreachable = 1 << 29;
