@@ -485,20 +485,20 @@ INSTANTIATE_TEST_SUITE_P(Maps, TrafficOnMap,
                            return n;
                          });
 
-}  // namespace
-}  // namespace swarm::planner::traffic
-
 // A rescue's search is capped by the robots it plans: 512 polls (LaCAM's budget) up to 256 robots,
 // fewer beyond, so that 1,000 robots' configurations stay within kRescueConfigEntries.
 TEST(Traffic, ARescuesSearchBudgetShrinksWithItsRobots) {
-  EXPECT_EQ(swarm::planner::traffic::rescue_polls(0), 512);
-  EXPECT_EQ(swarm::planner::traffic::rescue_polls(9), 512);
-  EXPECT_EQ(swarm::planner::traffic::rescue_polls(256), 512);
-  EXPECT_EQ(swarm::planner::traffic::rescue_polls(257), 510);
-  EXPECT_EQ(swarm::planner::traffic::rescue_polls(1000), 131);
-  EXPECT_EQ(swarm::planner::traffic::rescue_polls(std::size_t{1} << 30), 1);
+  EXPECT_EQ(rescue_polls(0), 512);
+  EXPECT_EQ(rescue_polls(9), 512);
+  EXPECT_EQ(rescue_polls(256), 512);
+  EXPECT_EQ(rescue_polls(257), 510);
+  EXPECT_EQ(rescue_polls(1000), 131);
+  EXPECT_EQ(rescue_polls(std::size_t{1} << 30), 1);
   for (std::size_t robots = 1; robots <= 4096; robots *= 2) {
-    EXPECT_LE(static_cast<std::size_t>(swarm::planner::traffic::rescue_polls(robots)) * 64 * robots,
-              std::max(swarm::planner::traffic::kRescueConfigEntries, 64 * robots));
+    EXPECT_LE(static_cast<std::size_t>(rescue_polls(robots)) * 64 * robots,
+              std::max(kRescueConfigEntries, 64 * robots));
   }
 }
+
+}  // namespace
+}  // namespace swarm::planner::traffic
