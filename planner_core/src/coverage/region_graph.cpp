@@ -102,10 +102,9 @@ std::vector<std::uint8_t> join_pieces(const OccupancyGrid& map, std::vector<std:
     piece[static_cast<std::size_t>(free.index_of(set.cells[static_cast<std::size_t>(i)]))] = piece_of_set_cell[i];
     ++size[static_cast<std::size_t>(piece_of_set_cell[i])];
   }
-  std::vector<std::uint8_t> joined(static_cast<std::size_t>(count), 0);
-  joined[static_cast<std::size_t>(std::max_element(size.begin(), size.end()) - size.begin())] = 1;
+  const int largest = static_cast<int>(std::max_element(size.begin(), size.end()) - size.begin());
   std::vector<std::uint8_t> in_whole(static_cast<std::size_t>(free.size()), 0);  // the joined pieces and paths
-  for (int c = 0; c < free.size(); ++c) in_whole[c] = piece[c] >= 0 && joined[piece[c]];
+  for (int c = 0; c < free.size(); ++c) in_whole[c] = piece[c] == largest;
   std::vector<int> parent(static_cast<std::size_t>(free.size()));
   std::vector<int> queue;
   for (int left = count - 1; left > 0; --left) {
@@ -131,7 +130,6 @@ std::vector<std::uint8_t> join_pieces(const OccupancyGrid& map, std::vector<std:
     }
     if (reached < 0) break;  // the rest no Free path reaches
     const int p = piece[reached];
-    joined[p] = 1;
     for (int c = 0; c < free.size(); ++c) in_whole[c] = in_whole[c] || piece[c] == p;
     for (int c = parent[reached]; c >= 0 && !in_whole[c]; c = parent[c]) {
       in_whole[c] = 1;

@@ -127,9 +127,10 @@ DriveCost drive_cost(const std::vector<std::vector<Cell>>& routes, const std::ve
     for (const std::size_t i : missed) farthest = std::max(farthest, moves[i]);
     const std::size_t robots = std::max<std::size_t>(ends.size(), 1);
     const int share = static_cast<int>((missed.size() + robots - 1) / robots);
-    c.driven += kSecondPlanTicks + farthest + share;
-    c.fastest += kSecondPlanTicks + farthest + share;
-    c.slowest += kSecondPlanTicks + farthest + share;
+    const int second_plan = kSecondPlanTicks + farthest + share;
+    c.driven += second_plan;
+    c.fastest += second_plan;
+    c.slowest += second_plan;
   }
   return c;
 }
