@@ -107,6 +107,7 @@ msgs::Route route_msg(const task::Route& r, std::uint32_t phase, comm::AgentId r
   m.pick_steps(r.pick_steps);
   m.drop_steps(r.drop_steps);
   m.start_tick(r.start_tick);
+  m.replaces(r.replaces);
   return m;
 }
 

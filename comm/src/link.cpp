@@ -65,6 +65,13 @@ std::uint32_t last_arrival_tick(const LinkParams& p, std::uint32_t tick) {
   return tick + 1 + p.delay_ticks + p.jitter_ticks;
 }
 
+std::uint32_t sure_arrival_tick(const LinkParams& p, std::uint32_t tick) {
+  std::uint32_t repeats = 0;
+  // Each transmission is lost with probability `loss`: repeats + 1 of them all lost, loss^(repeats + 1).
+  for (double late = p.loss; late > kLateOdds && repeats < 64; late *= p.loss) ++repeats;
+  return last_arrival_tick(p, tick) + repeats * p.retransmit_ticks;
+}
+
 bool link_drops(const LinkTable& table, LinkClass link, std::uint16_t sender, std::uint64_t topic_hash,
                 std::uint32_t seq, std::uint16_t receiver, std::uint32_t attempt) {
   const double loss = table[link].loss;

@@ -31,7 +31,8 @@ std::vector<comm::AgentId> leaders_except_self(const comm::Topology& t, int grou
 }
 
 void follow_route(RobotAgent& robot, const msgs::Route& r) {
-  robot.follow(r.route_id(), app::from_xy(r.path_xy()), r.release(), r.pick_steps(), r.drop_steps(), r.start_tick());
+  robot.follow(r.route_id(), app::from_xy(r.path_xy()), r.release(), r.pick_steps(), r.drop_steps(), r.start_tick(),
+               r.replaces());
 }
 
 MemberNode::MemberNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, int group, int index,

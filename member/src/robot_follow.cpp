@@ -10,8 +10,13 @@ using planner::Cell;
 using planner::RouteState;
 
 void RobotAgent::follow(std::uint32_t id, std::vector<Cell> cells, std::uint32_t release,
-                        std::vector<std::uint32_t> picks, std::vector<std::uint32_t> drops, std::uint32_t start_tick) {
+                        std::vector<std::uint32_t> picks, std::vector<std::uint32_t> drops, std::uint32_t start_tick,
+                        std::uint32_t replaces) {
   if (id < newest_route_) return;  // overtaken by a newer one on the way (link jitter, a resend)
+  if (replaces != 0 && follow_ && replaces <= follow_progress_.id && follow_progress_.id < id &&
+      take_cut(id, cells, release, picks, drops)) {
+    return;
+  }
   if (follow_ && id == follow_progress_.id && !follow_->cells.empty() && !cells.empty()) {
     Follow& f = *follow_;
     const std::size_t common = std::min(cells.size(), f.cells.size());
@@ -43,6 +48,34 @@ void RobotAgent::follow(std::uint32_t id, std::vector<Cell> cells, std::uint32_t
   f.start_tick = start_tick;
   follow_ = std::move(f);
   follow_progress_ = {id, 0, RouteState::Active};
+}
+
+bool RobotAgent::take_cut(std::uint32_t id, std::vector<Cell>& cells, std::uint32_t release,
+                          std::vector<std::uint32_t>& picks, std::vector<std::uint32_t>& drops) {
+  Follow& f = *follow_;
+  // As far as the robot may have got: where it is, the part the simulator drives, its release
+  // (which may lie past the cells it has, in a window still on its way).
+  const std::size_t reach = std::max({static_cast<std::size_t>(follow_progress_.step), static_cast<std::size_t>(f.sent_to),
+                                      static_cast<std::size_t>(f.release)}) + 1;
+  const std::size_t common = std::min(reach, f.cells.size());
+  if (cells.size() < reach || f.cells.size() < common ||
+      !std::equal(f.cells.begin(), f.cells.begin() + static_cast<std::ptrdiff_t>(common), cells.begin())) {
+    return false;
+  }
+  f.cells = std::move(cells);
+  f.picks = std::move(picks);
+  f.drops = std::move(drops);
+  f.release = std::max(f.release, release);
+  for (const auto& [route, up_to] : early_releases_) {
+    if (route == id) f.release = std::max(f.release, up_to);
+  }
+  std::erase_if(early_releases_, [id](const auto& r) { return r.first == id; });
+  newest_route_ = id;
+  follow_progress_.id = id;
+  if (follow_progress_.state == RouteState::Finished && follow_progress_.step + 1 < f.cells.size()) {
+    follow_progress_.state = RouteState::Active;
+  }
+  return true;
 }
 
 void RobotAgent::release(std::uint32_t id, std::uint32_t up_to) {

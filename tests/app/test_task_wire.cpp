@@ -100,6 +100,7 @@ TEST(TaskWire, ARouteCarriesEveryFieldAndTheNodesNumbering) {
   r.pick_steps = {1};
   r.drop_steps = {2};
   r.start_tick = 30;
+  r.replaces = 97;
   const msgs::Route m = route_msg(r, 2, 5, 99);
   EXPECT_EQ(m.phase(), 2u);
   EXPECT_EQ(m.robot(), 5);
@@ -109,6 +110,7 @@ TEST(TaskWire, ARouteCarriesEveryFieldAndTheNodesNumbering) {
   EXPECT_EQ(m.pick_steps(), r.pick_steps);
   EXPECT_EQ(m.drop_steps(), r.drop_steps);
   EXPECT_EQ(m.start_tick(), 30u);
+  EXPECT_EQ(m.replaces(), 97u);
 }
 
 TEST(TaskWire, AReleaseCarriesItsWatchAndAWatchThatDoesNotFitIsRefused) {

@@ -111,19 +111,19 @@ nlohmann::json warehouse_after_exploration(const std::string& cover_settings) {
 // robots and the tours are made too, each rehearsed through the traffic layer, and the one
 // cheapest to drive is driven: the fewest estimated ticks, then cells that no route passes, then
 // planned steps, then moves onto other groups' parts, then moves in all. Seed 2: the cells left
-// lie in two pieces. The groups' division of them as they lie (19 planned steps) leaves a cell
-// off every route, so its estimate grows by a second plan: 4 ticks, the 4 moves from the nearest
-// route's end to that cell and a tick for the one cell. The robots' (24 steps) passes every cell
-// but weaves: 31 ticks. Both divisions of the pieces joined by one cell (region_graph.hpp,
-// join_pieces) pass every cell in 18 planned steps, estimated at 19 ticks. The tours pass every
-// cell; of the four solved, the third (16 steps) is estimated at 17 ticks and driven, and the
-// drive takes that from the routes' arrival at the leaders.
+// lie in two pieces. The groups' division of them as they lie (18 planned steps) leaves a cell
+// off every route, so its estimate grows by a second plan to 32 ticks. The robots' (24 steps)
+// passes every cell but weaves: 29 ticks. The divisions of the pieces joined by one cell
+// (region_graph.hpp, join_pieces) pass every cell, the robots' in 18 planned steps estimated at 19
+// ticks. The tours pass every cell; three of the four solved plan 15 steps, estimated at 17 ticks,
+// and the fourth, with the fewest moves onto other groups' parts, is driven; the drive takes that
+// from the routes' arrival at the leaders.
 TEST(CoverTask, AfterExplorationTheDivisionCheaperToDriveIsDriven) {
   const auto m = warehouse_after_exploration("");
   const auto& cover = phase_named(m, "cover");
   const auto& division = cover["task"]["divisions"][0];
   const auto& compared = division["compared"];
-  for (const char* candidate : {"leaders", "robots", "leaders-joined", "robots-joined", "tours-3"}) {
+  for (const char* candidate : {"leaders", "robots", "leaders-joined", "robots-joined", "tours-4"}) {
     ASSERT_TRUE(compared.contains(candidate)) << candidate << ": " << division.dump(1);
   }
   const auto key = [&](const char* candidate) {
@@ -133,49 +133,52 @@ TEST(CoverTask, AfterExplorationTheDivisionCheaperToDriveIsDriven) {
   };
   const auto longest = [&](const char* candidate) { return compared[candidate]["longest_route_moves"].get<int>(); };
   // The DARP divisions' longest routes, balanced by work (cover.route_balance_rounds).
-  EXPECT_EQ(longest("leaders"), 19);
+  EXPECT_EQ(longest("leaders"), 16);
   EXPECT_EQ(longest("robots"), 20);
-  EXPECT_EQ(longest("leaders-joined"), 18);
+  EXPECT_EQ(longest("leaders-joined"), 19);
   EXPECT_EQ(longest("robots-joined"), 18);
-  EXPECT_EQ(longest("tours-3"), 16);
-  EXPECT_EQ(std::get<2>(key("leaders")), 19);
+  EXPECT_EQ(longest("tours-4"), 15);
+  EXPECT_EQ(std::get<2>(key("leaders")), 18);
   EXPECT_EQ(std::get<2>(key("robots")), 24);
-  EXPECT_EQ(std::get<2>(key("leaders-joined")), 18);
+  EXPECT_EQ(std::get<2>(key("leaders-joined")), 19);
   EXPECT_EQ(std::get<2>(key("robots-joined")), 18);
-  EXPECT_EQ(std::get<2>(key("tours-3")), 16);
+  EXPECT_EQ(std::get<2>(key("tours-4")), 15);
   // Driven by the dependency graph, each member setting off a tick after the leaders' robots (its
   // route's way from the leader) and each robot that follows another into a cell a tick after it
-  // left: the groups' 19 planned steps take 20 ticks (and the second plan 4 + 4 + 1), the joined
-  // divisions' 18 take 19, the tours' 16 take 17.
-  EXPECT_EQ(std::get<0>(key("leaders")), 20 + 4 + 4 + 1);
-  EXPECT_EQ(std::get<0>(key("robots")), 31);
-  EXPECT_EQ(std::get<0>(key("leaders-joined")), 19);
+  // left: the joined robots' division's 18 planned steps take 19 ticks, the tours' 15 take 17.
+  EXPECT_EQ(std::get<0>(key("leaders")), 32);
+  EXPECT_EQ(std::get<0>(key("robots")), 29);
+  EXPECT_EQ(std::get<0>(key("leaders-joined")), 21);
   EXPECT_EQ(std::get<0>(key("robots-joined")), 19);
-  EXPECT_EQ(std::get<0>(key("tours-3")), 17);
+  EXPECT_EQ(std::get<0>(key("tours-4")), 17);
   // With exact links the routes' arrivals are known: one draw, so no range.
-  EXPECT_EQ(compared["tours-3"]["estimated_ticks_range"], nlohmann::json::array({17, 17}));
+  EXPECT_EQ(compared["tours-4"]["estimated_ticks_range"], nlohmann::json::array({17, 17}));
   EXPECT_EQ(std::get<1>(key("leaders")), 1);
   EXPECT_EQ(std::get<1>(key("robots")), 0);
   EXPECT_EQ(std::get<1>(key("leaders-joined")), 0);
   EXPECT_EQ(std::get<1>(key("robots-joined")), 0);
   EXPECT_EQ(division["pieces"], 2) << division.dump(1);
   EXPECT_EQ(division["joining_cells"], 1) << division.dump(1);
-  for (const char* tours : {"tours", "tours-2", "tours-3", "tours-4"}) {
+  // The tours tie on ticks, cells and steps but for the first; the moves onto other groups' parts
+  // decide.
+  for (const char* tours : {"tours", "tours-2", "tours-3"}) {
     EXPECT_EQ(std::get<1>(key(tours)), 0) << tours;
-    if (std::string(tours) != "tours-3") EXPECT_LT(key("tours-3"), key(tours)) << tours;
+    EXPECT_LT(key("tours-4"), key(tours)) << tours;
   }
+  EXPECT_EQ(std::get<3>(key("tours-4")), 7);
+  EXPECT_EQ(std::get<3>(key("tours-3")), 11);
   for (const char* division_kind : {"leaders", "robots", "leaders-joined", "robots-joined"}) {
-    EXPECT_LT(key("tours-3"), key(division_kind)) << division_kind;
+    EXPECT_LT(key("tours-4"), key(division_kind)) << division_kind;
   }
-  EXPECT_EQ(division["driven"], "tours-3") << division.dump(1);
+  EXPECT_EQ(division["driven"], "tours-4") << division.dump(1);
   EXPECT_EQ(division["method"], "tours");
   // One plan covered everything: no second division for cells left.
   EXPECT_EQ(cover["task"]["divisions"].size(), 1u) << cover["task"]["divisions"].dump(1);
-  // Driven without a push aside: the busiest robot made its route's 16 moves; and the phase took
+  // Driven without a push aside: the busiest robot made its route's 15 moves; and the phase took
   // the estimate and the order's way to the leaders.
   int busiest = 0;
   for (const auto& [name, r] : cover["motion"]["per_robot"].items()) busiest = std::max(busiest, r["moves"].get<int>());
-  EXPECT_EQ(busiest, 16);
+  EXPECT_EQ(busiest, 15);
   EXPECT_EQ(cover["end_tick"].get<int>() - cover["start_tick"].get<int>(), 17 + 1);
 }
 
@@ -199,9 +202,9 @@ TEST(CoverTask, UnderLinkJitterEachCandidateIsEstimatedOverDrawsOfTheRoutesArriv
     EXPECT_LE(fastest, mean) << name;
     EXPECT_LE(mean, slowest) << name;
     EXPECT_LT(fastest, slowest) << name;  // the draws differ
-    // Never faster than with every route there at once: the plan's steps, and a tick per member's
-    // route at the least.
-    EXPECT_GE(fastest, c["planned_steps"].get<int>() + 1) << name;
+    // Never faster than with every route there at once: the plan's steps at the least (a tick more
+    // when the longest route is a member's, sent on by its leader; here it may be a leader's own).
+    EXPECT_GE(fastest, c["planned_steps"].get<int>()) << name;
     if (mean < lowest_mean) {
       lowest_mean = mean;
       lowest = name;
@@ -216,10 +219,10 @@ TEST(CoverTask, WithoutTheTourCandidateOnlyTheDivisionsAreCompared) {
   const auto m = warehouse_after_exploration("tour_candidate_cells: 0");
   const auto& division = phase_named(m, "cover")["task"]["divisions"][0];
   EXPECT_FALSE(division["compared"].contains("tours")) << division.dump(1);
-  // The cheapest of the four (the same as with the tours): the groups' division of the pieces
-  // joined, 19 estimated ticks (and fewer moves onto other groups' parts than the robots'
-  // joined one, also 19), against 29 and 31 for the cells as they lie.
-  EXPECT_EQ(division["driven"], "leaders-joined") << division.dump(1);
+  // The cheapest of the four (the same as with the tours): the robots' division of the pieces
+  // joined, 19 estimated ticks, against 21 for the groups' and 32 and 29 for the cells as they
+  // lie.
+  EXPECT_EQ(division["driven"], "robots-joined") << division.dump(1);
 }
 
 // A time limit past the clock's range is no limit: the divisions run as without one (it used to

@@ -423,6 +423,40 @@ TEST_F(RobotInACorridor, AReleaseIntoTheNextWindowIsKeptUntilTheRouteGrows) {
   EXPECT_EQ(s.path, (std::vector<Cell>{along(2), along(3), along(4)}));  // as the early release said
 }
 
+// A leader whose plan was cut short sends each changed route under a new id that replaces the
+// routes from one id on: the robot keeps its place and drives the new cells, whichever version comes
+// first; a version that differs where the robot may already have got (its release) is a new route;
+// an older version arriving later is ignored.
+TEST_F(RobotInACorridor, ARouteCutShortAndContinuedOtherwiseIsDrivenOnFromWhereItStands) {
+  robot.follow(7, {along(0), along(1), along(2), along(3), along(4)}, 2);
+  RobotAgent::Step s = tick(along(0), 0, planner::RouteState::Active);
+  ASSERT_TRUE(s.path_changed);
+  EXPECT_EQ(s.path, (std::vector<Cell>{along(0), along(1), along(2)}));
+  (void)tick(along(1), 1, planner::RouteState::Active);
+
+  // Differs at index 2, which the robot is released to: not a cut it may take.
+  RobotAgent before = robot;
+  before.follow(9, {along(0), along(1), along(0)}, 2, {}, {}, 0, 7);
+  EXPECT_EQ(before.following().id, 9u);
+  EXPECT_EQ(before.following().step, 0u);  // a new route, from its first cell
+
+  // Cut after index 2: the robot keeps its place and turns back there.
+  robot.follow(10, {along(0), along(1), along(2), along(1), along(0)}, 3, {}, {}, 0, 7);
+  EXPECT_EQ(robot.following().id, 10u);
+  EXPECT_EQ(robot.following().step, 1u);
+  s = tick(along(2), 2, planner::RouteState::Finished);
+  ASSERT_TRUE(s.path_changed);
+  EXPECT_EQ(s.path, (std::vector<Cell>{along(2), along(1)}));  // the new cells, as far as released
+  EXPECT_EQ(robot.following().step, 2u);
+
+  // A later version, grown, replaces the one followed; the version it grows, late, changes nothing.
+  robot.follow(11, {along(0), along(1), along(2), along(1), along(0)}, 4, {}, {}, 0, 7);
+  EXPECT_EQ(robot.following().id, 11u);
+  robot.follow(10, {along(0), along(1), along(2), along(1)}, 3, {}, {}, 0, 7);
+  EXPECT_EQ(robot.following().id, 11u);
+  EXPECT_EQ(robot.following().step, 2u);
+}
+
 // A route that does not start where the robot stands (its leader saw it a step back) is abandoned,
 // and the robot stops instead of driving on along the part of its last route still in the
 // simulator; its leader then routes it from where it stands.

@@ -137,6 +137,30 @@ TEST(ExploreTask, ThroughTheTrafficLayerANewRoundStopsNoRobot) {
   EXPECT_LE(traffic["repicks_held"].get<int>(), 1 + ticks / (gcs::MapfGcsTask::kPlanSteps - 2 * window)) << traffic.dump();
 }
 
+// A new round's waypoints follow from where the plan may be cut, not from its end: the limit no
+// robot is released past, which the GCS keeps just ahead of the robots. With member<->leader delay
+// and jitter every leader takes every cut (a robot already past it would make one drop it), and no
+// robot collides.
+TEST(ExploreTask, ThroughTheTrafficLayerANewRoundCutsThePlanAtTheLimit) {
+  swarm::test::FakeSwarm s(swarm::test::setup_from_text(
+      "map: 'maze1' groups: 3 robots_per_group: 3 max_ticks: 3000 "
+      "links { member_leader { delay_ticks: 3 jitter_ticks: 2 } } mission { phase { explore {} } }"));
+  const auto m = s.run_to_end();
+  ASSERT_TRUE(m["complete"].get<bool>()) << m["ended"];
+  const auto& p = swarm::test::phase_named(m, "explore");
+  swarm::test::expect_no_conflict(p);
+  const auto& traffic = p["task"]["traffic"];
+  const int cut = traffic["repicks_cut"].get<int>();
+  // Most rounds cut the plan (a round whose plan ends at the limit, or that keeps a waypoint
+  // reached just past it, continues it from its end).
+  EXPECT_GE(2 * cut, traffic["repicks_continued"].get<int>()) << traffic.dump();
+  EXPECT_LE(cut, traffic["repicks_continued"].get<int>());
+  EXPECT_GT(traffic["steps_cut"].get<int>(), cut) << traffic.dump();  // more than a step each
+  for (const char* leader : {"leader-0", "leader-1", "leader-2"}) {
+    EXPECT_EQ(m["agents"][leader]["traffic"]["plans_cut"].get<int>(), cut) << leader;
+  }
+}
+
 // Late messages only make robots wait: with member<->leader delay and jitter, and with a member
 // and (in another run) a leader lost midway, exploration still ends without a conflict.
 TEST(ExploreTask, ThroughTheTrafficLayerWithDelayAndLossesNoRobotCollides) {

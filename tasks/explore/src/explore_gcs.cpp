@@ -166,7 +166,9 @@ void ExploreGcsTask::step(GcsContext& ctx) {
     version.mutable_map()->set_planning_map_tick(d.map_tick);  // names the map the round carries
     ctx.record.append(version);
   }
-  complete_ = d.complete;
+  // Done exploring, the robots may still be on their way: a rotation ordered goes first.
+  if (d.complete && drive_) drive_->wind_down();
+  complete_ = d.complete && !(drive_ && drive_->rotating(ctx.tick()));
 }
 
 ProgressLine ExploreGcsTask::progress(const GcsContext& ctx) const {

@@ -44,6 +44,7 @@ std::vector<Cell> MapfGcsTask::random_goals(const GcsContext& ctx) const {
 void MapfGcsTask::start(GcsContext& ctx) {
   known_ = map_given_ ? ctx.setup.given_map : ctx.fused.grid();
   start_tick_ = ctx.tick();
+  winding_down_ = false;
   if (window_ > 0) {
     goals_.assign(static_cast<std::size_t>(ctx.setup.topology.robots()), Cell{-1, -1});
   } else if (!pick_goals_) {
@@ -146,7 +147,13 @@ void MapfGcsTask::note_plan(GcsContext& ctx, const char* why, const planner::map
 
 void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res, std::optional<int> continues) {
   by_graph_ = config_.execution() != swarm::scenario::MAPF_EXECUTE_TIMED;
-  if (!continues) progress_.assign(res.paths.size(), 0);
+  if (!continues) {
+    progress_.assign(res.paths.size(), 0);
+    // A plan's first window is released whole (tasks/mapf/mapf_leader.hpp); a plan not made in
+    // windows has no other.
+    limit_ = 0;
+    for (const planner::mapf::Path& p : res.paths) limit_ = std::max(limit_, static_cast<std::uint32_t>(p.size() - 1));
+  }
   if (by_graph_) {
     // A grown plan keeps its steps' needs and its rotations' numbers (planner/mapf/adg.hpp).
     adg_ = planner::mapf::dependencies(res.paths);
@@ -166,7 +173,7 @@ void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res, s
     o.values = {kContinues, static_cast<std::int32_t>(chain_first_), *continues};
   } else if (config_.execution() == swarm::scenario::MAPF_EXECUTE_TIMED) {
     // One start tick for every robot: late enough for the order to reach every leader and its
-    // routes every member, with the configured delays and jitter (loss is not allowed for).
+    // routes every member, with the configured delays, jitter and loss.
     o.values.push_back(static_cast<std::int32_t>(start_tick(ctx)));
   }
   const auto from = static_cast<std::ptrdiff_t>(continues.value_or(0));
@@ -180,20 +187,26 @@ void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res, s
 }
 
 std::uint32_t MapfGcsTask::start_tick(const GcsContext& ctx) const {
-  // The order reaches the last leader by then, and the routes it forwards at once the last member.
+  // The order reaches the last leader by then, and the routes it forwards at once the last member,
+  // lost transmissions repeated: a robot that set off without the others would run into them.
   const comm::LinkTable& links = ctx.setup.links;
-  const std::uint32_t at_leaders = comm::last_arrival_tick(links[comm::LinkClass::LeaderGcs], ctx.tick());
-  return comm::last_arrival_tick(links[comm::LinkClass::MemberLeader], at_leaders);
+  const std::uint32_t at_leaders = comm::sure_arrival_tick(links[comm::LinkClass::LeaderGcs], ctx.tick());
+  return comm::sure_arrival_tick(links[comm::LinkClass::MemberLeader], at_leaders);
 }
 
 void MapfGcsTask::order_rotations(GcsContext& ctx) {
+  if (winding_down_) return;
   for (const int q : planner::mapf::ready_rotations(adg_, progress_)) {
     const auto qu = static_cast<std::size_t>(q);
     if (rotation_ordered_[qu]) continue;
+    // Not past the limit: the plan may be cut there.
+    const planner::mapf::Need& m = adg_.rotations[qu].front();
+    if (static_cast<std::uint32_t>(adg_.planned_time[static_cast<std::size_t>(m.robot)][m.step]) > limit_) continue;
     rotation_ordered_[qu] = true;
     ++rotations_ordered_;
-    send_order(ctx, task::OrderKind::Rotate,
-               {static_cast<std::int32_t>(seq_), q, static_cast<std::int32_t>(start_tick(ctx))});
+    const std::uint32_t at = start_tick(ctx);
+    last_rotation_tick_ = std::max(last_rotation_tick_, at);
+    send_order(ctx, task::OrderKind::Rotate, {static_cast<std::int32_t>(seq_), q, static_cast<std::int32_t>(at)});
   }
 }
 
@@ -227,8 +240,9 @@ void MapfGcsTask::on_report(const task::Report& r, GcsContext&) {
 
 void MapfGcsTask::step(GcsContext& ctx) {
   const comm::Topology& t = ctx.setup.topology;
-  if (!relay_.empty()) {
-    std::vector<std::int32_t> values{static_cast<std::int32_t>(seq_)};
+  const bool raised = window_ > 0 && raise_limit(ctx);
+  if (!relay_.empty() || raised) {
+    std::vector<std::int32_t> values{static_cast<std::int32_t>(seq_), static_cast<std::int32_t>(limit_)};
     values.insert(values.end(), relay_.begin(), relay_.end());
     relay_.clear();
     send_order(ctx, task::OrderKind::Progress, std::move(values));
@@ -305,6 +319,8 @@ nlohmann::json MapfGcsTask::numbers() const {
             {"windows_continued", windows_continued_},
             {"repicks_continued", repicks_continued_},
             {"repicks_held", repicks_held_},
+            {"repicks_cut", plans_cut_},
+            {"steps_cut", steps_cut_},
             {"goals_done", goals_done_},
             {"goals_skipped", goals_skipped_},
             {"longest_wait_steps", traffic_ ? traffic_->longest_wait() : 0},

@@ -35,6 +35,9 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
   seq_ = o.seq;
   chain_first_ = o.seq;
   have_plan_ = true;
+  // Its first window is released whole; the GCS's relays raise the limit from there.
+  limit_ = 0;
+  for (const planner::mapf::Path& p : paths) limit_ = std::max(limit_, static_cast<std::uint32_t>(p.size() - 1));
   holding_ = false;
   stopping_.clear();
   stopped_all_ = false;
@@ -61,6 +64,7 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
   watched_.assign(n, {});
   route_id_.assign(n, 0);
   route_start_.assign(n, 0);
+  first_route_.assign(n, 0);
   base_.assign(n, 0);
   own_.clear();
   report_.clear();
@@ -76,8 +80,7 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
   // timed, all of it from the start tick).
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
-    released_[ku] = timed_ ? static_cast<std::uint32_t>(routes_[ku].size() - 1)
-                           : planner::mapf::releasable(adg_, k, progress_, planner::mapf::Rotations::Held);
+    released_[ku] = timed_ ? static_cast<std::uint32_t>(routes_[ku].size() - 1) : releasable(k);
     task::Route m;
     m.path = routes_[ku];
     m.release = released_[ku];
@@ -86,6 +89,7 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
     if (timed_ && !o.values.empty()) m.start_tick = static_cast<std::uint32_t>(o.values[0]);
     route_id_[ku] = ctx.out.route(index_of_[ku], m);
     route_start_[ku] = m.start_tick;
+    first_route_[ku] = route_id_[ku];
     note(k);
   }
 }
@@ -137,8 +141,15 @@ void MapfGroupTask::on_order(const task::Order& o, GroupContext& ctx) {
   release(ctx);
 }
 
+std::uint32_t MapfGroupTask::releasable(int k) const {
+  return std::min(planner::mapf::releasable(adg_, k, progress_, planner::mapf::Rotations::Held),
+                  planner::mapf::step_at(adg_, k, static_cast<int>(limit_)));
+}
+
 void MapfGroupTask::take_progress(const std::vector<std::int32_t>& v) {
-  for (std::size_t i = 1; i + 2 < v.size(); i += 3) {
+  if (v.size() < 2) return;
+  if (v[1] > 0) limit_ = std::max(limit_, static_cast<std::uint32_t>(v[1]));
+  for (std::size_t i = 2; i + 2 < v.size(); i += 3) {
     const auto it = std::find(robot_of_.begin(), robot_of_.end(), v[i]);
     if (it == robot_of_.end()) continue;
     const auto k = static_cast<std::size_t>(it - robot_of_.begin());
@@ -176,9 +187,27 @@ void MapfGroupTask::take_waiting(GroupContext& ctx) {
 bool MapfGroupTask::extend_plan(const task::Order& o, GroupContext& ctx) {
   const auto from = static_cast<std::size_t>(o.values[2]);
   if (timed_ || o.routes.size() != paths_.size()) return false;
+  // A window from before the plan's end cuts it there: the GCS cuts no earlier than the limit it
+  // has sent (take_progress), which no robot is released past.
   std::vector<planner::mapf::Path> paths = paths_;
+  const bool cut = !paths.empty() && from + 1 < paths.front().size();
   for (std::size_t k = 0; k < paths.size(); ++k) {
     const task::PlannedRoute& r = o.routes[k];
+    if (cut && from < paths[k].size()) paths[k].resize(from + 1);
+    const std::uint32_t kept = planner::mapf::step_at(adg_, static_cast<int>(k), static_cast<int>(from));
+    if (cut && index_of_[k] < 0) {
+      // Another group's robot may be past the cut already, on its new route (this window came
+      // late): what the old route says of it past the cut means nothing. Counted at the cut, it is
+      // late, never early, until its leader's reports and the clock bring it on.
+      progress_[k] = std::min(progress_[k], kept);
+      released_[k] = std::min(released_[k], kept);
+    }
+    if (cut && std::max(progress_[k], released_[k]) > kept) {
+      std::fprintf(stderr, "leader-%d: mapf window %u cuts plan %u at time %zu, step %u of robot %d, which is at step %u "
+                   "released to %u (limit %u); dropped\n", group_, o.seq, seq_, from, kept, robot_of_[k], progress_[k],
+                   released_[k], limit_);
+      return false;
+    }
     if (r.robot != robot_of_[k] || r.path.empty() || paths[k].size() != from + 1 || r.path.front() != paths[k].back()) {
       std::fprintf(stderr, "leader-%d: mapf window %u does not continue plan %u; dropped\n", group_, o.seq, seq_);
       return false;
@@ -192,16 +221,22 @@ bool MapfGroupTask::extend_plan(const task::Order& o, GroupContext& ctx) {
     std::fprintf(stderr, "leader-%d: mapf window %u dropped: %s\n", group_, o.seq, e.what());
     return false;  // the plan stays as it was
   }
+  // The acts past the cut go with the steps they were on.
+  for (std::size_t k = 0; cut && k < paths_.size(); ++k) {
+    const std::uint32_t kept = planner::mapf::step_at(adg_, static_cast<int>(k), static_cast<int>(from));
+    std::erase_if(picks_[k], [kept](std::uint32_t s) { return s > kept; });
+    std::erase_if(drops_[k], [kept](std::uint32_t s) { return s > kept; });
+  }
+  const std::vector<std::vector<planner::Cell>> had = routes_;
   adg_ = std::move(grown);
-  // The grown plan's old steps keep their needs (planner/mapf/adg.hpp): progress and releases
-  // carry over.
+  // The grown plan's old steps keep their needs (planner/mapf/adg.hpp), and so do a cut plan's up
+  // to the cut: progress and releases carry over.
   paths_ = std::move(paths);
   seq_ = o.seq;
-  std::vector<std::size_t> had(routes_.size());
-  for (std::size_t k = 0; k < routes_.size(); ++k) had[k] = routes_[k].size();
   routes_ = adg_.routes;
   reported_done_ = reported_held_ = false;
   ++plans_continued_;
+  plans_cut_ += cut ? 1 : 0;
   for (std::size_t k = 0; k < paths_.size(); ++k) {
     const auto to_route = [&](std::uint32_t time) {
       return planner::mapf::step_at(adg_, static_cast<int>(k), static_cast<int>(from + time));
@@ -210,16 +245,22 @@ bool MapfGroupTask::extend_plan(const task::Order& o, GroupContext& ctx) {
     for (const std::uint32_t s : o.routes[k].drop_steps) drops_[k].push_back(to_route(s));
   }
   if (adopting_ || holding_ || !stopping_.empty() || stopped_all_) return true;
-  // Each robot gets its route again under the same id, longer: it keeps its place and drives on.
+  // Each robot gets its route again, longer under the same id, or cut and continued under a new one
+  // that replaces it: it keeps its place and drives on.
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
     // A robot that only waits in the new window keeps its route as it is.
-    if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])] || routes_[ku].size() == had[ku]) continue;
-    released_[ku] = std::max(released_[ku], planner::mapf::releasable(adg_, k, progress_, planner::mapf::Rotations::Held));
+    if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])] || routes_[ku] == had[ku]) continue;
+    const bool grown = routes_[ku].size() > had[ku].size() &&
+                       std::equal(had[ku].begin(), had[ku].end(), routes_[ku].begin());
+    released_[ku] = std::max(released_[ku], releasable(k));
     task::Route m = route_from(ku, base_[ku]);
-    m.grows = route_id_[ku];
+    if (grown) m.grows = route_id_[ku];
+    // Any version may come first (jitter): each replaces every earlier one from the same step on.
+    m.replaces = first_route_[ku];
     m.start_tick = route_start_[ku];
-    ctx.out.route(index_of_[ku], m);
+    route_id_[ku] = ctx.out.route(index_of_[ku], m);
+    watched_[ku].clear();
     note(k);
   }
   return true;
@@ -289,12 +330,24 @@ void MapfGroupTask::release(GroupContext& ctx) {
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
     if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
-    const std::uint32_t may = planner::mapf::releasable(adg_, k, progress_, planner::mapf::Rotations::Held);
+    const std::uint32_t may = releasable(k);
     // A member judges the steps after its release itself, from the robots' cells in the clock,
     // and so sets off in the tick the robots it waits on have gone, not once this release has
     // reached it. The leader's own robot needs no watch: its leader looks every tick.
     planner::mapf::Watch watch;
-    if (index_of_[ku] != ctx.self) watch = planner::mapf::watch_release(adg_, k, progress_, kWatchGates);
+    if (index_of_[ku] != ctx.self) {
+      watch = planner::mapf::watch_release(adg_, k, progress_, kWatchGates);
+      // Not past the limit either: the first gate beyond it opens only as far as the limit (its
+      // needs hold those of every step before it).
+      const std::uint32_t cap = planner::mapf::step_at(adg_, k, static_cast<int>(limit_));
+      for (std::size_t g = 0; g < watch.gates.size(); ++g) {
+        if (watch.gates[g].release <= cap) continue;
+        watch.gates[g].release = cap;
+        watch.gates.resize(g + 1);
+        if (g > 0 && watch.gates[g - 1].release >= cap) watch.gates.pop_back();
+        break;
+      }
+    }
     const bool further = may > released_[ku];
     released_[ku] = std::max(released_[ku], may);
     // Gates the release has passed say nothing new (each gate holds the needs of those before it).
@@ -327,6 +380,7 @@ void MapfGroupTask::rotate(int q, std::uint32_t tick, GroupContext& ctx) {
     r.start_tick = tick;
     route_id_[ku] = ctx.out.route(index_of_[ku], r);
     route_start_[ku] = tick;
+    first_route_[ku] = route_id_[ku];
     note(static_cast<int>(ku));
   }
 }
@@ -384,6 +438,7 @@ void MapfGroupTask::gcs_back(GroupContext&) {
 nlohmann::json MapfGroupTask::numbers() const {
   return {{"plans", plans_taken_},
           {"windows_continued", plans_continued_},
+          {"plans_cut", plans_cut_},
           {"releases_sent", releases_sent_},
           {"watches_sent", watches_sent_}};
 }

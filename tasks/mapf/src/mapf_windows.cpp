@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <optional>
+#include <tuple>
 #include <utility>
 
 #include "swarm/config/task_config.hpp"
@@ -176,19 +178,98 @@ bool MapfGcsTask::time_to_extend(const GcsContext& ctx) const {
   int lead = 0;
   for (std::size_t k = 0; k < planned_.size(); ++k) lead = std::max(lead, adg_.planned_time[k][progress_[k]]);
   // The window must reach the robots before the leading robot runs out: half a window ahead, plus
-  // the age of its progress (its leader saw it in the clock and reported it over the leader<->GCS
-  // link) and the time the order takes to reach the members (leaders, then members). Member<->leader
-  // delay counts once: a plan grown further ahead is one a new round's waypoints wait behind.
+  // the lag.
+  return lead + window_ / 2 + lag(ctx) >= end;
+}
+
+int MapfGcsTask::lag(const GcsContext& ctx) const {
+  // The progress's age: its leader saw it in the clock and reported it over the leader<->GCS link.
+  // Then the order's way to the members: leaders, then members. Member<->leader delay counts once.
   const comm::LinkTable& links = ctx.setup.links;
   const auto age = static_cast<int>(comm::last_arrival_tick(links[comm::LinkClass::LeaderGcs], ctx.tick()) - ctx.tick()) + 1;
-  const auto trip = static_cast<int>(start_tick(ctx) - ctx.tick());
-  return lead + window_ / 2 + age + trip >= end;
+  const auto trip = static_cast<int>(
+      comm::last_arrival_tick(links[comm::LinkClass::MemberLeader],
+                              comm::last_arrival_tick(links[comm::LinkClass::LeaderGcs], ctx.tick())) - ctx.tick());
+  return age + trip;
+}
+
+bool MapfGcsTask::raise_limit(const GcsContext& ctx) {
+  if (!by_graph_ || holding_ || failed_ || complete_ || window_paths_.empty() || adg_.routes.size() != planned_.size()) {
+    return false;
+  }
+  // The limit is what a new round waits behind, and what keeps a robot from running on: it stays as
+  // far ahead of every robot's reported progress as the progress's age and the relay's way to the
+  // members take without jitter. With jitter a robot may reach the limit before it is raised and
+  // wait a tick or two: measured, that costs less than the steps a higher limit adds to every
+  // round (docs/traffic.md, "A new round cuts the plan").
+  const comm::LinkTable& links = ctx.setup.links;
+  const int jitter = static_cast<int>(links[comm::LinkClass::LeaderGcs].jitter_ticks + links[comm::LinkClass::MemberLeader].jitter_ticks);
+  const int ahead = std::max(1, lag(ctx) - jitter);
+  const int end = static_cast<int>(window_paths_.front().size()) - 1;
+  int want = 0;
+  for (std::size_t k = 0; k < planned_.size(); ++k) {
+    const std::size_t last = adg_.routes[k].size() - 1;
+    const std::size_t s = std::min<std::size_t>(progress_[k] + static_cast<std::size_t>(ahead), last);
+    want = std::max(want, adg_.planned_time[k][s]);
+  }
+  const auto limit = static_cast<std::uint32_t>(std::min(want, end));
+  if (limit <= limit_) return false;
+  limit_ = limit;
+  return true;
+}
+
+int MapfGcsTask::cut_plan() {
+  const int end = static_cast<int>(window_paths_.front().size()) - 1;
+  // A stop the plan reaches within half a window of the limit is kept: a waypoint about to be
+  // reached is worth more than the steps saved by turning away from it.
+  int at = static_cast<int>(limit_);
+  for (const int r : planned_) {
+    for (const int time : window_reached_[static_cast<std::size_t>(r)]) {
+      if (time > at && time <= static_cast<int>(limit_) + window_ / 2) at = time;
+    }
+  }
+  if (at >= end) return end;
+  // An act at or after the cut would have to move with it: cut only plans of passing stops.
+  for (const int r : planned_) {
+    for (const Stop& s : sequences_[static_cast<std::size_t>(r)]) {
+      if (s.act != Stop::Act::kNone) return end;
+    }
+  }
+  for (auto& path : window_paths_) path.resize(static_cast<std::size_t>(at) + 1);
+  for (const int r : planned_) {
+    auto& reached = window_reached_[static_cast<std::size_t>(r)];
+    std::size_t keep = 0;
+    for (std::size_t g = 0; g < reached.size(); ++g) {
+      if (reached[g] >= 0 && reached[g] <= at) keep = g + 1;
+    }
+    reached.resize(keep);
+    auto& seq = sequences_[static_cast<std::size_t>(r)];
+    seq.resize(std::min(seq.size(), keep));
+  }
+  // The rotations before the cut keep their numbers (planner/mapf/adg.hpp: in order of their time).
+  std::size_t kept = 0;
+  while (kept < adg_.rotations.size()) {
+    const planner::mapf::Need& m = adg_.rotations[kept].front();
+    if (adg_.planned_time[static_cast<std::size_t>(m.robot)][m.step] > at) break;
+    ++kept;
+  }
+  rotation_ordered_.resize(kept);
+  return at;
 }
 
 void MapfGcsTask::extend_window(GcsContext& ctx) {
   const comm::Topology& t = ctx.setup.topology;
-  const int end = static_cast<int>(window_paths_.front().size()) - 1;
   if (map_grows_) known_ = ctx.fused.grid();
+  // New sequences follow from the earliest time the plan may be cut, not from its end. If no window
+  // can follow from there, the plan stays as it was and the sequences wait for its hold.
+  const char* repick = repick_;
+  const int old_end = static_cast<int>(window_paths_.front().size()) - 1;
+  std::optional<std::tuple<std::vector<planner::mapf::Path>, std::vector<std::vector<int>>, std::vector<std::vector<Stop>>,
+                           std::vector<bool>>>
+      before;
+  if (repick_ != nullptr) before.emplace(window_paths_, window_reached_, sequences_, rotation_ordered_);
+  const int end = repick_ != nullptr ? cut_plan() : old_end;
+  const bool cut = end < old_end;
   if (repick_ != nullptr) {
     // The plan keeps the stops it gets each robot past; the new sequences follow them from its end.
     std::vector<std::vector<Stop>> next = pick_routes_(ctx, known_, planned_, repick_);
@@ -227,6 +308,12 @@ void MapfGcsTask::extend_window(GcsContext& ctx) {
   } catch (const std::invalid_argument& e) {
     // The plan is driven to its end and the next one made from where the robots stand.
     no_continuation_ = true;
+    if (cut) {
+      std::tie(window_paths_, window_reached_, sequences_, rotation_ordered_) = std::move(*before);
+      repick_ = repick;
+      --repicks_continued_;
+      plans_.erase(plans_.size() - 1);
+    }
     std::fprintf(stderr, "gcs: traffic: plan %u cannot grow: %s\n", seq_, e.what());
     return;
   }
@@ -235,6 +322,10 @@ void MapfGcsTask::extend_window(GcsContext& ctx) {
   chain_first_ = first;
   if (!take_window(w, end)) return;
   ++windows_continued_;
+  if (cut) {
+    ++plans_cut_;
+    steps_cut_ += static_cast<std::uint64_t>(old_end - end);
+  }
   planner::mapf::Result res;
   res.status = planner::mapf::Status::Solved;
   res.paths = window_paths_;

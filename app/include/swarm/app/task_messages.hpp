@@ -81,6 +81,10 @@ struct Route {
   // Nonzero: this is route `grows` again, longer at its end (the same first cells, more after them):
   // the robot keeps its place on it and drives on. 0: a new route.
   std::uint32_t grows = 0;
+  // Nonzero: a version of the routes from id `replaces` on, cut short and continued otherwise (a
+  // plan cut past every release, tasks/mapf/mapf_gcs.hpp). A robot following one of them keeps its
+  // place on this one and drives on: the cells are the same as far as it may have got.
+  std::uint32_t replaces = 0;
 };
 
 // A robot's report on its waypoint of a planning round (member::RobotAgent's waypoint states).

@@ -95,6 +95,10 @@ std::uint32_t after_cuts(const LinkTable& table, LinkClass link, std::uint16_t s
 // in lockstep, with no loss, bandwidth limit or cut: tick + 1 + delay + jitter. Tasks that wait
 // for everything already sent to arrive (a hand-over, a common start tick) wait until then.
 std::uint32_t last_arrival_tick(const LinkParams& p, std::uint32_t tick);
+// The same on a lossy link, allowing for as many repeats of a reliable message as make its being
+// later still less likely than kLateOdds: for tasks whose robots must all act at one tick.
+inline constexpr double kLateOdds = 1e-5;
+std::uint32_t sure_arrival_tick(const LinkParams& p, std::uint32_t tick);
 
 // How many transmissions of the message are lost before one gets through (at most 64).
 std::uint32_t lost_transmissions(const LinkTable& table, LinkClass link, std::uint16_t sender,

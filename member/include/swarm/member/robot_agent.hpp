@@ -52,10 +52,14 @@ class RobotAgent {
   // Route ids only grow (a leader numbers its routes, a standby's above its predecessor's): a
   // route older than one followed already was overtaken on the way and is ignored. The route it
   // follows, sent again with its cells so far first and more after them, grows: the robot keeps
-  // its place and drives on as released (a leader extending a plan by its next window).
+  // its place and drives on as released (a leader extending a plan by its next window). A newer
+  // route that replaces routes from id `replaces` on, the one it follows among them (a plan cut
+  // short and continued otherwise), keeps its place too if it has the same cells as far as the
+  // robot may have got: its step, its release and the part the simulator drives; otherwise it is
+  // a new route.
   void follow(std::uint32_t id, std::vector<planner::Cell> cells, std::uint32_t release,
               std::vector<std::uint32_t> picks = {}, std::vector<std::uint32_t> drops = {},
-              std::uint32_t start_tick = 0);
+              std::uint32_t start_tick = 0, std::uint32_t replaces = 0);
   // Route `id` may be driven as far as index `up_to`. A release may come before its route (they
   // travel on different topics, and a lost message is sent again later): it is kept until the
   // route comes.
@@ -97,6 +101,10 @@ class RobotAgent {
  private:
   bool in_flight() const { return report_.id != sent_id_; }
   void step_following(Step& out, std::uint32_t tick);
+  // follow()'s route `id` in place of the one followed, keeping its place; false if they differ
+  // where the robot may have got.
+  bool take_cut(std::uint32_t id, std::vector<planner::Cell>& cells, std::uint32_t release,
+                std::vector<std::uint32_t>& picks, std::vector<std::uint32_t>& drops);
   bool path_still_valid(std::size_t& at) const;
   bool replan(std::optional<planner::Cell> avoid);
 

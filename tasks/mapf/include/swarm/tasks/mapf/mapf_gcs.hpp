@@ -22,7 +22,14 @@
 //   Report (leader -> GCS): values = [s, robot, step, release, robot, step, release, ...] for
 //     its robots whose progress or release changed; state Done when all its robots of plan s have
 //     arrived; Held after a hold when they all stand still.
-//   Order Progress, kAllGroups: values = [s, robot, step, release, ...], relayed.
+//   Order Progress, kAllGroups: values = [s, L, robot, step, release, ...], relayed; L, the
+//     limit: no robot is to be released past the plan's time L (its first window is released
+//     whole). The GCS raises L as the robots progress, always far enough ahead that none waits on
+//     it, and may cut the plan at any time from the highest L it has sent (lifelong: a new
+//     round's waypoints then follow from there, not from the plan's end).
+//   Order Work, seq s, values = [kContinues, f, T] with T before the plan's end: the plan is cut
+//     at T and grows from there; the robots whose routes change get them under a new id that
+//     replaces the old (task::Route::replaces), the same as far as any may have got.
 //   Order Hold, seq s: stop releasing plan s; each leader stops its robots where they stand (an
 //     empty route each: a robot's release may reach windows ahead, and its member may open its
 //     route further by itself, planner/mapf/release_watch.hpp); Held once all are confirmed.
@@ -32,7 +39,8 @@
 //     rotation themselves: they learn of their releases in different ticks, and a robot that moved
 //     early would run into one that has not left. The GCS knows every robot's progress (the
 //     leaders' reports), so it names the rotations that may go, with a start tick late enough for
-//     the order to reach every leader and its route every member (configured delays and jitter).
+//     the order to reach every leader and its route every member (configured delays and jitter, and
+//     lost transmissions repeated until one is later still only once in 100,000: comm/link.hpp).
 // The first plan is made at the phase's start, from where the robots stand (a phase after another
 // starts once they all stand still: gcs/gcs_node.hpp).
 // A planned robot lost midway, or a group's leader replaced by its standby: the GCS holds the
@@ -125,6 +133,12 @@ class MapfGcsTask : public GcsTask {
   // is held with every robot stopped where it stands, and the next is planned from there with the
   // picker's sequences (at once if the drive was complete, at its end if it ends first).
   void repick(GcsContext& ctx, const char* why);
+  // The phase is about to end while the robots still drive (exploration done): no rotation is
+  // ordered any more, and `rotating` says whether one ordered is still to go. A phase that ended
+  // before would switch some leaders to the next before their robots' step of it, and the others'
+  // robots would run into them.
+  void wind_down() { winding_down_ = true; }
+  [[nodiscard]] bool rotating(std::uint32_t tick) const { return tick <= last_rotation_tick_; }
   void start(GcsContext& ctx) override;
   void step(GcsContext& ctx) override;
   [[nodiscard]] bool complete() const override { return complete_; }
@@ -158,6 +172,16 @@ class MapfGcsTask : public GcsTask {
   // trip) of the plan's end, the next window is planned from the plan's end and sent as its
   // continuation, so the robots drive on without waiting for the slowest (docs/traffic.md).
   [[nodiscard]] bool time_to_extend(const GcsContext& ctx) const;
+  // How old the reported progress may be plus how long an order takes to reach every member, in
+  // ticks: how far a robot may have got, past its reported progress, when an order sent now
+  // reaches it.
+  [[nodiscard]] int lag(const GcsContext& ctx) const;
+  // Lifelong, by the graph: raises limit_ to stay ahead of every robot by lag() without the links'
+  // jitter; true if it rose.
+  bool raise_limit(const GcsContext& ctx);
+  // Lifelong, at a repick: the plan time the next window may start from, before the plan's end
+  // (the limit), or the end; the stops the plan gets each robot past after it leave the plan.
+  int cut_plan();
   // Lifelong, by the graph: the plan may grow by a window (below kPlanSteps, the robots it plans for
   // still the ones that may move).
   [[nodiscard]] bool can_grow(const GcsContext& ctx) const;
@@ -181,8 +205,8 @@ class MapfGcsTask : public GcsTask {
   void send_plan(GcsContext& ctx, const planner::mapf::Result& res, std::optional<int> continues = std::nullopt);
   void send_order(GcsContext& ctx, task::OrderKind kind, std::vector<std::int32_t> values = {});
   // The tick a timed plan or a rotation sets off at: late enough for an order sent now to reach
-  // every leader and its routes every member, with the configured delays and jitter (loss is not
-  // allowed for).
+  // every leader and its routes every member, with the configured delays and jitter, and loss
+  // (comm::sure_arrival_tick).
   std::uint32_t start_tick(const GcsContext& ctx) const;
   void order_rotations(GcsContext& ctx);  // the rotations that may go now, ordered once each
   std::vector<planner::Cell> random_goals(const GcsContext& ctx) const;
@@ -209,9 +233,12 @@ class MapfGcsTask : public GcsTask {
   bool by_graph_ = false;
   planner::mapf::Dependencies adg_;
   std::vector<std::uint32_t> progress_;  // per plan index: the route step it was last reported at
+  std::uint32_t limit_ = 0;              // the plan's time no robot is released past (the relays' L)
   std::uint64_t route_steps_ = 0;        // the current plan's route steps, all robots
   std::vector<bool> rotation_ordered_;
   std::uint32_t rotations_ordered_ = 0;
+  std::uint32_t last_rotation_tick_ = 0;  // the latest tick an ordered rotation goes at
+  bool winding_down_ = false;
   planner::mapf::Result first_;      // the first plan's numbers (after any fallback)
   bool have_first_ = false;
   nlohmann::json plans_ = nlohmann::json::array();
@@ -236,6 +263,8 @@ class MapfGcsTask : public GcsTask {
   std::uint64_t windows_continued_ = 0;
   std::uint64_t repicks_continued_ = 0;  // new sequences taken up by a window that continues the plan
   std::uint64_t repicks_held_ = 0;       // new sequences that held the plan, stopping every robot
+  std::uint64_t plans_cut_ = 0;          // repicks that cut the plan before its end
+  std::uint64_t steps_cut_ = 0;          // the plan steps they cut, in all
   std::unique_ptr<planner::traffic::Planner> traffic_;
   std::uint64_t windows_ = 0;
   std::uint64_t goals_done_ = 0;

@@ -30,6 +30,11 @@
 // its route again under the same id, longer (member::RobotAgent::follow), driving on without a
 // stop. A window that comes before the one it continues (jitter, a lost order sent again) waits
 // for it, and so does a relay of progress for a plan not yet taken.
+// No robot is released, nor its watch opened, past the limit the GCS relays with progress (a
+// plan's first window is released whole): the GCS may cut the plan there. A window that starts
+// before the plan's end cuts it there; every robot whose route changed gets it under a new id
+// that replaces its earlier ones (task::Route::replaces), the same as far as it may have got, and
+// drives on from where it stands.
 #pragma once
 
 #include <cstdint>
@@ -65,6 +70,8 @@ class MapfGroupTask : public GroupTask {
   // Takes what waited for the plan just taken: continuations of it, progress relayed for it.
   void take_waiting(GroupContext& ctx);
   void take_progress(const std::vector<std::int32_t>& values);
+  // How far robot k may drive now: as the graph allows, not past the limit.
+  [[nodiscard]] std::uint32_t releasable(int k) const;
   // Robot k's route from its step `from` on, released as far as it is, with its acts still ahead.
   [[nodiscard]] task::Route route_from(std::size_t k, std::uint32_t from) const;
   // A seq of the current plan (its first window's up to its latest).
@@ -87,6 +94,9 @@ class MapfGroupTask : public GroupTask {
   std::vector<task::Order> waiting_;  // continuations and progress relays ahead of their plan
   std::vector<planner::mapf::Path> paths_;  // per plan index: the timed path (grown by continuations)
   bool holding_ = false;
+  // The plan's time no robot is released past (the GCS's, relayed with progress): the GCS may cut
+  // the plan there (tasks/mapf/mapf_gcs.hpp).
+  std::uint32_t limit_ = 0;
   planner::mapf::Dependencies adg_;
   std::vector<std::vector<planner::Cell>> routes_;  // per plan index: what the robot drives
   // per plan index: the steps of its route at which the robot picks up / drops (the planned
@@ -104,6 +114,9 @@ class MapfGroupTask : public GroupTask {
   // before the route it grows, and a rotation's robot that set off early would run into the robot
   // whose cell it takes.
   std::vector<std::uint32_t> route_start_;
+  // per plan index (own robots): the first id of its routes from step base_ on (the routes that
+  // grow or cut it replace from there)
+  std::vector<std::uint32_t> first_route_;
   // per plan index (own robots): the route step its current route message starts at (a rotation
   // sends the rest of the route anew, with its start tick)
   std::vector<std::uint32_t> base_;
@@ -122,6 +135,7 @@ class MapfGroupTask : public GroupTask {
   std::uint64_t watches_sent_ = 0;
   std::uint64_t plans_taken_ = 0;
   std::uint64_t plans_continued_ = 0;
+  std::uint64_t plans_cut_ = 0;
 };
 
 }  // namespace swarm::leader
