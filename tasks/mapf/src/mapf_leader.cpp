@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <stdexcept>
+#include <utility>
 
 #include "swarm/tasks/mapf/mapf_gcs.hpp"  // the messages' contract (kContinues)
 
@@ -227,7 +228,7 @@ bool MapfGroupTask::extend_plan(const task::Order& o, GroupContext& ctx) {
     std::erase_if(picks_[k], [kept](std::uint32_t s) { return s > kept; });
     std::erase_if(drops_[k], [kept](std::uint32_t s) { return s > kept; });
   }
-  const std::vector<std::vector<planner::Cell>> had = routes_;
+  const std::vector<std::vector<planner::Cell>> had = std::move(routes_);  // replaced below
   adg_ = std::move(grown);
   // The grown plan's old steps keep their needs (planner/mapf/adg.hpp), and so do a cut plan's up
   // to the cut: progress and releases carry over.
