@@ -247,10 +247,6 @@ void MapfGcsTask::step(GcsContext& ctx) {
     relay_.clear();
     send_order(ctx, task::OrderKind::Progress, std::move(values));
   }
-  if (by_graph_ && !holding_ && !failed_) order_rotations(ctx);
-  arrived_ = 0;
-  for (int r : planned_) arrived_ += ctx.alive(r) && ctx.cell_of(r) == goals_[static_cast<std::size_t>(r)] ? 1 : 0;
-  if (failed_) return;
   // A planned robot lost (or its group's leader): the others may wait for it for ever. Hold, and
   // plan again once every group stands still.
   // A group whose leader changed (a standby took over, leader/leader_node.hpp) is held too: the new
@@ -261,13 +257,17 @@ void MapfGcsTask::step(GcsContext& ctx) {
     lost = lost || !ctx.alive(r) || !ctx.alive(ctx.leader_of(g)) ||
            ctx.leader_of(g) != plan_leaders_[static_cast<std::size_t>(g)];
   }
+  if (by_graph_ && !holding_ && !failed_ && !lost) order_rotations(ctx);
+  arrived_ = 0;
+  for (int r : planned_) arrived_ += ctx.alive(r) && ctx.cell_of(r) == goals_[static_cast<std::size_t>(r)] ? 1 : 0;
+  if (failed_) return;
   bool all_done = true, all_held = true;
   for (int g = 0; g < t.groups(); ++g) {
     if (!group_in_plan_[static_cast<std::size_t>(g)] || !ctx.alive(ctx.leader_of(g))) continue;
     all_done = all_done && group_done_[static_cast<std::size_t>(g)];
     all_held = all_held && (group_held_[static_cast<std::size_t>(g)] || group_done_[static_cast<std::size_t>(g)]);
   }
-  if (lost && !holding_ && !all_done) {
+  if (lost && !holding_ && !all_done && !rotating(ctx.tick())) {
     holding_ = true;
     send_order(ctx, task::OrderKind::Hold, {static_cast<std::int32_t>(seq_)});
     std::fprintf(stderr, "gcs: mapf: a planned robot was lost at tick %u; holding plan %u\n", ctx.tick(), seq_);

@@ -424,7 +424,10 @@ void MapfGcsTask::repick(GcsContext& ctx, const char* why) {
 void MapfGcsTask::cut_for_repick(GcsContext& ctx) {
   // A window is driven for half its steps at least: new sequences that come faster than the robots
   // can stop and start again would keep them standing.
-  if (repick_ == nullptr || holding_ || ctx.tick() < window_tick_ + static_cast<std::uint32_t>(window_ / 2)) return;
+  if (repick_ == nullptr || holding_ || rotating(ctx.tick()) ||
+      ctx.tick() < window_tick_ + static_cast<std::uint32_t>(window_ / 2)) {
+    return;
+  }
   // A plan that can grow takes the new sequences up from its end, without a stop (extend_window).
   if (can_grow(ctx)) return;
   // Every robot stops where it stands (not at its release: that may be the window's end), and the

@@ -136,7 +136,9 @@ class MapfGcsTask : public GcsTask {
   // The phase is about to end while the robots still drive (exploration done): no rotation is
   // ordered any more, and `rotating` says whether one ordered is still to go. A phase that ended
   // before would switch some leaders to the next before their robots' step of it, and the others'
-  // robots would run into them.
+  // robots would run into them. A Hold waits for it too (a robot lost, a new round): it would stop
+  // the robots whose stop reached them before the rotation's tick, and not the others. No rotation
+  // is ordered once a robot is lost, so the Hold waits a few ticks at most.
   void wind_down() { winding_down_ = true; }
   [[nodiscard]] bool rotating(std::uint32_t tick) const { return tick <= last_rotation_tick_; }
   void start(GcsContext& ctx) override;
