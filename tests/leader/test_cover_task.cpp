@@ -196,12 +196,15 @@ TEST(CoverTask, UnderLinkJitterEachCandidateIsEstimatedOverDrawsOfTheRoutesArriv
   ASSERT_GE(compared.size(), 3u) << division.dump(1);
   std::string lowest;
   double lowest_mean = 1e9;
+  int spread = 0;
   for (const auto& [name, c] : compared.items()) {
     const double mean = c["estimated_ticks"].get<double>();
     const int fastest = c["estimated_ticks_range"][0].get<int>(), slowest = c["estimated_ticks_range"][1].get<int>();
     EXPECT_LE(fastest, mean) << name;
     EXPECT_LE(mean, slowest) << name;
-    EXPECT_LT(fastest, slowest) << name;  // the draws differ
+    // The draws differ, except for a candidate whose members' routes come, in every draw, before
+    // any of their cells is the last to be covered (the tours planned for the latest arrival).
+    spread += fastest < slowest ? 1 : 0;
     // Never faster than with every route there at once: the plan's steps at the least (a tick more
     // when the longest route is a member's, sent on by its leader; here it may be a leader's own).
     EXPECT_GE(fastest, c["planned_steps"].get<int>()) << name;
@@ -210,6 +213,7 @@ TEST(CoverTask, UnderLinkJitterEachCandidateIsEstimatedOverDrawsOfTheRoutesArriv
       lowest = name;
     }
   }
+  EXPECT_GE(spread, static_cast<int>(compared.size()) - 1) << division.dump(1);
   EXPECT_EQ(division["driven"], lowest) << division.dump(1);
 }
 

@@ -269,9 +269,10 @@ CoverGcsTask::Division CoverGcsTask::divide_by_tours(const GcsContext& ctx, cons
   planner::CoverToursConfig cfg;
   cfg.max_targets = config_.tour_candidate_cells();
   cfg.seed = planner::mix_seed(ctx.setup.world.scenario.seed(), seq_ + (std::uint64_t{variant} << 32));
-  // Every other seed plans the members' later start in: their routes shorter by it.
+  // Every other seed plans the members' later start in: their routes shorter by it, for the
+  // mean arrival, then for the latest.
   if (variant % 2 == 1) {
-    const std::vector<int> arrivals = route_arrivals(ctx);
+    const std::vector<int> arrivals = route_arrivals(ctx, variant % 4 == 3);
     for (const int r : robots) cfg.starts.push_back(arrivals[static_cast<std::size_t>(r)]);
   }
   const planner::CoverTours tours = planner::cover_tours(known_, cells, at, cfg, stop);
@@ -305,11 +306,11 @@ CoverGcsTask::Division CoverGcsTask::divide_by_tours(const GcsContext& ctx, cons
   return out;
 }
 
-std::vector<int> CoverGcsTask::route_arrivals(const GcsContext& ctx) {
+std::vector<int> CoverGcsTask::route_arrivals(const GcsContext& ctx, bool latest) {
   // A leader drives its own robot from the tick the routes reach it; a member's route has the
-  // member<->leader link still to go: a tick, and the link's delay and mean jitter in lockstep.
+  // member<->leader link still to go: a tick, and the link's delay and jitter in lockstep.
   const auto& link = ctx.setup.world.scenario.links().member_leader();
-  const int member = 1 + static_cast<int>(link.delay_ticks() + link.jitter_ticks() / 2);
+  const int member = 1 + static_cast<int>(link.delay_ticks() + (latest ? link.jitter_ticks() : link.jitter_ticks() / 2));
   std::vector<int> out(static_cast<std::size_t>(ctx.setup.topology.robots()), member);
   for (int g = 0; g < ctx.setup.topology.groups(); ++g) {
     const int leader = ctx.leader_of(g);

@@ -65,8 +65,10 @@ class CoverGcsTask : public GcsTask {
   // Among `robots` at once.
   Division divide_among_robots(const GcsContext& ctx, const std::vector<std::uint8_t>& cells,
                                const std::vector<int>& robots, const std::function<bool()>& stop) const;
-  // Per robot id: the ticks after the leaders' own robots that its route reaches it.
-  [[nodiscard]] static std::vector<int> route_arrivals(const GcsContext& ctx);
+  // Per robot id: the ticks after the leaders' own robots that its route reaches it, with the
+  // link's mean jitter, or (latest) its whole jitter: the last of several members' routes to
+  // arrive comes near the latest, and a member's short tour then still ends in time.
+  [[nodiscard]] static std::vector<int> route_arrivals(const GcsContext& ctx, bool latest);
   // Per robot id, in each of kArrivalDraws draws of the links' jitter and loss: the tick its route
   // reaches it, counted from the tick the leaders' own robots get theirs over exact links. One
   // draw where no link has jitter or loss: the arrivals are known.
