@@ -192,20 +192,18 @@ bool MapfGroupTask::extend_plan(const task::Order& o, GroupContext& ctx) {
   // has sent (take_progress), which no robot is released past.
   std::vector<planner::mapf::Path> paths = paths_;
   const bool cut = !paths.empty() && from + 1 < paths.front().size();
+  // Each robot's step at the cut in the plan as it was.
+  std::vector<std::uint32_t> kept(paths.size());
+  for (std::size_t k = 0; k < paths.size(); ++k) {
+    kept[k] = planner::mapf::step_at(adg_, static_cast<int>(k), static_cast<int>(from));
+  }
   for (std::size_t k = 0; k < paths.size(); ++k) {
     const task::PlannedRoute& r = o.routes[k];
     if (cut && from < paths[k].size()) paths[k].resize(from + 1);
-    const std::uint32_t kept = planner::mapf::step_at(adg_, static_cast<int>(k), static_cast<int>(from));
-    if (cut && index_of_[k] < 0) {
-      // Another group's robot may be past the cut already, on its new route (this window came
-      // late): what the old route says of it past the cut means nothing. Counted at the cut, it is
-      // late, never early, until its leader's reports and the clock bring it on.
-      progress_[k] = std::min(progress_[k], kept);
-      released_[k] = std::min(released_[k], kept);
-    }
-    if (cut && std::max(progress_[k], released_[k]) > kept) {
+    // Of the others' robots this leader may know only the old plan's count (below).
+    if (cut && index_of_[k] >= 0 && std::max(progress_[k], released_[k]) > kept[k]) {
       std::fprintf(stderr, "leader-%d: mapf window %u cuts plan %u at time %zu, step %u of robot %d, which is at step %u "
-                   "released to %u (limit %u); dropped\n", group_, o.seq, seq_, from, kept, robot_of_[k], progress_[k],
+                   "released to %u (limit %u); dropped\n", group_, o.seq, seq_, from, kept[k], robot_of_[k], progress_[k],
                    released_[k], limit_);
       return false;
     }
@@ -222,11 +220,17 @@ bool MapfGroupTask::extend_plan(const task::Order& o, GroupContext& ctx) {
     std::fprintf(stderr, "leader-%d: mapf window %u dropped: %s\n", group_, o.seq, e.what());
     return false;  // the plan stays as it was
   }
-  // The acts past the cut go with the steps they were on.
   for (std::size_t k = 0; cut && k < paths_.size(); ++k) {
-    const std::uint32_t kept = planner::mapf::step_at(adg_, static_cast<int>(k), static_cast<int>(from));
-    std::erase_if(picks_[k], [kept](std::uint32_t s) { return s > kept; });
-    std::erase_if(drops_[k], [kept](std::uint32_t s) { return s > kept; });
+    // Another group's robot may be past the cut already, on its new route (this window came
+    // late): what the old route says of it past the cut means nothing. Counted at the cut, it is
+    // late, never early, until its leader's reports and the clock bring it on.
+    if (index_of_[k] < 0) {
+      progress_[k] = std::min(progress_[k], kept[k]);
+      released_[k] = std::min(released_[k], kept[k]);
+    }
+    // The acts past the cut go with the steps they were on.
+    std::erase_if(picks_[k], [&](std::uint32_t s) { return s > kept[k]; });
+    std::erase_if(drops_[k], [&](std::uint32_t s) { return s > kept[k]; });
   }
   const std::vector<std::vector<planner::Cell>> had = std::move(routes_);  // replaced below
   adg_ = std::move(grown);
