@@ -19,6 +19,7 @@ void publish_motion(comm::Mailbox::Outlet<msgs::MotionCommand>& motion, comm::Ag
   cmd.path_xy(app::to_xy(step.path));
   cmd.pick_steps(step.pick_steps);
   cmd.drop_steps(step.drop_steps);
+  cmd.start_tick(step.start_tick);
   motion.send(cmd);
 }
 

@@ -128,7 +128,6 @@ void RobotAgent::step_following(Step& out, std::uint32_t tick) {
   // (or none was sent). A part in flight is waited for.
   const bool part_done = f.sim_id == 0 || (report_.id == f.sim_id && f.base + report_.step == f.sent_to);
   if (!part_done || release <= at) return;
-  if (f.sim_id == 0 && tick < f.start_tick) return;  // not yet: the route sets off at its start tick
   if (pose_ != f.cells[at]) {
     // Not where the route says: it cannot go on, and it stops, so that it does not drive on along
     // the part of an earlier route still in the simulator while its leader routes it from where it
@@ -140,6 +139,7 @@ void RobotAgent::step_following(Step& out, std::uint32_t tick) {
   }
   out.path_changed = true;
   out.path.assign(f.cells.begin() + at, f.cells.begin() + release + 1);
+  if (f.sim_id == 0 && f.start_tick > tick) out.start_tick = f.start_tick;
   // An action at index `at` belongs to this part only if no part was sent before (the route's
   // first cell); otherwise the previous part ended there and carried it.
   const std::uint32_t from = f.sim_id == 0 ? at : at + 1;

@@ -44,7 +44,12 @@ SimNode::SimNode(comm::LockstepClock& clock, const app::RoleSetup& setup, PhaseS
     sense_.push_back(&clock.advertise<msgs::Sense>(topic::sense(r), LinkClass::SimRobot, {r}));
   }
   clock.subscribe<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, [this, &t](const msgs::MotionCommand& m) {
-    if (t.is_robot(m.robot()) && alive_[m.robot()]) world_.command(m.robot(), m.route_id(), app::from_xy(m.path_xy()), m.pick_steps(), m.drop_steps());
+    if (!t.is_robot(m.robot()) || !alive_[m.robot()]) return;
+    if (m.start_tick() > tick_) {
+      world_.command_at(m.start_tick(), m.robot(), m.route_id(), app::from_xy(m.path_xy()), m.pick_steps(), m.drop_steps());
+    } else {
+      world_.command(m.robot(), m.route_id(), app::from_xy(m.path_xy()), m.pick_steps(), m.drop_steps());
+    }
   }, comm::Delivery::Reliable, t.robots());
   clock.subscribe<msgs::PhaseStart>(topic::kPhaseSim, LinkClass::Control,
                                     [this](const msgs::PhaseStart& p) {
@@ -117,6 +122,7 @@ msgs::RunTally SimNode::tally() const {
 }
 
 void SimNode::begin_tick(std::uint32_t k) {
+  tick_ = k;
   clock_.begin_tick(k);
   if (next_phase_ && *next_phase_ < mission_.size() && *next_phase_ != phases_.back().index) start_phase(*next_phase_, k);
   next_phase_.reset();
@@ -129,6 +135,7 @@ void SimNode::begin_tick(std::uint32_t k) {
     }
     alive_[r] = !lost;
   }
+  world_.start_due(k);
   if (k > 0) {
     const std::uint64_t moves_before = world_.total_counts().moves;
     world_.move();

@@ -114,7 +114,24 @@ void World::command(int robot, std::uint32_t route_id, const std::vector<Cell>& 
   }
 }
 
+void World::command_at(std::uint32_t start_tick, int robot, std::uint32_t route_id, std::vector<Cell> route,
+                       std::vector<std::uint32_t> picks, std::vector<std::uint32_t> drops) {
+  held_.push_back({start_tick, robot, route_id, std::move(route), std::move(picks), std::move(drops)});
+}
+
+void World::start_due(std::uint32_t tick) {
+  // In the order they came; command() ignores one that a newer command has overtaken.
+  std::vector<Held> due;
+  std::erase_if(held_, [&](Held& h) {
+    if (h.start_tick > tick) return false;
+    due.push_back(std::move(h));
+    return true;
+  });
+  for (const Held& h : due) command(h.robot, h.route_id, h.route, h.picks, h.drops);
+}
+
 void World::stop(int robot) {
+  std::erase_if(held_, [robot](const Held& h) { return h.robot == robot; });
   routes_[static_cast<std::size_t>(robot)].clear();
   progress_[static_cast<std::size_t>(robot)].state = RouteState::Stopped;
 }

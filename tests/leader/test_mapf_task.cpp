@@ -175,6 +175,39 @@ TEST(MapfTask, ARotationAcrossGroupsMovesInOneTickUnderDelayAndJitter) {
   EXPECT_EQ(p["motion"]["moves"], 4);
 }
 
+// The same rotation with a third of the transmissions lost on every link, the simulator's too:
+// each robot's command goes to the simulator at once, held there for the rotation's tick, which
+// allows for repeats of lost transmissions on the way; all four still move in one tick.
+TEST(MapfTask, ARotationAcrossGroupsMovesInOneTickWhenCommandsToTheSimulatorAreLost) {
+  const auto truth = swarm::test::grid_from({"####", "#..#", "#..#", "####"});
+  for (const std::uint32_t seed : {1u, 2u, 3u, 4u, 5u}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    auto sc = config::parse_scenario_text(
+        "groups: 2 robots_per_group: 2 max_ticks: 300 seed: " + std::to_string(seed) +
+            " links { sim_robot { loss: 0.3 } member_leader { loss: 0.3 } leader_gcs { loss: 0.3 } } "
+            "mission { phase { mapf { execution: MAPF_EXECUTE_ADG solver: MAPF_CBS } } }",
+        "rotation under loss test");
+    auto setup = swarm::test::setup_for(truth, {1, 1}, sc);
+    const std::vector<planner::Cell> ring{{1, 1}, {1, 2}, {2, 2}, {2, 1}};
+    std::vector<planner::Cell> goals;
+    for (const planner::Cell c : setup.world.robot_cells) {
+      const auto at = std::find(ring.begin(), ring.end(), c);
+      ASSERT_NE(at, ring.end());
+      goals.push_back(ring[static_cast<std::size_t>(at - ring.begin() + 1) % ring.size()]);
+    }
+    set_goals(setup, truth, goals, "rotation under loss test");
+    swarm::test::FakeSwarm s(setup);
+    const auto m = s.run_to_end();
+    ASSERT_TRUE(m["complete"].get<bool>());
+    const auto& p = mapf_phase(m);
+    EXPECT_EQ(p["task"]["rotations_ordered"], 1);
+    EXPECT_EQ(p["task"]["robots_at_goal"], 4);
+    EXPECT_EQ(p["motion"]["vertex_conflict_events"], 0);
+    EXPECT_EQ(p["motion"]["blocked_moves"], 0);
+    EXPECT_EQ(p["motion"]["moves"], 4);
+  }
+}
+
 // The same rotation across groups, and beside it two robots crossing a room, one of which is lost
 // at some tick round the rotation's: the plan is held, and the Hold must not reach some of the
 // rotation's robots before its tick and others after (those would move into robots that stopped).

@@ -96,6 +96,44 @@ TEST(World, ACommandOlderThanTheRobotsRouteIsIgnored) {
   EXPECT_EQ(w.robots()[0], (Cell{1, 0}));
 }
 
+// Four robots round a 2 x 2 ring, whose commands come at different ticks (a lost one repeated):
+// each is held for the tick it names, and all four step round together then, with no conflict.
+// A newer command before that tick replaces a held one; a lost robot's held command is dropped.
+TEST(World, CommandsForALaterTickAreHeldAndGivenTogetherThen) {
+  const std::vector<Cell> ring{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  World w(open_room(3, 3), ring, kLidar);
+  const auto to_next = [&](int r) { return std::vector<Cell>{ring[r], ring[(r + 1) % 4]}; };
+  w.command_at(3, 0, 1, to_next(0));
+  w.command_at(3, 1, 1, to_next(1));
+  w.start_due(1);
+  w.move();  // tick 1: nobody has a route yet
+  w.command_at(3, 2, 1, to_next(2));
+  w.start_due(2);
+  w.move();  // tick 2
+  EXPECT_EQ(w.robots(), ring);
+  EXPECT_EQ(w.route(0).id, 0u);
+  w.command_at(3, 3, 1, to_next(3));  // the last, just in time
+  w.start_due(3);
+  w.move();  // tick 3: all four round the ring
+  for (int r = 0; r < 4; ++r) EXPECT_EQ(w.robots()[r], ring[(r + 1) % 4]) << r;
+  EXPECT_EQ(w.events().vertex, 0u);
+  EXPECT_EQ(w.events().edge, 0u);
+  EXPECT_EQ(w.total_counts().blocked_moves, 0u);
+
+  // Replaced before its tick by a newer command (a stop), and dropped for a lost robot.
+  World v(open_room(4, 1), {{0, 0}, {3, 0}}, kLidar);
+  v.command_at(5, 0, 1, {{0, 0}, {1, 0}});
+  v.command(0, 2, {});
+  v.command_at(5, 1, 1, {{3, 0}, {2, 0}});
+  v.stop(1);
+  v.start_due(5);
+  v.move();
+  EXPECT_EQ(v.robots()[0], (Cell{0, 0}));
+  EXPECT_EQ(v.route(0).id, 2u);
+  EXPECT_EQ(v.robots()[1], (Cell{3, 0}));
+  EXPECT_EQ(v.route(1).id, 0u);
+}
+
 TEST(World, AWaitKeepsTheRobotAndIsNoWallStop) {
   World w(open_room(3, 1), {{0, 0}}, kLidar);
   w.command(0, 1, {{0, 0}, {0, 0}, {0, 0}, {1, 0}});

@@ -187,11 +187,13 @@ void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res, s
 }
 
 std::uint32_t MapfGcsTask::start_tick(const GcsContext& ctx) const {
-  // The order reaches the last leader by then, and the routes it forwards at once the last member,
-  // lost transmissions repeated: a robot that set off without the others would run into them.
+  // The order reaches the last leader by then, the routes it forwards at once the last member, and
+  // each robot's command (sent at once, to set off in this tick) the simulator, lost transmissions
+  // repeated: a robot that set off without the others would run into them.
   const comm::LinkTable& links = ctx.setup.links;
   const std::uint32_t at_leaders = comm::sure_arrival_tick(links[comm::LinkClass::LeaderGcs], ctx.tick());
-  return comm::sure_arrival_tick(links[comm::LinkClass::MemberLeader], at_leaders);
+  const std::uint32_t at_members = comm::sure_arrival_tick(links[comm::LinkClass::MemberLeader], at_leaders);
+  return comm::sure_arrival_tick(links[comm::LinkClass::SimRobot], at_members);
 }
 
 void MapfGcsTask::order_rotations(GcsContext& ctx) {

@@ -77,7 +77,7 @@ struct Route {
   std::uint32_t release = 0;
   std::vector<std::uint32_t> pick_steps;
   std::vector<std::uint32_t> drop_steps;
-  std::uint32_t start_tick = 0;  // do not set off before this tick (0: at once)
+  std::uint32_t start_tick = 0;  // the simulator's tick its first step is made in (0: at once)
   // Nonzero: this is route `grows` again, longer at its end (the same first cells, more after them):
   // the robot keeps its place on it and drives on. 0: a new route.
   std::uint32_t grows = 0;

@@ -45,8 +45,9 @@ class RobotAgent {
   // Follow the leader's route `id` exactly (planner/grid/route.hpp: cells[0] is where the robot stands
   // when it starts), as far as index `release`; the objects under the robot are picked up at the
   // indices in `picks` and dropped at those in `drops`. Replaces a waypoint or an earlier route.
-  // The robot drives the released part, then waits for release() to go on. It sets off at the
-  // step() of tick `start_tick` (or at once if that has passed). An empty route means "stop where
+  // The robot drives the released part, then waits for release() to go on. With a `start_tick`
+  // (a step several robots make together) its first part goes to the simulator at once, to set off
+  // in that tick of the simulator's, however long the command takes on its way. An empty route means "stop where
   // you stand": the simulator is told at once, and the route's progress turns Stopped once the
   // simulator confirms it (until then Active), so a leader knows when the robot stands still.
   // Route ids only grow (a leader numbers its routes, a standby's above its predecessor's): a
@@ -71,6 +72,7 @@ class RobotAgent {
     std::uint32_t route_id = 0;                // its number, if path_changed
     std::vector<std::uint32_t> pick_steps;     // its pick-up and drop indices (following a route)
     std::vector<std::uint32_t> drop_steps;
+    std::uint32_t start_tick = 0;              // the simulator holds it till then (0: at once)
     std::optional<WaypointState> report;       // the waypoint is done with
     std::uint32_t round = 0;                   // the round the report belongs to
   };

@@ -94,6 +94,7 @@ class SimNode {
   };
   std::vector<PhaseLog> phases_;
   std::uint32_t last_tick_ = 0;
+  std::uint32_t tick_ = 0;  // the tick being begun: a command for a later one is held (World::command_at)
   bool complete_ = false;
 };
 

@@ -85,6 +85,13 @@ class World {
   // all it carries: an object at its type's destination is delivered, elsewhere it lies there.
   void command(int robot, std::uint32_t route_id, const std::vector<planner::Cell>& route,
                const std::vector<std::uint32_t>& picks = {}, const std::vector<std::uint32_t>& drops = {});
+  // The same, to be given at tick `start_tick` (start_due): robots that must step together (a
+  // rotation) set off in one tick whenever each command came. The robot's route until then goes
+  // on; a newer command given before replaces it, as command() would.
+  void command_at(std::uint32_t start_tick, int robot, std::uint32_t route_id, std::vector<planner::Cell> route,
+                  std::vector<std::uint32_t> picks = {}, std::vector<std::uint32_t> drops = {});
+  // Gives the commands held for `tick` or before; call before move().
+  void start_due(std::uint32_t tick);
 
   // The robot stops where it stands, its route given up (a robot lost to the swarm).
   void stop(int robot);
@@ -163,6 +170,14 @@ class World {
   std::vector<int> heading_;  // of each robot's last move, -1 before its first
   std::uint64_t diagonal_moves_ = 0;
   std::vector<std::vector<std::uint32_t>> picks_, drops_;  // per robot, of its route
+  struct Held {
+    std::uint32_t start_tick = 0;
+    int robot = 0;
+    std::uint32_t route_id = 0;
+    std::vector<planner::Cell> route;
+    std::vector<std::uint32_t> picks, drops;
+  };
+  std::vector<Held> held_;  // command_at's, not yet due
   // Collect: each object's state: lying on `cell`, carried (carrier >= 0) or delivered.
   struct Object {
     planner::Cell cell;

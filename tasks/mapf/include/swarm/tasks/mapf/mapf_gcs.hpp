@@ -39,8 +39,9 @@
 //     rotation themselves: they learn of their releases in different ticks, and a robot that moved
 //     early would run into one that has not left. The GCS knows every robot's progress (the
 //     leaders' reports), so it names the rotations that may go, with a start tick late enough for
-//     the order to reach every leader and its route every member (configured delays and jitter, and
-//     lost transmissions repeated until one is later still only once in 100,000: comm/link.hpp).
+//     the order to reach every leader, its route every member and each robot's command the
+//     simulator, which holds it for that tick (configured delays and jitter, and lost
+//     transmissions repeated until one is later still only once in 100,000: comm/link.hpp).
 // The first plan is made at the phase's start, from where the robots stand (a phase after another
 // starts once they all stand still: gcs/gcs_node.hpp).
 // A planned robot lost midway, or a group's leader replaced by its standby: the GCS holds the
@@ -206,9 +207,9 @@ class MapfGcsTask : public GcsTask {
   // `continues`: res.paths are the grown plan, whose new window starts at time *continues.
   void send_plan(GcsContext& ctx, const planner::mapf::Result& res, std::optional<int> continues = std::nullopt);
   void send_order(GcsContext& ctx, task::OrderKind kind, std::vector<std::int32_t> values = {});
-  // The tick a timed plan or a rotation sets off at: late enough for an order sent now to reach
-  // every leader and its routes every member, with the configured delays and jitter, and loss
-  // (comm::sure_arrival_tick).
+  // The simulator's tick a timed plan or a rotation sets off in: late enough for an order sent now
+  // to reach every leader, its routes every member and their commands the simulator, with the
+  // configured delays and jitter, and loss (comm::sure_arrival_tick).
   std::uint32_t start_tick(const GcsContext& ctx) const;
   void order_rotations(GcsContext& ctx);  // the rotations that may go now, ordered once each
   std::vector<planner::Cell> random_goals(const GcsContext& ctx) const;
