@@ -144,27 +144,33 @@ TEST(MapfTask, AMemberLostMidwayTheOthersArePlannedAgain) {
   EXPECT_EQ(p["task"]["conflicts"], 0);
 }
 
-// Four robots in a closed 2 x 2 room, each to go to the next cell round it: the only plan is one
-// rotation of all four (no cell is free), and it spans both groups. Driven by the graph under
-// member<->leader delay and jitter, the leaders learn of it at different ticks, so they never
-// release it themselves: the GCS orders it with one start tick, and all four move in one tick.
-TEST(MapfTask, ARotationAcrossGroupsMovesInOneTickUnderDelayAndJitter) {
+// Four robots of two groups in a closed 2 x 2 room, each to go to the next cell round it: the only
+// plan is one rotation of all four (no cell is free). `links`: the scenario's links block.
+// Returns the mission's metrics.
+nlohmann::json drive_a_ring_of_four(const std::string& links, std::uint32_t seed) {
   const auto truth = swarm::test::grid_from({"####", "#..#", "#..#", "####"});
-  auto sc = config::parse_scenario_text(
-      "groups: 2 robots_per_group: 2 max_ticks: 300 links { member_leader { delay_ticks: 2 jitter_ticks: 3 } } "
-      "mission { phase { mapf { execution: MAPF_EXECUTE_ADG solver: MAPF_CBS } } }",
-      "rotation test");
+  auto sc = config::parse_scenario_text("groups: 2 robots_per_group: 2 max_ticks: 300 seed: " + std::to_string(seed) +
+                                            " " + links +
+                                            " mission { phase { mapf { execution: MAPF_EXECUTE_ADG solver: MAPF_CBS } } }",
+                                        "rotation test");
   auto setup = swarm::test::setup_for(truth, {1, 1}, sc);
   const std::vector<planner::Cell> ring{{1, 1}, {1, 2}, {2, 2}, {2, 1}};
   std::vector<planner::Cell> goals;
   for (const planner::Cell c : setup.world.robot_cells) {
     const auto at = std::find(ring.begin(), ring.end(), c);
-    ASSERT_NE(at, ring.end());
+    EXPECT_NE(at, ring.end());
     goals.push_back(ring[static_cast<std::size_t>(at - ring.begin() + 1) % ring.size()]);
   }
   set_goals(setup, truth, goals, "rotation test");
   swarm::test::FakeSwarm s(setup);
-  const auto m = s.run_to_end();
+  return s.run_to_end();
+}
+
+// Driven by the graph under member<->leader delay and jitter, the leaders learn of the rotation
+// at different ticks, so they never release it themselves: the GCS orders it with one start tick,
+// and all four move in one tick.
+TEST(MapfTask, ARotationAcrossGroupsMovesInOneTickUnderDelayAndJitter) {
+  const auto m = drive_a_ring_of_four("links { member_leader { delay_ticks: 2 jitter_ticks: 3 } }", 1);
   ASSERT_TRUE(m["complete"].get<bool>());
   const auto& p = mapf_phase(m);
   EXPECT_EQ(p["task"]["planned_makespan"], 1);
@@ -175,29 +181,14 @@ TEST(MapfTask, ARotationAcrossGroupsMovesInOneTickUnderDelayAndJitter) {
   EXPECT_EQ(p["motion"]["moves"], 4);
 }
 
-// The same rotation with a third of the transmissions lost on every link, the simulator's too:
-// each robot's command goes to the simulator at once, held there for the rotation's tick, which
-// allows for repeats of lost transmissions on the way; all four still move in one tick.
+// The same with a third of the transmissions lost on every link, the simulator's too: each
+// robot's command goes to the simulator at once, held there for the rotation's tick, which allows
+// for repeats of lost transmissions on the way; all four still move in one tick.
 TEST(MapfTask, ARotationAcrossGroupsMovesInOneTickWhenCommandsToTheSimulatorAreLost) {
-  const auto truth = swarm::test::grid_from({"####", "#..#", "#..#", "####"});
   for (const std::uint32_t seed : {1u, 2u, 3u, 4u, 5u}) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    auto sc = config::parse_scenario_text(
-        "groups: 2 robots_per_group: 2 max_ticks: 300 seed: " + std::to_string(seed) +
-            " links { sim_robot { loss: 0.3 } member_leader { loss: 0.3 } leader_gcs { loss: 0.3 } } "
-            "mission { phase { mapf { execution: MAPF_EXECUTE_ADG solver: MAPF_CBS } } }",
-        "rotation under loss test");
-    auto setup = swarm::test::setup_for(truth, {1, 1}, sc);
-    const std::vector<planner::Cell> ring{{1, 1}, {1, 2}, {2, 2}, {2, 1}};
-    std::vector<planner::Cell> goals;
-    for (const planner::Cell c : setup.world.robot_cells) {
-      const auto at = std::find(ring.begin(), ring.end(), c);
-      ASSERT_NE(at, ring.end());
-      goals.push_back(ring[static_cast<std::size_t>(at - ring.begin() + 1) % ring.size()]);
-    }
-    set_goals(setup, truth, goals, "rotation under loss test");
-    swarm::test::FakeSwarm s(setup);
-    const auto m = s.run_to_end();
+    const auto m = drive_a_ring_of_four(
+        "links { sim_robot { loss: 0.3 } member_leader { loss: 0.3 } leader_gcs { loss: 0.3 } }", seed);
     ASSERT_TRUE(m["complete"].get<bool>());
     const auto& p = mapf_phase(m);
     EXPECT_EQ(p["task"]["rotations_ordered"], 1);
