@@ -46,10 +46,11 @@ class RobotAgent {
   // when it starts), as far as index `release`; the objects under the robot are picked up at the
   // indices in `picks` and dropped at those in `drops`. Replaces a waypoint or an earlier route.
   // The robot drives the released part, then waits for release() to go on. With a `start_tick`
-  // (a step several robots make together) its first part goes to the simulator at once, to set off
-  // in that tick of the simulator's, however long the command takes on its way. An empty route means "stop where
-  // you stand": the simulator is told at once, and the route's progress turns Stopped once the
-  // simulator confirms it (until then Active), so a leader knows when the robot stands still.
+  // (a step several robots make together) its first part goes to the simulator at once, to set
+  // off in that tick of the simulator's, however long the command takes on its way. An empty
+  // route means "stop where you stand": the simulator is told at once, and the route's progress
+  // turns Stopped once the simulator confirms it (until then Active), so a leader knows when the
+  // robot stands still.
   // Route ids only grow (a leader numbers its routes, a standby's above its predecessor's): a
   // route older than one followed already was overtaken on the way and is ignored. The route it
   // follows, sent again with its cells so far first and more after them, grows: the robot keeps
