@@ -35,6 +35,8 @@ TEST(Adg, ATimeOfThePlanIsTheRouteStepEnteredByThen) {
   EXPECT_EQ(step_at(d, 1, 3), 2u);
   EXPECT_EQ(step_at(d, 1, 9), 2u);
   EXPECT_EQ(step_at(d, 0, 1), 1u);
+  EXPECT_EQ(last_time(plan), 3u);  // robot 1's path, the longer
+  EXPECT_EQ(last_time({}), 0u);
 }
 
 // Progress read from where a robot stands: its route (0,0) (1,0) (1,1) (1,0) (2,0) passes (1,0)

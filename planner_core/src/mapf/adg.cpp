@@ -181,6 +181,12 @@ std::uint32_t step_at(const Dependencies& adg, int robot, int time) {
   return after == t.begin() ? 0 : static_cast<std::uint32_t>(after - t.begin() - 1);
 }
 
+std::uint32_t last_time(const std::vector<Path>& paths) {
+  std::size_t last = 0;
+  for (const Path& p : paths) last = std::max(last, p.empty() ? 0 : p.size() - 1);
+  return static_cast<std::uint32_t>(last);
+}
+
 std::uint32_t progress_at(const Dependencies& adg, int robot, std::uint32_t progress, Cell at) {
   const std::vector<Cell>& route = adg.routes.at(static_cast<std::size_t>(robot));
   const std::size_t next = static_cast<std::size_t>(progress) + 1;

@@ -151,8 +151,7 @@ void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res, s
     progress_.assign(res.paths.size(), 0);
     // A plan's first window is released whole (tasks/mapf/mapf_leader.hpp); a plan not made in
     // windows has no other.
-    limit_ = 0;
-    for (const planner::mapf::Path& p : res.paths) limit_ = std::max(limit_, static_cast<std::uint32_t>(p.size() - 1));
+    limit_ = planner::mapf::last_time(res.paths);
   }
   if (by_graph_) {
     // A grown plan keeps its steps' needs and its rotations' numbers (planner/mapf/adg.hpp).

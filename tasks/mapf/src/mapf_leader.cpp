@@ -37,8 +37,7 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
   chain_first_ = o.seq;
   have_plan_ = true;
   // Its first window is released whole; the GCS's relays raise the limit from there.
-  limit_ = 0;
-  for (const planner::mapf::Path& p : paths) limit_ = std::max(limit_, static_cast<std::uint32_t>(p.size() - 1));
+  limit_ = planner::mapf::last_time(paths);
   holding_ = false;
   stopping_.clear();
   stopped_all_ = false;

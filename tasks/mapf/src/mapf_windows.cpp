@@ -186,10 +186,9 @@ int MapfGcsTask::lag(const GcsContext& ctx) const {
   // The progress's age: its leader saw it in the clock and reported it over the leader<->GCS link.
   // Then the order's way to the members: leaders, then members. Member<->leader delay counts once.
   const comm::LinkTable& links = ctx.setup.links;
-  const auto age = static_cast<int>(comm::last_arrival_tick(links[comm::LinkClass::LeaderGcs], ctx.tick()) - ctx.tick()) + 1;
-  const auto trip = static_cast<int>(
-      comm::last_arrival_tick(links[comm::LinkClass::MemberLeader],
-                              comm::last_arrival_tick(links[comm::LinkClass::LeaderGcs], ctx.tick())) - ctx.tick());
+  const std::uint32_t at_leaders = comm::last_arrival_tick(links[comm::LinkClass::LeaderGcs], ctx.tick());
+  const auto age = static_cast<int>(at_leaders - ctx.tick()) + 1;
+  const auto trip = static_cast<int>(comm::last_arrival_tick(links[comm::LinkClass::MemberLeader], at_leaders) - ctx.tick());
   return age + trip;
 }
 

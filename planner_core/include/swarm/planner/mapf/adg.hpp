@@ -82,6 +82,8 @@ enum class Rotations { Together, Held };
 // The route step robot `robot` stands on at the plan's time step `time` (the last step entered by
 // then): what happens at a time of the timed plan happens at this step of the route.
 [[nodiscard]] std::uint32_t step_at(const Dependencies& adg, int robot, int time);
+// The plan's last time step: its longest path's (0 for no path).
+[[nodiscard]] std::uint32_t last_time(const std::vector<Path>& paths);
 
 // Robot `robot`'s progress as its cell `at` shows it, from `progress` (the step it is known to
 // stand on): one step further when it stands on its route's next cell, else `progress`. A robot
