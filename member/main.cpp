@@ -48,7 +48,7 @@ void run_member(comm::Participant& participant, const app::RoleSetup& setup, int
     run(node);
   } else {
     member::RobotAgent robot(setup.world.frame.width, setup.world.frame.height, setup.world.frame.resolution);
-    member::MemberNode node(agent, setup, group, index, robot);
+    member::MemberNode node(agent, setup, group, robot);
     run(node);
   }
 }

@@ -12,7 +12,7 @@ CandidateNode::CandidateNode(comm::LockstepAgent& agent, const RoleSetup& setup,
       topology_(setup.topology),
       group_(group),
       robot_(setup.world.frame.width, setup.world.frame.height, setup.world.frame.resolution),
-      member_(agent, setup, group, index, robot_),
+      member_(agent, setup, group, robot_),
       leader_(agent, setup, group, index, robot_, agent.self() == setup.topology.leader(group), make_task) {
   // The first leader leads from tick 0: its first scans are the leader side's already.
   if (leader_.leading()) lead();

@@ -157,7 +157,6 @@ planner::mapf::Watch watch_from(const msgs::RouteRelease& m) {
   return w;
 }
 
-task::WaypointReport waypoint_report_from(const msgs::MemberStatus& m) { return {m.robot(), m.round(), m.state()}; }
 
 msgs::PlanReport plan_report_msg(const task::PlanTelemetry& p, int group) {
   msgs::PlanReport m;

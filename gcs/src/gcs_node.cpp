@@ -80,9 +80,6 @@ GcsNode::GcsNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, const 
   agent.subscribe<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, [this](const msgs::MapPatch& p) {
     fused_.fuse(p.group(), app::decode_patch(p.data(), setup_.world.frame.cells()));
   }, comm::Delivery::Reliable, writers);
-  agent.subscribe<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs, [this](const msgs::GroupStatus& s) {
-    if (from_leader(s.header())) statuses_.push_back(s);
-  }, comm::Delivery::Reliable, writers);
   agent.subscribe<msgs::TaskReport>(topic::kTaskReport, LinkClass::LeaderGcs, [this](const msgs::TaskReport& r) {
     if (from_leader(r.header())) task_reports_.push_back(r);
   }, comm::Delivery::Reliable, writers);
@@ -266,8 +263,6 @@ bool GcsNode::step(const msgs::Clock& clock) {
     record_phase(clock.tick(), false, false);
     tasks_[phase_]->start(ctx);
   }
-  for (const auto& st : statuses_) tasks_[phase_]->on_round_done(st.group(), st.round(), ctx);
-  statuses_.clear();
   for (const auto& r : task_reports_) {
     if (r.phase() != phase_) continue;
     if (settling_) {

@@ -53,16 +53,12 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, 
   const auto others = topology_.group_except(group, agent.self());
   // Every other robot of the group writes its member topics (the candidates too, while members).
   const int writers = static_cast<int>(others.size());
-  auto& group_status =
-      agent.advertise<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs, {topology_.gcs()});
   auto& plan_report = agent.advertise<msgs::PlanReport>(topic::kPlanReport, LinkClass::Telemetry, {topology_.gcs()});
   auto& task_report = agent.advertise<msgs::TaskReport>(topic::kTaskReport, LinkClass::LeaderGcs, {topology_.gcs()});
-  comm::Mailbox::Outlet<msgs::Assignment>* assign = nullptr;
   comm::Mailbox::Outlet<msgs::Route>* route = nullptr;
   comm::Mailbox::Outlet<msgs::RouteRelease>* release = nullptr;
   if (!others.empty()) {
     patch_down_ = &agent.advertise<msgs::MapPatch>(topic::patch_down(group), LinkClass::MemberLeader, others);
-    assign = &agent.advertise<msgs::Assignment>(topic::assign(group), LinkClass::MemberLeader, others);
     route = &agent.advertise<msgs::Route>(topic::route(group), LinkClass::MemberLeader, others);
     release = &agent.advertise<msgs::RouteRelease>(topic::release(group), LinkClass::MemberLeader, others);
   }
@@ -90,19 +86,6 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, 
     m.group(static_cast<std::uint16_t>(group_));
     task_report.send(m);
   };
-  outlets_.waypoints = [assign](std::uint32_t round, const std::vector<std::optional<Cell>>& waypoints) {
-    if (assign == nullptr) return;
-    msgs::Assignment a;
-    a.round(round);
-    a.waypoints_xy(app::to_xy(waypoints));
-    assign->send(a);
-  };
-  outlets_.round_done = [this, &group_status](std::uint32_t round) {
-    msgs::GroupStatus s;
-    s.group(static_cast<std::uint16_t>(group_));
-    s.round(round);
-    group_status.send(s);
-  };
   outlets_.plan_telemetry = [this, &plan_report](const task::PlanTelemetry& p) {
     msgs::PlanReport m = app::plan_report_msg(p, group_);
     plan_report.send(m);
@@ -119,9 +102,6 @@ LeaderNode::LeaderNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, 
       } else {
         map_.observe(changes);
       }
-    }, comm::Delivery::Reliable, writers);
-    agent.subscribe<msgs::MemberStatus>(topic::status(group), LinkClass::MemberLeader, [this](const msgs::MemberStatus& s) {
-      if (leading_) statuses_.push_back(s);
     }, comm::Delivery::Reliable, writers);
     agent.subscribe<msgs::RouteProgress>(topic::progress(group), LinkClass::MemberLeader, [this](const msgs::RouteProgress& p) {
       if (leading_) progress_.push_back(p);
@@ -188,7 +168,6 @@ void LeaderNode::shadow(const msgs::Clock& clock) {
     gcs_back_at_ = std::max(gcs_back_at_, from[topology_.gcs()]);
   }
   std::erase_if(orders_, [this](const msgs::TaskOrder& o) { return o.phase() != phase_; });
-  statuses_.clear();
   progress_.clear();
 }
 
@@ -228,7 +207,6 @@ void LeaderNode::stand_down(std::uint32_t tick) {
   leading_ = false;
   if (!led_.empty() && !led_.back().to) led_.back().to = tick;
   orders_.clear();
-  statuses_.clear();
   progress_.clear();
   std::fprintf(stderr, "%s: another robot leads group %d from tick %u; a member again\n",
                topology_.name_of(agent_.self()).c_str(), group_, tick);
@@ -274,7 +252,6 @@ void LeaderNode::dispatch(GroupContext& ctx) {
       stopped(topology_.index_of(p.robot()), {p.route_id(), p.step(), static_cast<planner::RouteState>(p.state())});
     }
     std::erase_if(orders_, [this](const msgs::TaskOrder& o) { return o.phase() != phase_; });
-    statuses_.clear();
     progress_.clear();
     round_.reset();
     return;
@@ -289,8 +266,6 @@ void LeaderNode::dispatch(GroupContext& ctx) {
     }
   }
   orders_.clear();
-  for (const auto& s : statuses_) task.on_waypoint(app::waypoint_report_from(s), ctx);
-  statuses_.clear();
   for (const auto& p : progress_) {
     task.on_carrying(topology_.index_of(p.robot()), p.carrying(), ctx);
     task.on_progress(topology_.index_of(p.robot()), {p.route_id(), p.step(), static_cast<planner::RouteState>(p.state())},
@@ -307,7 +282,7 @@ void LeaderNode::dispatch(GroupContext& ctx) {
 void LeaderNode::step(const msgs::Clock& clock) {
   enter_phase();
   const task::Clock now = app::task_clock(clock, topology_);
-  GroupContext ctx{setup_, group_, self_index_, phase_, now, alive_, map_, robot_, outlets_};
+  GroupContext ctx{setup_, group_, self_index_, phase_, now, alive_, map_, outlets_};
   if (!started_ && !settling_) {
     tasks_[phase_]->start(ctx);
     if (taking_over_) tasks_[phase_]->took_over(ctx);
@@ -345,9 +320,6 @@ void LeaderNode::step(const msgs::Clock& clock) {
       settle(ctx);
     }
   } else {
-    if (s.report) {
-      tasks_[phase_]->on_waypoint({static_cast<int>(agent_.self()), s.round, static_cast<std::uint8_t>(*s.report)}, ctx);
-    }
     if (!own_carrying_ || *own_carrying_ != robot_.carrying()) {
       own_carrying_ = robot_.carrying();
       tasks_[phase_]->on_carrying(self_index_, *own_carrying_, ctx);
@@ -356,7 +328,6 @@ void LeaderNode::step(const msgs::Clock& clock) {
       own_progress_ = p;
       tasks_[phase_]->on_progress(self_index_, p, ctx);
     }
-    tasks_[phase_]->finish_step(ctx);
   }
 
   if (!to_gcs_.empty()) {
@@ -386,7 +357,7 @@ std::string LeaderNode::report_json() const {
   }
   nlohmann::json led = nlohmann::json::array();
   for (const auto& l : led_) led.push_back({{"from_tick", l.from}, {"to_tick", l.to ? nlohmann::json(*l.to) : nlohmann::json(nullptr)}});
-  nlohmann::json out{{"members_lost", lost}, {"replans", robot_.replans()}, {"led", led}};
+  nlohmann::json out{{"members_lost", lost}, {"led", led}};
   // Each phase's numbers under its task's name; explore's also at the top level (the exploration
   // tables read rounds_planned and planning_seconds there).
   const auto phases = config::mission_phases(setup_.world.scenario);

@@ -36,17 +36,13 @@ void follow_route(RobotAgent& robot, const msgs::Route& r) {
                r.replaces());
 }
 
-MemberNode::MemberNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, int group, int index,
-                       RobotAgent& robot)
+MemberNode::MemberNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, int group, RobotAgent& robot)
     : agent_(agent),
       group_(group),
-      index_(index),
       robot_(robot),
       leaders_(setup.topology),
       patch_up_(agent.advertise<msgs::MapPatch>(topic::patch_up(group), LinkClass::MemberLeader,
                                                 leaders_except_self(setup.topology, group, agent.self()))),
-      status_(agent.advertise<msgs::MemberStatus>(topic::status(group), LinkClass::MemberLeader,
-                                                  leaders_except_self(setup.topology, group, agent.self()))),
       motion_(agent.advertise<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, {setup.topology.sim()})),
       progress_(agent.advertise<msgs::RouteProgress>(topic::progress(group), LinkClass::MemberLeader,
                                                      leaders_except_self(setup.topology, group, agent.self()))),
@@ -66,12 +62,6 @@ MemberNode::MemberNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, 
   }, comm::Delivery::BestEffort, 1);  // a lost scan is not repeated; the next one is newer
   agent.subscribe<msgs::MapPatch>(topic::patch_down(group), LinkClass::MemberLeader, [this](const msgs::MapPatch& p) {
     if (from_leader(p.header())) robot_.learn(app::decode_patch(p.data(), robot_.map().size()));
-  }, comm::Delivery::Reliable, leaders);
-  agent.subscribe<msgs::Assignment>(topic::assign(group), LinkClass::MemberLeader, [this](const msgs::Assignment& a) {
-    if (!from_leader(a.header())) return;
-    const auto waypoints = app::optional_cells_from_xy(a.waypoints_xy());
-    ++assignments_;
-    robot_.assign(a.round(), index_ < static_cast<int>(waypoints.size()) ? waypoints[index_] : std::nullopt);
   }, comm::Delivery::Reliable, leaders);
   // Routes and releases go to the whole group; each member keeps its own.
   agent.subscribe<msgs::Route>(topic::route(group), LinkClass::MemberLeader, [this](const msgs::Route& r) {
@@ -140,19 +130,10 @@ void MemberNode::step(const msgs::Clock& clock) {
     reported_carrying_ = robot_.carrying();
     reported_to_ = leader;
   }
-  if (s.report) {
-    msgs::MemberStatus status;
-    status.robot(agent_.self());
-    status.round(s.round);
-    status.state(static_cast<std::uint8_t>(*s.report));
-    status_.send(status);
-  }
 }
 
 std::string MemberNode::report_json() const {
-  return nlohmann::json{{"replans", robot_.replans()},
-                        {"assignments", assignments_},
-                        {"routes", routes_},
+  return nlohmann::json{{"routes", routes_},
                         {"releases_watched", watched_.releases_opened()},
                         {"orders_not_from_the_leader", not_from_leader_}}
       .dump();

@@ -34,8 +34,6 @@ void RobotAgent::follow(std::uint32_t id, std::vector<Cell> cells, std::uint32_t
     }
   }
   newest_route_ = id;
-  waypoint_.reset();
-  path_.clear();
   Follow f;
   f.cells = std::move(cells);
   for (const auto& [route, up_to] : early_releases_) {

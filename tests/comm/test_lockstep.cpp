@@ -42,6 +42,9 @@ constexpr AgentId kLeader = 0;
 constexpr AgentId kMember = 1;
 constexpr AgentId kGcs = 2;
 constexpr AgentId kSim = 3;
+// A member -> leader topic the tests send numbered messages on (a RouteProgress's route_id
+// carrying the number): its name fixes the loss draws they expect.
+const std::string kStatusTopic = "status_g0";
 
 // Fast DDS gives every participant of a process a new participant id and never reuses one, and
 // the loopback profile's unicast discovery probes ids 0..63 only (maxInitialPeersRange 64): the
@@ -223,19 +226,19 @@ TEST(Lockstep, MessagesAreHandledExactlyAtTheirDeliverTick) {
   // member -> leader every tick (delay 2): sent at t, handled at t + 1 + 2.
   std::vector<Seen> status_at_leader;
   std::vector<std::uint32_t> stamped_deliver;
-  run.agent(kLeader).subscribe<msgs::MemberStatus>(
-      topic::status(0), LinkClass::MemberLeader, [&](const msgs::MemberStatus& m) {
-        status_at_leader.push_back({run.agent(kLeader).tick(), m.round()});
-        EXPECT_EQ(m.header().tick(), m.round());
+  run.agent(kLeader).subscribe<msgs::RouteProgress>(
+      kStatusTopic, LinkClass::MemberLeader, [&](const msgs::RouteProgress& m) {
+        status_at_leader.push_back({run.agent(kLeader).tick(), m.route_id()});
+        EXPECT_EQ(m.header().tick(), m.route_id());
         EXPECT_EQ(m.header().sender(), kMember);
         stamped_deliver.push_back(m.header().deliver_tick());
       });
-  auto& status = run.agent(kMember).advertise<msgs::MemberStatus>(topic::status(0), LinkClass::MemberLeader,
+  auto& status = run.agent(kMember).advertise<msgs::RouteProgress>(kStatusTopic, LinkClass::MemberLeader,
                                                                    {kLeader});
   run.step[kMember] = [&](const msgs::Clock& c) {
-    msgs::MemberStatus s;
+    msgs::RouteProgress s;
     s.robot(kMember);
-    s.round(c.tick());
+    s.route_id(c.tick());
     status.send(s);
     return false;
   };
@@ -352,20 +355,20 @@ LossOutcome run_with_loss(const LinkTable& links) {
   LockstepRun run(links, 10);
   std::set<std::uint32_t> at_leader;
   std::set<std::uint32_t> at_gcs;
-  run.agent(kLeader).subscribe<msgs::MemberStatus>(
-      topic::status(0), LinkClass::MemberLeader,
-      [&](const msgs::MemberStatus& m) { at_leader.insert(m.header().seq()); }, Delivery::BestEffort);
-  run.agent(kGcs).subscribe<msgs::MemberStatus>(
-      topic::status(0), LinkClass::MemberLeader,
-      [&](const msgs::MemberStatus& m) { at_gcs.insert(m.header().seq()); }, Delivery::BestEffort);
-  auto& out = run.agent(kMember).advertise<msgs::MemberStatus>(topic::status(0), LinkClass::MemberLeader,
+  run.agent(kLeader).subscribe<msgs::RouteProgress>(
+      kStatusTopic, LinkClass::MemberLeader,
+      [&](const msgs::RouteProgress& m) { at_leader.insert(m.header().seq()); }, Delivery::BestEffort);
+  run.agent(kGcs).subscribe<msgs::RouteProgress>(
+      kStatusTopic, LinkClass::MemberLeader,
+      [&](const msgs::RouteProgress& m) { at_gcs.insert(m.header().seq()); }, Delivery::BestEffort);
+  auto& out = run.agent(kMember).advertise<msgs::RouteProgress>(kStatusTopic, LinkClass::MemberLeader,
                                                                 {kLeader, kGcs});
   run.step[kMember] = [&](const msgs::Clock& c) {
     if (c.tick() > 7) return false;
     for (int i = 0; i < 5; ++i) {
-      msgs::MemberStatus s;
+      msgs::RouteProgress s;
       s.robot(kMember);
-      s.round(c.tick());
+      s.route_id(c.tick());
       out.send(s);
     }
     return false;
@@ -392,7 +395,7 @@ TEST(Lockstep, LossDropsTheSameSequenceNumbersInEveryRun) {
   // Exactly the draws of link.hpp, made independently per receiver.
   std::set<std::uint32_t> predicted_leader;
   std::set<std::uint32_t> predicted_gcs;
-  const std::uint64_t h = hash_string(topic::status(0));
+  const std::uint64_t h = hash_string(kStatusTopic);
   for (std::uint32_t seq = 0; seq < 40; ++seq) {
     if (link_drops(links, LinkClass::MemberLeader, kMember, h, seq, kLeader)) predicted_leader.insert(seq);
     if (link_drops(links, LinkClass::MemberLeader, kMember, h, seq, kGcs)) predicted_gcs.insert(seq);
@@ -426,7 +429,7 @@ TEST(Lockstep, OnAReliableTopicALostMessageArrivesRetransmitTicksLaterPerLoss) {
   links[LinkClass::MemberLeader].retransmit_ticks = 2;
   // The member sends 3 per tick at ticks 0..4 (seq 0..14). Message seq s, sent at s / 3, is due
   // at s / 3 + 1 + 1 + 2 * lost(s). Run long enough for the latest.
-  const std::uint64_t h = hash_string(topic::status(0));
+  const std::uint64_t h = hash_string(kStatusTopic);
   std::vector<Seen> expected;
   std::uint32_t last_due = 0;
   std::uint32_t lost_total = 0;
@@ -444,14 +447,14 @@ TEST(Lockstep, OnAReliableTopicALostMessageArrivesRetransmitTicksLaterPerLoss) {
 
   LockstepRun run(links, last_due + 1);
   std::vector<Seen> got;
-  run.agent(kLeader).subscribe<msgs::MemberStatus>(
-      topic::status(0), LinkClass::MemberLeader,
-      [&](const msgs::MemberStatus& m) { got.push_back({run.agent(kLeader).tick(), m.header().seq()}); });
+  run.agent(kLeader).subscribe<msgs::RouteProgress>(
+      kStatusTopic, LinkClass::MemberLeader,
+      [&](const msgs::RouteProgress& m) { got.push_back({run.agent(kLeader).tick(), m.header().seq()}); });
   auto& out =
-      run.agent(kMember).advertise<msgs::MemberStatus>(topic::status(0), LinkClass::MemberLeader, {kLeader});
+      run.agent(kMember).advertise<msgs::RouteProgress>(kStatusTopic, LinkClass::MemberLeader, {kLeader});
   run.step[kMember] = [&](const msgs::Clock& c) {
     for (int i = 0; c.tick() < 5 && i < 3; ++i) {
-      msgs::MemberStatus s;
+      msgs::RouteProgress s;
       out.send(s);
     }
     return false;
@@ -470,16 +473,16 @@ TEST(Lockstep, ASlowSenderDoesNotLetTheReceiverActEarly) {
   std::vector<Seen> at_leader;
   Clock::time_point sent_at{};
   std::vector<Clock::time_point> leader_tick_start;
-  run.agent(kLeader).subscribe<msgs::MemberStatus>(
-      topic::status(0), LinkClass::MemberLeader,
-      [&](const msgs::MemberStatus& m) { at_leader.push_back({run.agent(kLeader).tick(), m.round()}); });
+  run.agent(kLeader).subscribe<msgs::RouteProgress>(
+      kStatusTopic, LinkClass::MemberLeader,
+      [&](const msgs::RouteProgress& m) { at_leader.push_back({run.agent(kLeader).tick(), m.route_id()}); });
   auto& out =
-      run.agent(kMember).advertise<msgs::MemberStatus>(topic::status(0), LinkClass::MemberLeader, {kLeader});
+      run.agent(kMember).advertise<msgs::RouteProgress>(kStatusTopic, LinkClass::MemberLeader, {kLeader});
   run.step[kMember] = [&](const msgs::Clock& c) {
     if (c.tick() == 2) {
       std::this_thread::sleep_for(std::chrono::milliseconds(200));
-      msgs::MemberStatus s;
-      s.round(2);
+      msgs::RouteProgress s;
+      s.route_id(2);
       out.send(s);
       sent_at = Clock::now();
     }
@@ -529,8 +532,8 @@ TEST(Lockstep, ASampleWrittenOnceBothSidesHaveMatchedReachesTheReader) {
   for (int i = 0; i < kIterations; ++i) {
     const std::string name = "race_" + std::to_string(i);
     std::atomic<int> got{0};
-    Reader<msgs::MemberStatus> reader(receiver_side, name, [&](msgs::MemberStatus&&) { ++got; });
-    Writer<msgs::MemberStatus> writer(sender_side, name);
+    Reader<msgs::RouteProgress> reader(receiver_side, name, [&](msgs::RouteProgress&&) { ++got; });
+    Writer<msgs::RouteProgress> writer(sender_side, name);
     // What announce_ready waits for: the writer's side and the reader's side.
     const auto discovery_deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
     while (writer.matched() < 1 || reader.matched() < 1) {
@@ -538,7 +541,7 @@ TEST(Lockstep, ASampleWrittenOnceBothSidesHaveMatchedReachesTheReader) {
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
     for (int k = 0; k < 5; ++k) {
-      msgs::MemberStatus m;
+      msgs::RouteProgress m;
       writer.write(m);
     }
     // Reliable with 50 ms heartbeats: 1 s is ample to repair any ordinary loss.

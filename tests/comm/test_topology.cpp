@@ -56,18 +56,18 @@ TEST(Topology, TopicNamesPerRecipient) {
   EXPECT_EQ(topic::sense(12), "sense_12");
   EXPECT_EQ(topic::patch_up(3), "patch_up_g3");
   EXPECT_EQ(topic::patch_down(0), "patch_down_g0");
-  EXPECT_EQ(topic::assign(1), "assign_g1");
-  EXPECT_EQ(topic::status(10), "status_g10");
+  EXPECT_EQ(topic::route(1), "route_g1");
+  EXPECT_EQ(topic::progress(10), "progress_g10");
 }
 
 TEST(Topology, TopicFamilyStripsThePerRecipientSuffix) {
   EXPECT_EQ(topic::family("sense_12"), "sense");
   EXPECT_EQ(topic::family("patch_up_g3"), "patch_up");
   EXPECT_EQ(topic::family("patch_down_g0"), "patch_down");
-  EXPECT_EQ(topic::family("status_g10"), "status");
+  EXPECT_EQ(topic::family("progress_g10"), "progress");
   EXPECT_EQ(topic::family("clock"), "clock");
   EXPECT_EQ(topic::family("patch_gcs"), "patch_gcs");
-  EXPECT_EQ(topic::family("group_status"), "group_status");
+  EXPECT_EQ(topic::family("task_order"), "task_order");
   // Digits not behind "_" or "_g" are part of the name.
   EXPECT_EQ(topic::family("log12"), "log12");
   EXPECT_EQ(topic::family("tag7"), "tag7");

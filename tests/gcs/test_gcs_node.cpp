@@ -59,7 +59,6 @@ TEST(GcsNode, StartsRoundsFromTheGroupsMapsAndDeclaresCompletionWhenNoFrontierIs
     a.advertise<msgs::MotionCommand>(topic::kMotion, LinkClass::SimRobot, {t.sim()});
     auto& patch = a.advertise<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, {t.gcs()});
     auto& beat = a.advertise<msgs::Heartbeat>(topic::kHeartbeat, LinkClass::LeaderGcs, {t.gcs()});
-    a.advertise<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs, {t.gcs()});
     a.advertise<msgs::PlanReport>(topic::kPlanReport, LinkClass::Telemetry, {t.gcs()});
     s.script(t.leader(g), [&, g, &patch = patch, &beat = beat](const msgs::Clock& c) {
       msgs::Heartbeat h;

@@ -1,9 +1,8 @@
 // The leader node on the FakeBus with its real members and a scripted GCS: given a global map with
-// one unexplored region, it plans case B (no group frontiers) and assigns its three robots three
-// distinct frontier cells of that region, nearest first as the Hungarian assignment says.
-// Exploration here is the paper's drive (`traffic: false`), where the leader sends its robots
-// their waypoints: what these tests watch. Through the traffic layer the waypoints go to the GCS
-// (tests/tasks/test_explore.cpp).
+// one unexplored region, it plans case B (no group frontiers) and gives its three robots three
+// distinct frontier cells of that region, nearest first as the Hungarian assignment says. The
+// waypoints go to the GCS (tasks/explore/waypoint_report.hpp), which drives the robots there
+// through the traffic layer (tests/tasks/test_explore.cpp): what these tests watch.
 #include "swarm/leader/leader_node.hpp"
 
 #include <gtest/gtest.h>
@@ -23,6 +22,8 @@
 #include "swarm/app/convert.hpp"
 #include "swarm/planner/explore/explore.hpp"
 #include "swarm/planner/explore/frontier.hpp"
+#include "swarm/app/task_wire.hpp"
+#include "swarm/tasks/explore/waypoint_report.hpp"
 #include "swarm_test/ascii_grid.hpp"
 #include "swarm_test/fake_swarm.hpp"
 
@@ -33,6 +34,18 @@ using comm::LinkClass;
 using planner::Cell;
 using planner::CellState;
 namespace topic = comm::topic;
+
+// Collects the leaders' rounds of waypoints, as sent to the GCS (their sender in `from`).
+struct WaypointsHeard {
+  std::vector<tasks::RoundWaypoints> rounds;
+  std::vector<comm::AgentId> from;
+  void hear(const msgs::TaskReport& m) {
+    if (auto w = tasks::read_waypoints_report(app::report_from(m))) {
+      rounds.push_back(std::move(*w));
+      from.push_back(m.header().sender());
+    }
+  }
+};
 
 // A 30 x 7 hall; the robots start at its west end.
 planner::OccupancyGrid hall() {
@@ -49,7 +62,6 @@ TEST(LeaderNode, PlansCaseBOnTheGlobalMapAndAssignsEachRobotAFrontierCellOfTheRe
   sc.set_robots_per_group(3);
   sc.set_sensing_range_m(0.6);  // 3 cells: the robots see nothing the global map lacks
   sc.set_max_ticks(30);
-  sc.mutable_explore()->set_traffic(false);
   auto setup = swarm::test::setup_for(truth, {3, 3}, sc);
   const comm::Topology& t = setup.topology;
   swarm::test::FakeSwarm s(setup, {t.gcs()});
@@ -65,8 +77,9 @@ TEST(LeaderNode, PlansCaseBOnTheGlobalMapAndAssignsEachRobotAFrontierCellOfTheRe
                                  comm::Delivery::Reliable, 1);
   gcs.subscribe<msgs::MapPatch>(topic::kPatchGcs, LinkClass::LeaderGcs, [](const msgs::MapPatch&) {},
                                 comm::Delivery::Reliable, 1);
-  gcs.subscribe<msgs::GroupStatus>(topic::kGroupStatus, LinkClass::LeaderGcs, [](const msgs::GroupStatus&) {},
-                                   comm::Delivery::Reliable, 1);
+  WaypointsHeard heard;
+  gcs.subscribe<msgs::TaskReport>(topic::kTaskReport, LinkClass::LeaderGcs,
+                                  [&](const msgs::TaskReport& r) { heard.hear(r); }, comm::Delivery::Reliable, 1);
   gcs.subscribe<msgs::PlanReport>(topic::kPlanReport, LinkClass::Telemetry,
                                   [&](const msgs::PlanReport& p) { plans.push_back(p); }, comm::Delivery::Reliable, 1);
   auto& round = gcs.advertise<msgs::RoundStart>(topic::kRound, LinkClass::LeaderGcs, {t.leader(0)});
@@ -81,26 +94,22 @@ TEST(LeaderNode, PlansCaseBOnTheGlobalMapAndAssignsEachRobotAFrontierCellOfTheRe
     r.map_rle(app::encode_map(global, planner::PatchEncoding::RunLength));
     round.send(r);
   });
-  // A spy on the group's assignments.
-  comm::FakeBus spy(s.network());
-  std::vector<msgs::Assignment> assignments;
-  comm::Reader<msgs::Assignment> reader(spy, topic::assign(0), [&](msgs::Assignment&& a) { assignments.push_back(a); });
-
   s.start();
-  ASSERT_TRUE(s.run_until([&] { return !plans.empty(); }, 10));
-  ASSERT_EQ(assignments.size(), 1u);
-  EXPECT_EQ(assignments[0].round(), 1u);
+  ASSERT_TRUE(s.run_until([&] { return !plans.empty() && !heard.rounds.empty(); }, 10));
+  ASSERT_EQ(heard.rounds.size(), 1u);
+  EXPECT_EQ(heard.rounds[0].round, 1u);
   EXPECT_EQ(plans[0].plan_case(), static_cast<std::uint8_t>(planner::PlanCase::GlobalAssignment));
 
-  // Every waypoint is a distinct frontier cell of the global map: the column x = 19, y = 1..5.
-  const auto waypoints = app::optional_cells_from_xy(assignments[0].waypoints_xy());
+  // Every robot of the group, in order, gets a distinct frontier cell of the global map: the
+  // column x = 19, y = 1..5.
+  EXPECT_EQ(heard.rounds[0].robots, (std::vector<int>{t.robot(0, 0), t.robot(0, 1), t.robot(0, 2)}));
+  const std::vector<Cell>& waypoints = heard.rounds[0].cells;
   ASSERT_EQ(waypoints.size(), 3u);
   std::vector<Cell> cells;
-  for (const auto& w : waypoints) {
-    ASSERT_TRUE(w.has_value());
-    EXPECT_EQ(w->x, 19);
-    EXPECT_TRUE(planner::is_frontier(global, *w)) << w->x << "," << w->y;
-    cells.push_back(*w);
+  for (const Cell& w : waypoints) {
+    EXPECT_EQ(w.x, 19);
+    EXPECT_TRUE(planner::is_frontier(global, w)) << w.x << "," << w.y;
+    cells.push_back(w);
   }
   std::sort(cells.begin(), cells.end());
   EXPECT_TRUE(std::adjacent_find(cells.begin(), cells.end()) == cells.end());
@@ -111,7 +120,7 @@ TEST(LeaderNode, PlansCaseBOnTheGlobalMapAndAssignsEachRobotAFrontierCellOfTheRe
     for (int i = 0; i < 3; ++i) c += std::hypot(at[i].x - w[i].x, at[i].y - w[i].y);
     return c;
   };
-  std::vector<Cell> given = {*waypoints[0], *waypoints[1], *waypoints[2]};
+  const std::vector<Cell>& given = waypoints;
   std::vector<Cell> perm = cells;
   double best = std::numeric_limits<double>::infinity();
   do best = std::min(best, cost(perm));
@@ -120,26 +129,27 @@ TEST(LeaderNode, PlansCaseBOnTheGlobalMapAndAssignsEachRobotAFrontierCellOfTheRe
 }
 
 TEST(LeaderNode, ALostMemberIsNoticedPlannedWithoutAndTheMissionStillCompletes) {
-  auto setup = swarm::test::setup_from_text("map: 'small' groups: 1 robots_per_group: 3 max_ticks: 800 explore { traffic: false }");
+  auto setup = swarm::test::setup_from_text("map: 'small' groups: 1 robots_per_group: 3 max_ticks: 800");
   const comm::Topology& t = setup.topology;
   swarm::test::FakeSwarm s(setup);
   comm::FakeBus spy(s.network());
-  std::vector<msgs::Assignment> assignments;
-  comm::Reader<msgs::Assignment> reader(spy, topic::assign(0), [&](msgs::Assignment&& a) { assignments.push_back(a); });
+  WaypointsHeard heard;
+  comm::Reader<msgs::TaskReport> reader(spy, topic::kTaskReport, [&](msgs::TaskReport&& r) { heard.hear(r); });
   s.start();
   for (int k = 0; k < 40; ++k) ASSERT_TRUE(s.step());
-  const std::size_t before = assignments.size();
+  const std::size_t before = heard.rounds.size();
   ASSERT_GT(before, 0u);
   s.disconnect(t.robot(0, 2));  // member-0-2 crashes
   while (s.step()) {
   }
   EXPECT_TRUE(s.complete());
-  ASSERT_GT(assignments.size(), before + 1);
+  ASSERT_GT(heard.rounds.size(), before + 1);
   // The clock marks it lost at once on the fake (its writers are gone): from the next round on
   // it gets no waypoint.
-  for (std::size_t i = before + 1; i < assignments.size(); ++i) {
-    const auto w = app::optional_cells_from_xy(assignments[i].waypoints_xy());
-    EXPECT_FALSE(w[2].has_value()) << "round " << assignments[i].round();
+  for (std::size_t i = before + 1; i < heard.rounds.size(); ++i) {
+    const std::vector<int>& robots = heard.rounds[i].robots;
+    EXPECT_FALSE(robots.empty()) << "round " << heard.rounds[i].round;
+    EXPECT_EQ(std::count(robots.begin(), robots.end(), t.robot(0, 2)), 0) << "round " << heard.rounds[i].round;
   }
   s.finish();
   std::ifstream in(s.run_dir() + "/metrics.json");
@@ -156,7 +166,7 @@ TEST(LeaderNode, ALostMemberIsNoticedPlannedWithoutAndTheMissionStillCompletes) 
 // it from then on, never from two robots at one tick), plans the next rounds without the dead
 // robot, and the mission completes. metrics.json records the hand-over.
 TEST(LeaderNode, AStandbyTakesOverALostLeaderAndTheMissionCompletes) {
-  auto setup = swarm::test::setup_from_text("map: 'small' groups: 2 robots_per_group: 3 max_ticks: 1500 explore { traffic: false }");
+  auto setup = swarm::test::setup_from_text("map: 'small' groups: 2 robots_per_group: 3 max_ticks: 1500");
   const comm::Topology& t = setup.topology;
   ASSERT_EQ(t.standbys(), 1);
   swarm::test::FakeSwarm s(setup);
@@ -165,8 +175,10 @@ TEST(LeaderNode, AStandbyTakesOverALostLeaderAndTheMissionCompletes) {
   comm::Reader<msgs::Heartbeat> beats(spy, topic::kHeartbeat, [&](msgs::Heartbeat&& h) {
     if (h.group() == 1) heard[h.header().tick()].insert(h.header().sender());
   });
-  std::vector<msgs::Assignment> assignments;
-  comm::Reader<msgs::Assignment> reader(spy, topic::assign(1), [&](msgs::Assignment&& a) { assignments.push_back(a); });
+  WaypointsHeard waypoints;
+  comm::Reader<msgs::TaskReport> reader(spy, topic::kTaskReport, [&](msgs::TaskReport&& r) {
+    if (r.group() == 1) waypoints.hear(r);
+  });
   s.start();
   for (int k = 0; k < 40; ++k) ASSERT_TRUE(s.step());
   s.disconnect(t.leader(1));
@@ -178,15 +190,17 @@ TEST(LeaderNode, AStandbyTakesOverALostLeaderAndTheMissionCompletes) {
     ASSERT_EQ(senders.size(), 1u) << "tick " << tick;
     EXPECT_EQ(*senders.begin(), tick < 40 ? t.leader(1) : t.robot(1, 1)) << "tick " << tick;
   }
-  // The new leader's rounds: its own robot and member-1-2 get waypoints, the dead one none.
-  std::size_t after = 0;
-  for (const auto& a : assignments) {
-    if (a.header().sender() != t.robot(1, 1)) continue;
+  // The new leader's rounds: its own robot gets waypoints, the dead one none.
+  std::size_t after = 0, own = 0;
+  for (std::size_t i = 0; i < waypoints.rounds.size(); ++i) {
+    if (waypoints.from[i] != t.robot(1, 1)) continue;
     ++after;
-    const auto w = app::optional_cells_from_xy(a.waypoints_xy());
-    EXPECT_FALSE(w[0].has_value()) << "round " << a.round();
+    const std::vector<int>& robots = waypoints.rounds[i].robots;
+    own += static_cast<std::size_t>(std::count(robots.begin(), robots.end(), t.robot(1, 1)));
+    EXPECT_EQ(std::count(robots.begin(), robots.end(), t.leader(1)), 0) << "round " << waypoints.rounds[i].round;
   }
   EXPECT_GT(after, 0u);
+  EXPECT_GT(own, 0u);
   s.finish();
   std::ifstream in(s.run_dir() + "/metrics.json");
   const auto m = nlohmann::json::parse(in);

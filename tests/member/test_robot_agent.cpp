@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,48 +20,52 @@ using swarm::test::ascii_map;
 
 constexpr int kBeams = 360;  // one beam per degree, as the shipped scenarios
 
-// What the simulator would report on the robot's latest route with the robot at `at`: the
-// route's first cell at or after where it stood last (tests move robots by hand along routes
-// that never pass a cell twice).
-planner::RouteProgress report_at(const RobotAgent& robot, Cell at) {
-  const auto& route = robot.route();
-  planner::RouteProgress r;
-  r.id = robot.route_id();
-  if (route.empty()) {
-    r.state = planner::RouteState::Stopped;
+// The simulator's side of these tests: the part of its route the robot sent last, and what the
+// simulator would report on it with the robot at `at` (the part's first cell at `at`; tests move
+// robots by hand along parts that never pass a cell twice).
+struct SentPart {
+  std::vector<Cell> cells;
+  std::uint32_t id = 0;
+  planner::RouteProgress report_at(Cell at) const {
+    planner::RouteProgress r;
+    r.id = id;
+    if (cells.empty()) {
+      r.state = planner::RouteState::Stopped;
+      return r;
+    }
+    const auto it = std::find(cells.begin(), cells.end(), at);
+    r.step = it == cells.end() ? 0 : static_cast<std::uint32_t>(it - cells.begin());
+    r.state = it == cells.end()         ? planner::RouteState::Rejected
+              : it + 1 == cells.end() ? planner::RouteState::Finished
+                                      : planner::RouteState::Active;
     return r;
   }
-  const auto it = std::find(route.begin(), route.end(), at);
-  r.step = it == route.end() ? 0 : static_cast<std::uint32_t>(it - route.begin());
-  r.state = it == route.end()         ? planner::RouteState::Rejected
-            : it + 1 == route.end() ? planner::RouteState::Finished
-                                    : planner::RouteState::Active;
-  return r;
-}
+};
 
 // One tick of a robot's loop as swarm-member runs it: the simulator's scan of the truth from
-// `at` is integrated with the simulator's report on the route, then the agent steps.
-RobotAgent::Step tick_at(RobotAgent& robot, const OccupancyGrid& truth, Cell at, float range) {
+// `at` is integrated with the simulator's report on the part sent last, then the agent steps.
+RobotAgent::Step tick_at(RobotAgent& robot, SentPart& sent, const OccupancyGrid& truth, Cell at, float range) {
   std::vector<float> ranges(kBeams);
   planner::scan(truth, at, kBeams, range, ranges.data());
-  robot.sense(at, ranges, range, report_at(robot, at));
-  return robot.step();
+  robot.sense(at, ranges, range, sent.report_at(at));
+  RobotAgent::Step s = robot.step();
+  if (s.path_changed) sent = {s.path, s.route_id};
+  return s;
 }
 
 RobotAgent agent_for(const OccupancyGrid& truth) {
   return RobotAgent(truth.width(), truth.height(), truth.resolution());
 }
 
-TEST(RobotAgent, ScanAndStepGiveTheExactAStarPathAndArrivalIsReportedOnce) {
+TEST(RobotAgent, SenseMapsWhatTheScanSeesAndReturnsExactlyTheCellsItChanged) {
   const auto art = ascii_map({
-      "##G##",  // y = 4
+      "##.##",  // y = 4
       "##.##",  // y = 3: the only way up is the gap (2, 3)
       ".....",  // y = 2
       ".....",  // y = 1
       "R....",  // y = 0
   });
   const Cell start = art.at.at('R');  // (0, 0)
-  const Cell goal = art.at.at('G');   // (2, 4)
   RobotAgent robot = agent_for(art.grid);
 
   std::vector<float> ranges(kBeams);
@@ -78,244 +81,9 @@ TEST(RobotAgent, ScanAndStepGiveTheExactAStarPathAndArrivalIsReportedOnce) {
   for (const Cell wall : {Cell{0, 3}, Cell{1, 3}, Cell{3, 3}, Cell{4, 3}}) {
     EXPECT_EQ(robot.map().at(wall), CellState::Occupied) << wall.x << "," << wall.y;
   }
-
-  robot.assign(7, goal);
-  const RobotAgent::Step first = robot.step();
-  // Row 3 is known to be wall except (2, 3), and (1,2)->(2,3), (3,2)->(2,3) would cut the corners
-  // (1, 3), (3, 3): every path enters (2, 3) from (2, 2) and (2, 4) from (2, 3). (0,0)->(2,2)
-  // costs 2*sqrt2 only along the diagonal. So the one cheapest path (2 + 2*sqrt2) is:
-  const std::vector<Cell> expected = {{0, 0}, {1, 1}, {2, 2}, {2, 3}, {2, 4}};
-  EXPECT_TRUE(first.path_changed);
-  EXPECT_EQ(first.path, expected);
-  EXPECT_FALSE(first.report);
-  EXPECT_EQ(robot.replans(), 1u);
-
-  // Driving along it keeps the path: no new command, no report, until the goal.
-  for (std::size_t i = 1; i + 1 < expected.size(); ++i) {
-    const RobotAgent::Step s = tick_at(robot, art.grid, expected[i], 10.0f);
-    EXPECT_FALSE(s.path_changed) << "at path cell " << i;
-    EXPECT_FALSE(s.report) << "at path cell " << i;
-  }
-  // On the goal: Arrived for round 7 and one stop (an empty path), in the same step.
-  const RobotAgent::Step arrived = tick_at(robot, art.grid, goal, 10.0f);
-  ASSERT_TRUE(arrived.report);
-  EXPECT_EQ(*arrived.report, WaypointState::Arrived);
-  EXPECT_EQ(arrived.round, 7u);
-  EXPECT_TRUE(arrived.path_changed);
-  EXPECT_TRUE(arrived.path.empty());
-  EXPECT_FALSE(robot.waypoint());
-  // Afterwards: neither a second report nor a second stop.
-  for (int i = 0; i < 3; ++i) {
-    const RobotAgent::Step idle = tick_at(robot, art.grid, goal, 10.0f);
-    EXPECT_FALSE(idle.report);
-    EXPECT_FALSE(idle.path_changed);
-  }
-  EXPECT_EQ(robot.replans(), 1u);
-}
-
-TEST(RobotAgent, AWaypointOnTheRobotsCellIsArrivedAtOnceAndStopsOnlyAMovingRobot) {
-  const OccupancyGrid truth = swarm::test::grid_from({"....."});
-  RobotAgent robot = agent_for(truth);
-  // Never sent a path: Arrived at once and no stop (there is nothing to stop).
-  tick_at(robot, truth, {0, 0}, 10.0f);
-  robot.assign(1, Cell{0, 0});
-  RobotAgent::Step s = robot.step();
-  ASSERT_TRUE(s.report);
-  EXPECT_EQ(*s.report, WaypointState::Arrived);
-  EXPECT_FALSE(s.path_changed);
-
-  // Moving towards (4, 0), then told its current cell: Arrived and one stop.
-  robot.assign(2, Cell{4, 0});
-  s = robot.step();
-  EXPECT_TRUE(s.path_changed);
-  EXPECT_EQ(s.path, (std::vector<Cell>{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}}));
-  EXPECT_FALSE(tick_at(robot, truth, {1, 0}, 10.0f).path_changed);
-  robot.assign(3, Cell{1, 0});
-  s = robot.step();
-  ASSERT_TRUE(s.report);
-  EXPECT_EQ(*s.report, WaypointState::Arrived);
-  EXPECT_EQ(s.round, 3u);
-  EXPECT_TRUE(s.path_changed);
-  EXPECT_TRUE(s.path.empty());
-}
-
-TEST(RobotAgent, NoWaypointStopsAMovingRobotOnceWithoutAReport) {
-  const OccupancyGrid truth = swarm::test::grid_from({"....."});
-  RobotAgent robot = agent_for(truth);
-  tick_at(robot, truth, {0, 0}, 10.0f);
-  robot.assign(1, Cell{4, 0});
-  EXPECT_TRUE(robot.step().path_changed);
-  robot.assign(2, std::nullopt);  // "stay"
-  RobotAgent::Step s = robot.step();
-  EXPECT_FALSE(s.report);
-  EXPECT_TRUE(s.path_changed);
-  EXPECT_TRUE(s.path.empty());
-  s = robot.step();
-  EXPECT_FALSE(s.report);
-  EXPECT_FALSE(s.path_changed);
-}
-
-TEST(RobotAgent, AWaypointThatTurnsOutOccupiedIsUnreachable) {
-  const auto art = ascii_map({"R....#"});  // (5, 0) is a wall; range 2 cells
-  const OccupancyGrid& truth = art.grid;
-  RobotAgent robot = agent_for(truth);
-  // From (0.5, 0.5) the +x beam crosses x = 1, 2 at 0.5, 1.5 and ends at 2.0 inside (2, 0):
-  // (5, 0) is Unknown, so the optimistic plan runs straight to it (dy = 0: the only cheapest).
-  tick_at(robot, truth, {0, 0}, 2.0f);
-  EXPECT_EQ(robot.map().at(Cell{5, 0}), CellState::Unknown);
-  robot.assign(4, Cell{5, 0});
-  RobotAgent::Step s = robot.step();
-  EXPECT_TRUE(s.path_changed);
-  EXPECT_EQ(s.path, (std::vector<Cell>{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}, {5, 0}}));
-  // From (1, 0) and (2, 0) the beam ends at 2.0 before x = 5: still Unknown, keep driving.
-  for (const Cell at : {Cell{1, 0}, Cell{2, 0}}) {
-    s = tick_at(robot, truth, at, 2.0f);
-    EXPECT_FALSE(s.report);
-    EXPECT_FALSE(s.path_changed);
-  }
-  // From (3, 0) the beam enters (5, 0) at 1.5 < 2: Occupied -> Unreachable, and one stop.
-  s = tick_at(robot, truth, {3, 0}, 2.0f);
-  EXPECT_EQ(robot.map().at(Cell{5, 0}), CellState::Occupied);
-  ASSERT_TRUE(s.report);
-  EXPECT_EQ(*s.report, WaypointState::Unreachable);
-  EXPECT_EQ(s.round, 4u);
-  EXPECT_TRUE(s.path_changed);
-  EXPECT_TRUE(s.path.empty());
-  EXPECT_FALSE(robot.waypoint());
-  EXPECT_FALSE(tick_at(robot, truth, {3, 0}, 2.0f).path_changed);
-}
-
-TEST(RobotAgent, AFreeWaypointWithoutAPathIsUnreachable) {
-  // Known map (learned, not scanned): the goal (4, 2) is walled in by (3, 2), (3, 1), (4, 1).
-  const OccupancyGrid known = swarm::test::grid_from({
-      "...#.",  // y = 2
-      "...##",  // y = 1
-      ".....",  // y = 0
-  });
-  RobotAgent robot = agent_for(known);
-  std::vector<CellChange> all;
-  for (int i = 0; i < static_cast<int>(known.size()); ++i) all.push_back({i, known.at(i)});
-  EXPECT_EQ(robot.learn(all), 15);
-  std::vector<float> ranges(kBeams);
-  planner::scan(known, {0, 0}, kBeams, 10.0f, ranges.data());
-  EXPECT_TRUE(robot.sense({0, 0}, ranges, 10.0f).empty());  // nothing new to a full map
-  robot.assign(2, Cell{4, 2});
-  const RobotAgent::Step s = robot.step();
-  ASSERT_TRUE(s.report);
-  EXPECT_EQ(*s.report, WaypointState::Unreachable);
-  EXPECT_EQ(s.round, 2u);
-  EXPECT_FALSE(s.path_changed);  // no path was ever sent, so no stop either
-}
-
-TEST(RobotAgent, AWallSeenOnThePathTriggersAReplanAroundIt) {
-  const auto art = ascii_map({
-      "......",  // y = 1
-      "R..#.G",  // y = 0
-  });
-  const OccupancyGrid& truth = art.grid;
-  RobotAgent robot = agent_for(truth);
-  // Range 2: from (0, 0) the wall (3, 0) is out of sight (the farthest point is x = 2.5).
-  tick_at(robot, truth, {0, 0}, 2.0f);
-  EXPECT_EQ(robot.map().at(Cell{3, 0}), CellState::Unknown);
-  robot.assign(1, art.at.at('G'));
-  RobotAgent::Step s = robot.step();
-  const std::vector<Cell> straight = {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}, {5, 0}};
-  EXPECT_EQ(s.path, straight);
-
-  // At (1, 0) the +x beam enters (3, 0) at 1.5 < 2: a wall on the path. Re-planned from (1, 0):
-  // (3, 0) can be passed only in row 1, and neither (2,0)->(3,1) nor (3,1)->(4,0) may cut its
-  // corner, so the cheapest is (1,0)->(2,1) sqrt2, ->(3,1) 1, ->(4,1) 1, ->(5,0) sqrt2 = 2+2sqrt2;
-  // every other way takes at least one more orthogonal step (4 + sqrt2).
-  s = tick_at(robot, truth, {1, 0}, 2.0f);
-  EXPECT_EQ(robot.map().at(Cell{3, 0}), CellState::Occupied);
-  EXPECT_TRUE(s.path_changed);
-  const std::vector<Cell> around = {{1, 0}, {2, 1}, {3, 1}, {4, 1}, {5, 0}};
-  EXPECT_EQ(s.path, around);
-  EXPECT_FALSE(s.report);
-  EXPECT_EQ(robot.replans(), 2u);
-
-  for (std::size_t i = 1; i + 1 < around.size(); ++i) {
-    EXPECT_FALSE(tick_at(robot, truth, around[i], 2.0f).path_changed) << i;
-  }
-  s = tick_at(robot, truth, around.back(), 2.0f);
-  ASSERT_TRUE(s.report);
-  EXPECT_EQ(*s.report, WaypointState::Arrived);
-  EXPECT_EQ(robot.replans(), 2u);
-}
-
-TEST(RobotAgent, BeingStuckForKStuckTicksStepsTriesADetour) {
-  const auto art = ascii_map({
-      ".....",  // y = 2
-      ".###.",  // y = 1
-      "R...G",  // y = 0
-  });
-  const OccupancyGrid& truth = art.grid;
-  RobotAgent robot = agent_for(truth);
-  tick_at(robot, truth, {0, 0}, 10.0f);
-  // From (0.5, 0.5): the beam at 50 deg enters (1, 1) from (0, 1); beams at 12..18 deg cross
-  // y = 1 in x = (2, 3); beams at 9..11 deg cross it in x = (3, 4).
-  for (const Cell wall : {Cell{1, 1}, Cell{2, 1}, Cell{3, 1}}) {
-    EXPECT_EQ(robot.map().at(wall), CellState::Occupied) << wall.x;
-  }
-  robot.assign(1, art.at.at('G'));
-  RobotAgent::Step s = robot.step();
-  const std::vector<Cell> straight = {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}};
-  EXPECT_EQ(s.path, straight);
-
-  // The robot does not move (another robot in (1, 0), say). Steps 2..kStuckTicks count 1..3.
-  for (int i = 1; i < RobotAgent::kStuckTicks; ++i) {
-    s = tick_at(robot, truth, {0, 0}, 10.0f);
-    EXPECT_FALSE(s.path_changed) << "stuck step " << i;
-    EXPECT_FALSE(s.report);
-  }
-  // The kStuckTicks-th step without motion: detour with (1, 0) blocked. (1, 1) is a wall and
-  // (0,1)->(1,2), (3,2)->(4,1) would cut the walls' corners: the one way is around the ring.
-  s = tick_at(robot, truth, {0, 0}, 10.0f);
-  EXPECT_TRUE(s.path_changed);
-  const std::vector<Cell> detour = {{0, 0}, {0, 1}, {0, 2}, {1, 2}, {2, 2},
-                                    {3, 2}, {4, 2}, {4, 1}, {4, 0}};
-  EXPECT_EQ(s.path, detour);
-  EXPECT_FALSE(s.report);
-  EXPECT_EQ(robot.replans(), 2u);
-
-  // The count restarts: kStuckTicks more steps in place and it detours around (0, 1) instead,
-  // which is the straight path again.
-  for (int i = 1; i < RobotAgent::kStuckTicks; ++i) {
-    EXPECT_FALSE(tick_at(robot, truth, {0, 0}, 10.0f).path_changed) << i;
-  }
-  s = tick_at(robot, truth, {0, 0}, 10.0f);
-  EXPECT_TRUE(s.path_changed);
-  EXPECT_EQ(s.path, straight);
-  EXPECT_EQ(robot.replans(), 3u);
-}
-
-// Regression: a robot blocked next to its goal used to report Arrived; it never stood on it.
-TEST(RobotAgent, StuckWithinTwoCellsOfTheGoalIsBlockedNearNotArrived) {
-  const OccupancyGrid truth = swarm::test::grid_from({"......"});
-  RobotAgent near = agent_for(truth);
-  tick_at(near, truth, {0, 0}, 10.0f);
-  near.assign(5, Cell{2, 0});  // Chebyshev distance 2
-  EXPECT_TRUE(near.step().path_changed);
-  for (int i = 1; i < RobotAgent::kStuckTicks; ++i) EXPECT_FALSE(tick_at(near, truth, {0, 0}, 10.0f).report);
-  RobotAgent::Step s = tick_at(near, truth, {0, 0}, 10.0f);
-  ASSERT_TRUE(s.report);
-  EXPECT_EQ(*s.report, WaypointState::BlockedNear);
-  EXPECT_EQ(s.round, 5u);
-  EXPECT_TRUE(s.path_changed);
-  EXPECT_TRUE(s.path.empty());
-
-  // Three cells away it is not arrived; a 1-cell-high corridor has no detour, so the robot keeps
-  // its path and reports nothing.
-  RobotAgent far = agent_for(truth);
-  tick_at(far, truth, {0, 0}, 10.0f);
-  far.assign(5, Cell{3, 0});
-  EXPECT_TRUE(far.step().path_changed);
-  for (int i = 0; i < 2 * RobotAgent::kStuckTicks; ++i) {
-    s = tick_at(far, truth, {0, 0}, 10.0f);
-    EXPECT_FALSE(s.report) << i;
-    EXPECT_FALSE(s.path_changed) << i;
-  }
-  EXPECT_EQ(far.waypoint(), (std::optional<Cell>{Cell{3, 0}}));
+  // The same scan again changes nothing; a robot with no route sends the simulator nothing.
+  EXPECT_TRUE(robot.sense(start, ranges, 10.0f).empty());
+  EXPECT_FALSE(robot.step().path_changed);
 }
 
 // A corridor of five cells, robot 'A' at its west end.
@@ -348,7 +116,8 @@ TEST(RobotAgent, AReleaseThatArrivesBeforeItsRouteIsKeptForIt) {
   robot.release(7, 3);  // route 7's release, early
   robot.release(9, 1);  // another route's
   robot.follow(7, route, 1);
-  const RobotAgent::Step s = tick_at(robot, art.grid, a, 3.0f);
+  SentPart sent;
+  const RobotAgent::Step s = tick_at(robot, sent, art.grid, a, 3.0f);
   ASSERT_TRUE(s.path_changed);
   EXPECT_EQ(s.path, route);  // to index 3, not only 1
 }
@@ -466,11 +235,12 @@ TEST(RobotAgent, ARouteNotStartingWhereItStandsIsAbandonedAndTheRobotStops) {
   const Cell a = art.at.at('A');
   const auto along = [a](int i) { return Cell{a.x + i, a.y}; };
   robot.follow(7, {along(0), along(1), along(2), along(3)}, 3);
-  RobotAgent::Step s = tick_at(robot, art.grid, along(0), 3.0f);
+  SentPart sent;
+  RobotAgent::Step s = tick_at(robot, sent, art.grid, along(0), 3.0f);
   ASSERT_TRUE(s.path_changed);
-  (void)tick_at(robot, art.grid, along(1), 3.0f);
+  (void)tick_at(robot, sent, art.grid, along(1), 3.0f);
   robot.follow(8, {along(0), along(1), along(2), along(3), along(4)}, 4);  // from where it was
-  s = tick_at(robot, art.grid, along(2), 3.0f);
+  s = tick_at(robot, sent, art.grid, along(2), 3.0f);
   EXPECT_EQ(robot.following().state, planner::RouteState::Abandoned);
   ASSERT_TRUE(s.path_changed);
   EXPECT_TRUE(s.path.empty());  // stop

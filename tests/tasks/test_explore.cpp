@@ -233,18 +233,5 @@ TEST(ExploreTask, ThroughTheTrafficLayerUnderJitterTheNextPhaseStarts) {
   for (const auto& p : m["phases"]) swarm::test::expect_no_conflict(p);
 }
 
-// The paper's drive stays available: each robot plans its own way to its waypoint.
-TEST(ExploreTask, WithoutTheTrafficLayerRobotsDriveToTheirWaypointsThemselves) {
-  swarm::test::FakeSwarm s(swarm::test::setup_from_text(std::string(kTwoGroups) +
-                                                        "mission { phase { explore { traffic: false } } }"));
-  const auto m = s.run_to_end();
-  ASSERT_TRUE(m["complete"].get<bool>()) << m.dump();
-  const auto& p = swarm::test::phase_named(m, "explore");
-  EXPECT_FALSE(p["task"].contains("traffic"));
-  int reached = 0;  // the members' reports of arriving, counted by their leaders
-  for (const char* leader : {"leader-0", "leader-1"}) reached += m["agents"][leader]["waypoints_reached"].get<int>();
-  EXPECT_GT(reached, 0) << m["agents"].dump();
-}
-
 }  // namespace
 }  // namespace swarm::tasks

@@ -31,6 +31,9 @@ std::string check_error(const std::string& text) {
 }
 
 TEST(TaskChecks, EachTaskChecksItsOwnSettings) {
+  EXPECT_EQ(check_error("mission { phase { explore { traffic: false } } }"),
+            std::string("t.pbtxt: field mission.phase[0].explore.traffic: must ") + swarm::tasks::kOnlyTheLayer +
+                " (got false)");
   EXPECT_EQ(check_error("mission { phase { cover { traffic: false } } }"),
             std::string("t.pbtxt: field mission.phase[0].cover.traffic: must ") + swarm::tasks::kOnlyTheLayer +
                 " (got false)");

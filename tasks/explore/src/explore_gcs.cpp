@@ -33,18 +33,16 @@ std::optional<Cell> standing_cell(const planner::OccupancyGrid& map, Cell w) {
 }
 }  // namespace
 
-ExploreGcsTask::ExploreGcsTask(std::uint32_t phase, tasks::PlanningRoundsConfig config, std::optional<Drive> drive)
+ExploreGcsTask::ExploreGcsTask(std::uint32_t phase, tasks::PlanningRoundsConfig config, const Drive& drive)
     : phase_(phase), config_(std::move(config)), rounds_(config_) {
-  if (drive) {
-    MapfGcsTask::Lifelong lifelong;
-    lifelong.routes = [this](const GcsContext& ctx, const planner::OccupancyGrid& map, const std::vector<int>& robots,
-                             const char*) { return targets(ctx, map, robots); };
-    lifelong.done = [this](int robot, const MapfGcsTask::Stop& stop, bool reached) { target_done(robot, stop, reached); };
-    lifelong.window = drive->window;
-    lifelong.motion = planner::MotionModel::eight();  // the paper's robots, as the classic drive's
-    lifelong.map_grows = true;
-    drive_ = std::make_unique<MapfGcsTask>(drive->paths, phase, false, std::move(lifelong));
-  }
+  MapfGcsTask::Lifelong lifelong;
+  lifelong.routes = [this](const GcsContext& ctx, const planner::OccupancyGrid& map, const std::vector<int>& robots,
+                           const char*) { return targets(ctx, map, robots); };
+  lifelong.done = [this](int robot, const MapfGcsTask::Stop& stop, bool reached) { target_done(robot, stop, reached); };
+  lifelong.window = drive.window;
+  lifelong.motion = planner::MotionModel::eight();  // the paper's 8-connected robots
+  lifelong.map_grows = true;
+  drive_ = std::make_unique<MapfGcsTask>(drive.paths, phase, false, std::move(lifelong));
 }
 
 void ExploreGcsTask::start(GcsContext& ctx) {
@@ -59,12 +57,7 @@ void ExploreGcsTask::start(GcsContext& ctx) {
   group_arrived_.assign(static_cast<std::size_t>(t.groups()), true);
 }
 
-void ExploreGcsTask::on_round_done(int group, std::uint32_t round, GcsContext&) {
-  if (first_round_ && round >= *first_round_) rounds_.group_arrived(group, round - *first_round_ + 1);
-}
-
 void ExploreGcsTask::on_report(const task::Report& r, GcsContext& ctx) {
-  if (!drive_) return;
   const std::optional<tasks::RoundWaypoints> w = tasks::read_waypoints_report(r);
   if (!w) {
     if (driving_) drive_->on_report(r, ctx);
@@ -167,8 +160,8 @@ void ExploreGcsTask::step(GcsContext& ctx) {
     ctx.record.append(version);
   }
   // Done exploring, the robots may still be on their way: a rotation ordered goes first.
-  if (d.complete && drive_) drive_->wind_down();
-  complete_ = d.complete && !(drive_ && drive_->rotating(ctx.tick()));
+  if (d.complete) drive_->wind_down();
+  complete_ = d.complete && !drive_->rotating(ctx.tick());
 }
 
 ProgressLine ExploreGcsTask::progress(const GcsContext& ctx) const {
@@ -179,14 +172,11 @@ ProgressLine ExploreGcsTask::progress(const GcsContext& ctx) const {
 }
 
 nlohmann::json ExploreGcsTask::numbers() const {
-  nlohmann::json j = {{"planning_rounds", rounds_.round()}};
-  if (drive_) {
-    j["traffic"] = drive_->numbers();
-    j["waypoints_reached"] = targets_reached_;
-    j["waypoints_skipped"] = targets_skipped_;
-    j["waypoints_moved_to_a_known_cell"] = targets_moved_;
-  }
-  return j;
+  return {{"planning_rounds", rounds_.round()},
+          {"traffic", drive_->numbers()},
+          {"waypoints_reached", targets_reached_},
+          {"waypoints_skipped", targets_skipped_},
+          {"waypoints_moved_to_a_known_cell", targets_moved_}};
 }
 
 }  // namespace swarm::gcs

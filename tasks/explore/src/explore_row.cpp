@@ -38,18 +38,16 @@ TaskRow explore_row() {
     c.replan_threshold = e.replan_threshold_steps();
     // Ideal mode is the paper's "no delay" comparison: the map fused now is used now.
     c.map_delay_rounds = e.mode() == swarm::scenario::IDEAL ? 0 : e.global_map_delay_rounds();
-    std::optional<gcs::ExploreGcsTask::Drive> drive;
-    if (e.traffic()) drive = gcs::ExploreGcsTask::Drive{traffic_driving(), static_cast<int>(e.traffic_window_steps())};
-    return std::make_unique<gcs::ExploreGcsTask>(index, std::move(c), std::move(drive));
+    return std::make_unique<gcs::ExploreGcsTask>(
+        index, std::move(c), gcs::ExploreGcsTask::Drive{traffic_driving(), static_cast<int>(e.traffic_window_steps())});
   };
   row.leader = [](const Phase& phase, const app::RoleSetup& setup, int group, std::uint32_t) {
     const swarm::scenario::Explore& e = phase.explore();
-    return std::make_unique<leader::ExploreGroupTask>(
-        e, setup.world.scenario.seed(), setup.topology.robots_per_group(), group,
-        e.traffic() ? std::optional<swarm::scenario::Mapf>(traffic_driving()) : std::nullopt);
+    return std::make_unique<leader::ExploreGroupTask>(e, setup.world.scenario.seed(), group, traffic_driving());
   };
   row.check = [](const Phase& phase, const config::World&, const std::string& field, config::Problems& p) {
     p.at_least(field + ".traffic_window_steps", 1, phase.explore().traffic_window_steps());
+    if (!phase.explore().traffic()) p.add(field + ".traffic", kOnlyTheLayer, "false");
   };
   row.judge = [](const Phase&, const app::RoleSetup&, std::uint32_t) { return std::make_unique<ExploreJudge>(); };
   return row;

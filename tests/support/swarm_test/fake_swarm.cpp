@@ -76,7 +76,7 @@ FakeSwarm::FakeSwarm(app::RoleSetup setup, std::set<comm::AgentId> scripted, gcs
       } else {
         bodies_[id] = std::make_unique<member::RobotAgent>(setup_.world.truth.width(), setup_.world.truth.height(),
                                                            setup_.world.truth.resolution());
-        members_[id] = std::make_unique<member::MemberNode>(agent(id), setup_, g, i, *bodies_[id]);
+        members_[id] = std::make_unique<member::MemberNode>(agent(id), setup_, g, *bodies_[id]);
       }
     }
   }
@@ -102,7 +102,6 @@ void FakeSwarm::complete_endpoints(comm::AgentId a) {
     const int writers = static_cast<int>(leaders.size());
     sub(Tag<msgs::Heartbeat>{}, topic::kHeartbeat, LinkClass::LeaderGcs, writers);
     sub(Tag<msgs::MapPatch>{}, topic::kPatchGcs, LinkClass::LeaderGcs, writers);
-    sub(Tag<msgs::GroupStatus>{}, topic::kGroupStatus, LinkClass::LeaderGcs, writers);
     sub(Tag<msgs::TaskReport>{}, topic::kTaskReport, LinkClass::LeaderGcs, writers);
     sub(Tag<msgs::PlanReport>{}, topic::kPlanReport, LinkClass::Telemetry, writers);
     pub(Tag<msgs::PhaseStart>{}, topic::kPhase, LinkClass::LeaderGcs, leaders);
@@ -119,27 +118,22 @@ void FakeSwarm::complete_endpoints(comm::AgentId a) {
   pub(Tag<msgs::MotionCommand>{}, topic::kMotion, LinkClass::SimRobot, {t.sim()});
   // Every robot's member side (a candidate's too).
   sub(Tag<msgs::MapPatch>{}, topic::patch_down(g), LinkClass::MemberLeader, candidates);
-  sub(Tag<msgs::Assignment>{}, topic::assign(g), LinkClass::MemberLeader, candidates);
   sub(Tag<msgs::Route>{}, topic::route(g), LinkClass::MemberLeader, candidates);
   sub(Tag<msgs::RouteRelease>{}, topic::release(g), LinkClass::MemberLeader, candidates);
   pub(Tag<msgs::MapPatch>{}, topic::patch_up(g), LinkClass::MemberLeader, up);
-  pub(Tag<msgs::MemberStatus>{}, topic::status(g), LinkClass::MemberLeader, up);
   pub(Tag<msgs::RouteProgress>{}, topic::progress(g), LinkClass::MemberLeader, up);
   if (t.is_candidate(a)) {
     const int robots = static_cast<int>(others.size());
     sub(Tag<msgs::MapPatch>{}, topic::patch_up(g), LinkClass::MemberLeader, robots);
-    sub(Tag<msgs::MemberStatus>{}, topic::status(g), LinkClass::MemberLeader, robots);
     sub(Tag<msgs::RouteProgress>{}, topic::progress(g), LinkClass::MemberLeader, robots);
     sub(Tag<msgs::RoundStart>{}, topic::kRound, LinkClass::LeaderGcs, 1);
     sub(Tag<msgs::PhaseStart>{}, topic::kPhase, LinkClass::LeaderGcs, 1);
     sub(Tag<msgs::TaskOrder>{}, topic::kTaskOrder, LinkClass::LeaderGcs, 1);
     pub(Tag<msgs::MapPatch>{}, topic::kPatchGcs, LinkClass::LeaderGcs, {t.gcs()});
     pub(Tag<msgs::Heartbeat>{}, topic::kHeartbeat, LinkClass::LeaderGcs, {t.gcs()});
-    pub(Tag<msgs::GroupStatus>{}, topic::kGroupStatus, LinkClass::LeaderGcs, {t.gcs()});
     pub(Tag<msgs::PlanReport>{}, topic::kPlanReport, LinkClass::Telemetry, {t.gcs()});
     pub(Tag<msgs::TaskReport>{}, topic::kTaskReport, LinkClass::LeaderGcs, {t.gcs()});
     pub(Tag<msgs::MapPatch>{}, topic::patch_down(g), LinkClass::MemberLeader, others);
-    pub(Tag<msgs::Assignment>{}, topic::assign(g), LinkClass::MemberLeader, others);
     pub(Tag<msgs::Route>{}, topic::route(g), LinkClass::MemberLeader, others);
     pub(Tag<msgs::RouteRelease>{}, topic::release(g), LinkClass::MemberLeader, others);
   }

@@ -87,13 +87,6 @@ struct Route {
   std::uint32_t replaces = 0;
 };
 
-// A robot's report on its waypoint of a planning round (member::RobotAgent's waypoint states).
-struct WaypointReport {
-  int robot = 0;  // agent id
-  std::uint32_t round = 0;
-  std::uint8_t state = 0;  // 1 arrived, 2 unreachable, 3 blocked near it
-};
-
 // A leader -> the GCS, telemetry for the run record and the frontier pictures: what it planned in
 // a round, and from what.
 struct PlanTelemetry {

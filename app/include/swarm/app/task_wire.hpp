@@ -37,7 +37,6 @@ msgs::RouteRelease release_msg(comm::AgentId robot, std::uint32_t route_id, std:
 // Throws on a watch whose parts do not fit together.
 planner::mapf::Watch watch_from(const msgs::RouteRelease& msg);
 
-task::WaypointReport waypoint_report_from(const msgs::MemberStatus& msg);
 
 msgs::PlanReport plan_report_msg(const task::PlanTelemetry& plan, int group);
 

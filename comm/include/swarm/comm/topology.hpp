@@ -68,7 +68,6 @@ inline const std::string kDone = "done";
 inline const std::string kMotion = "motion";
 inline const std::string kPatchGcs = "patch_gcs";
 inline const std::string kRound = "round";
-inline const std::string kGroupStatus = "group_status";
 inline const std::string kHeartbeat = "heartbeat";
 inline const std::string kPlanReport = "plan_report";
 inline const std::string kPlanned = "planned";  // GCS -> watchers only (msgs::PlannedRoute)
@@ -83,8 +82,6 @@ inline const std::string kTaskReport = "task_report";
 inline std::string sense(AgentId robot) { return "sense_" + std::to_string(robot); }
 inline std::string patch_up(int group) { return "patch_up_g" + std::to_string(group); }
 inline std::string patch_down(int group) { return "patch_down_g" + std::to_string(group); }
-inline std::string assign(int group) { return "assign_g" + std::to_string(group); }
-inline std::string status(int group) { return "status_g" + std::to_string(group); }
 inline std::string route(int group) { return "route_g" + std::to_string(group); }
 inline std::string release(int group) { return "release_g" + std::to_string(group); }
 inline std::string progress(int group) { return "progress_g" + std::to_string(group); }

@@ -81,7 +81,6 @@ class GcsNode {
   bool settling_ = false;       // phase_ waits for its robots to stand still
   std::vector<bool> settled_;   // per group, while settling: its robots stand
   std::uint32_t settle_since_ = 0;  // the tick settling began
-  std::vector<msgs::GroupStatus> statuses_;
   std::vector<msgs::TaskReport> task_reports_;
   Progress progress_;
   record::RecordWriter record_;

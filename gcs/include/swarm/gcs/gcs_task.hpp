@@ -13,7 +13,7 @@
 //                infeasible. The GCS then ends the phase and the mission there, incomplete,
 //                instead of running on to max_ticks
 //   progress()   what the progress display shows
-//   on_report / on_round_done     the leaders' messages of the current phase
+//   on_report    the leaders' reports of the current phase
 //   numbers()    the task's own numbers: metrics.json phases[i].task
 // What a task sends and receives is plain C++ (app/task_messages.hpp); the node puts it on the
 // wire.
@@ -39,7 +39,7 @@ struct GcsOutlets {
   std::function<void(const task::Order&)> order;  // to every leader (the order names its group)
   // A planning round: to every leader, with the fused map of fused_tick (each adopts it as its
   // global map; leader/group_map.hpp). Returns the round's number, which the GCS counts across the
-  // run (metrics.json's planning_rounds and rounds); the leaders' round_done names it.
+  // run (metrics.json's planning_rounds and rounds); the leaders' waypoints name it.
   std::function<std::uint32_t(std::uint32_t fused_tick, const planner::OccupancyGrid& map)> round;
 };
 
@@ -74,7 +74,6 @@ class GcsTask {
   [[nodiscard]] virtual ProgressLine progress(const GcsContext& ctx) const = 0;
   virtual void on_report(const task::Report&, GcsContext&) {}
   // Group `group` reached every waypoint of planning round `round` (or could not).
-  virtual void on_round_done(int /*group*/, std::uint32_t /*round*/, GcsContext&) {}
   [[nodiscard]] virtual nlohmann::json numbers() const = 0;
 };
 

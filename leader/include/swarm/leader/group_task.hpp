@@ -6,9 +6,7 @@
 //   start(ctx)            the phase begins (phase 0 at tick 0; later ones when PhaseStart arrives)
 //   step(ctx)             every tick of the phase, after the due messages' handlers ran and
 //                         before the leader's own robot acts
-//   finish_step(ctx)      every tick, after the own robot acted (its waypoint report, if any,
-//                         came through on_waypoint)
-//   on_order / on_round / on_waypoint / on_progress / on_carrying
+//   on_order / on_round / on_progress / on_carrying
 //                         the messages of the current phase, routed by the node
 //   member_lost / member_back
 //                         a member the simulator declared lost, or one whose link healed
@@ -19,14 +17,13 @@
 //                         members may be half-way along routes the old leader sent
 //   numbers()             the task's own numbers for the leader's end-of-run report
 // What a task may do goes through the GroupContext: the group map, the living members and the
-// robots' true cells (the clock), the leader's own robot, and outlets that send routes, releases,
-// waypoints and reports, all plain C++ (app/task_messages.hpp). The node owns every topic (created once at start-up, as DDS discovery
+// robots' true cells (the clock), and outlets that send routes, releases and reports, all plain C++ (app/task_messages.hpp). The node owns every topic (created once at start-up, as DDS discovery
 // must be complete before tick 0), the map merging, the map relays to members and GCS, the
 // heartbeat and the leader's own robot; a task never touches DDS.
 //
 // Adding a task: tasks/api/include/swarm/tasks/task_row.hpp (a folder tasks/<name>/ with its GCS
 // part, this leader part and its simulator judge, and one registry row). Members know no task:
-// they drive to waypoints or follow routes.
+// they follow routes.
 #pragma once
 
 #include <cstdint>
@@ -40,8 +37,8 @@
 #include "swarm/app/role.hpp"
 #include "swarm/app/task_messages.hpp"
 #include "swarm/leader/group_map.hpp"
-#include "swarm/member/robot_agent.hpp"
 #include "swarm/planner/grid/grid.hpp"
+#include "swarm/planner/grid/route.hpp"
 #include "swarm/planner/mapf/release_watch.hpp"
 
 namespace swarm::leader {
@@ -56,11 +53,6 @@ struct GroupOutlets {
   std::function<void(int index, std::uint32_t route_id, std::uint32_t release, const planner::mapf::Watch& watch)>
       release;
   std::function<void(const task::Report&)> report;
-  // A planning round's waypoints, one per robot of the group by index (none: stay), to the members
-  // (the leader's own robot is the task's to assign).
-  std::function<void(std::uint32_t round, const std::vector<std::optional<planner::Cell>>&)> waypoints;
-  // To the GCS: the group has finished round `round`'s waypoints.
-  std::function<void(std::uint32_t round)> round_done;
   std::function<void(const task::PlanTelemetry&)> plan_telemetry;  // for the run record's pictures
 };
 
@@ -72,7 +64,6 @@ struct GroupContext {
   const task::Clock& clock;
   const std::vector<bool>& alive;  // per index of the group (the leader's own, `self`, always)
   GroupMap& map;
-  member::RobotAgent& own;         // the leader's robot
   GroupOutlets& out;
 
   const comm::Topology& topology() const { return setup.topology; }
@@ -88,10 +79,8 @@ class GroupTask {
   virtual ~GroupTask() = default;
   virtual void start(GroupContext& ctx) = 0;
   virtual void step(GroupContext& ctx) = 0;
-  virtual void finish_step(GroupContext&) {}
   virtual void on_order(const task::Order&, GroupContext&) {}
   virtual void on_round(std::uint32_t /*round*/, GroupContext&) {}
-  virtual void on_waypoint(const task::WaypointReport&, GroupContext&) {}
   // Progress of a member's route (index 0: the leader's own robot, polled by the node each tick).
   virtual void on_progress(int /*index*/, const planner::RouteProgress&, GroupContext&) {}
   // What a robot holds, from its gripper's sensor (with its progress; index `self`: the leader's

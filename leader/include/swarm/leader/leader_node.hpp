@@ -89,7 +89,6 @@ class LeaderNode {
   std::optional<std::uint32_t> round_;
   std::uint32_t last_round_ = 0;
   std::vector<msgs::TaskOrder> orders_;
-  std::vector<msgs::MemberStatus> statuses_;
   std::vector<msgs::RouteProgress> progress_;
   planner::RouteProgress own_progress_;
   GroupOutlets outlets_;

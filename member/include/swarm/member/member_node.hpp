@@ -1,8 +1,8 @@
 // swarm-member's node: a RobotAgent wired to its topics. Scans come from the simulator, map
 // changes go up to the group leader, the leader's group map changes and its orders come down:
-// waypoints (exploration: the robot plans its own way) or routes to follow exactly (every other
-// task), with releases and the watches that open a route further as the robots in the clock move
-// (watched_releases.hpp); the member reports its progress along a route. A member knows no task.
+// routes to follow exactly (the traffic layer's, in every task), with releases and the watches
+// that open a route further as the robots in the clock move (watched_releases.hpp); the member
+// reports its progress along a route. A member knows no task.
 //
 // It obeys only its group's leader of the moment (comm/leadership.hpp): orders from a robot that
 // did not lead the group at the tick they were sent are dropped and counted. A standby leader's
@@ -27,7 +27,7 @@ namespace swarm::member {
 class MemberNode {
  public:
   // `robot`: the robot's body and map, owned by the caller (a standby shares it with its leader side).
-  MemberNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, int group, int index, RobotAgent& robot);
+  MemberNode(comm::LockstepAgent& agent, const app::RoleSetup& setup, int group, RobotAgent& robot);
   // Every tick: step() while a member (it observes the clock's leaders too), observe() alone while
   // this robot leads.
   void observe(const msgs::Clock& clock) { leaders_.observe(clock); }
@@ -42,7 +42,6 @@ class MemberNode {
  private:
   comm::LockstepAgent& agent_;
   int group_;
-  int index_;
   // Whether `sender` led this group at `tick` (orders from anyone else are dropped).
   bool from_leader(const msgs::Stamp& stamp);
 
@@ -53,19 +52,17 @@ class MemberNode {
   std::uint64_t not_from_leader_ = 0;
   std::vector<planner::CellChange> pending_up_;
   comm::Mailbox::Outlet<msgs::MapPatch>& patch_up_;
-  comm::Mailbox::Outlet<msgs::MemberStatus>& status_;
   comm::Mailbox::Outlet<msgs::MotionCommand>& motion_;
   comm::Mailbox::Outlet<msgs::RouteProgress>& progress_;
   planner::RouteProgress reported_;  // the last progress sent to the leader
   std::vector<std::uint32_t> reported_carrying_;  // and what the robot held then
   comm::AgentId reported_to_ = 0;                 // and which leader it went to
   planner::PatchEncoding encoding_;
-  std::uint64_t assignments_ = 0;
   std::uint64_t routes_ = 0;
 };
 
-// Sends the robot's outputs of one step: a changed path to the simulator, a waypoint report to
-// the leader (through `report`). Shared by the member and the leader's own robot.
+// Sends a changed part of the robot's route to the simulator. Shared by the member and the
+// leader's own robot.
 void publish_motion(comm::Mailbox::Outlet<msgs::MotionCommand>& motion, comm::AgentId robot,
                     const RobotAgent::Step& step);
 // The group's candidate leaders but `self`: who reads what a member sends up.

@@ -1,19 +1,19 @@
-// One robot's own logic, free of DDS: it maps what its LiDAR sees, drives to its waypoint with A*
-// on what it knows, and re-plans when it meets an obstacle. Used by swarm-member for its robot and
-// by swarm-leader for the leader's own robot.
+// One robot's own logic, free of DDS: it maps what its LiDAR sees and drives exactly the routes
+// its leader gives it (the traffic layer's, docs/traffic.md), as far as they are released. It
+// plans no path of its own: every move of every robot comes from one conflict-free plan. Used by
+// swarm-member for its robot and by swarm-leader for the leader's own robot.
 //
-// Its paths go to the simulator as routes (sim/world.hpp) numbered 1, 2, ...; every scan comes
-// with the simulator's word on the latest route it applied (planner::RouteProgress), so the robot knows
-// exactly where along its route it is, and that a route still in flight (sent, not yet applied:
-// a delayed link) must not be judged yet.
+// Its parts of a route go to the simulator as routes (sim/world.hpp) numbered 1, 2, ...; every
+// scan comes with the simulator's word on the latest route it applied (planner::RouteProgress),
+// so the robot knows exactly where along its route it is, and that a route still in flight (sent,
+// not yet applied: a delayed link) must not be judged yet.
 //
 //   RobotAgent robot(map_width, map_height, resolution);
 //   auto changes = robot.sense(pose, ranges, max_range, report);  // send these to the leader
-//   robot.assign(round, waypoint);
-//   RobotAgent::Step s = robot.step();  // s.path_changed -> send s.path as route s.route_id
+//   robot.follow(id, cells, release);
+//   RobotAgent::Step s = robot.step(tick);  // s.path_changed -> send s.path as route s.route_id
 //
-// Unknown cells count as free for planning (optimistic), so a robot heads into unexplored space
-// and re-plans once its scans show the way is blocked. Not thread-safe.
+// Not thread-safe.
 #pragma once
 
 #include <cstdint>
@@ -25,11 +25,6 @@
 
 namespace swarm::member {
 
-// How a waypoint ended. BlockedNear: the robot could not get onto it for kStuckTicks (another
-// robot there or in the way) but stands within 2 cells: done for planning, never counted as reached.
-enum class WaypointState : std::uint8_t { Arrived = 1, Unreachable = 2, BlockedNear = 3 };
-
-
 class RobotAgent {
  public:
   RobotAgent(int width, int height, double resolution);
@@ -39,12 +34,9 @@ class RobotAgent {
                                          const planner::RouteProgress& route = {});
   // Map knowledge from elsewhere (the leader's group map); returns how many cells changed.
   int learn(const std::vector<planner::CellChange>& changes);
-  // A new waypoint for `round`; nullopt = stay. Replaces a route being followed.
-  void assign(std::uint32_t round, std::optional<planner::Cell> waypoint);
-
   // Follow the leader's route `id` exactly (planner/grid/route.hpp: cells[0] is where the robot stands
   // when it starts), as far as index `release`; the objects under the robot are picked up at the
-  // indices in `picks` and dropped at those in `drops`. Replaces a waypoint or an earlier route.
+  // indices in `picks` and dropped at those in `drops`. Replaces an earlier route.
   // The robot drives the released part, then waits for release() to go on. With a `start_tick`
   // (a step several robots make together) its first part goes to the simulator at once, to set
   // off in that tick of the simulator's, however long the command takes on its way. An empty
@@ -74,8 +66,6 @@ class RobotAgent {
     std::vector<std::uint32_t> pick_steps;     // its pick-up and drop indices (following a route)
     std::vector<std::uint32_t> drop_steps;
     std::uint32_t start_tick = 0;              // the simulator holds it till then (0: at once)
-    std::optional<WaypointState> report;       // the waypoint is done with
-    std::uint32_t round = 0;                   // the round the report belongs to
   };
   // `tick`: the lockstep tick (for a route's start tick).
   Step step(std::uint32_t tick = 0);
@@ -91,39 +81,22 @@ class RobotAgent {
 
   const planner::OccupancyGrid& map() const { return map_; }
   planner::Cell pose() const { return pose_; }
-  std::optional<planner::Cell> waypoint() const { return waypoint_; }
-  std::uint64_t replans() const { return replans_; }
-  // The latest route sent (empty after a stop) and its number.
-  const std::vector<planner::Cell>& route() const { return path_; }
+  // The number of the latest part sent to the simulator.
   std::uint32_t route_id() const { return sent_id_; }
 
-  // A robot that has not moved for this many ticks while it has a path tries a detour around the
-  // cell in front of it (another robot, usually), and counts as arrived within 2 cells of its goal.
-  static constexpr int kStuckTicks = 4;
-
  private:
-  bool in_flight() const { return report_.id != sent_id_; }
   void step_following(Step& out, std::uint32_t tick);
   // follow()'s route `id` in place of the one followed, keeping its place; false if they differ
   // where the robot may have got.
   bool take_cut(std::uint32_t id, std::vector<planner::Cell>& cells, std::uint32_t release,
                 std::vector<std::uint32_t>& picks, std::vector<std::uint32_t>& drops);
-  bool path_still_valid(std::size_t& at) const;
-  bool replan(std::optional<planner::Cell> avoid);
 
   std::vector<std::uint32_t> carrying_;
 
   planner::OccupancyGrid map_;
   planner::Cell pose_{-1, -1};
-  planner::Cell last_pose_{-1, -1};
-  int stuck_ticks_ = 0;
-  std::optional<planner::Cell> waypoint_;
-  std::uint32_t round_ = 0;
-  std::vector<planner::Cell> path_;
-  bool stop_sent_ = true;
   std::uint32_t sent_id_ = 0;
   planner::RouteProgress report_;
-  std::uint64_t replans_ = 0;
 
   // Following the leader's route: its cells, how far it is released, and which simulator route
   // (sent_id_) carries which part of it (leader index = base + simulator index).

@@ -1,11 +1,11 @@
 // The GCS's exploration task (docs/papers.md section 1): planning rounds on the fused map with the
 // paper's one-round delay (planning_rounds.hpp), each round's map to the leaders, completion when
 // no reachable frontier is left.
-// Through the traffic layer (`drive`, docs/traffic.md) the leaders send their rounds' waypoints
-// here (waypoint_report.hpp) and the GCS drives every robot to its waypoint in conflict-free
-// windows planned on the fused map as it grows (the mapf task's lifelong mode); a new round's
-// waypoints replace the old ones when the window being driven ends. A group has arrived when
-// every robot it gave a waypoint has reached it, or it was skipped as unreachable.
+// The leaders send their rounds' waypoints here (waypoint_report.hpp) and the GCS drives every
+// robot to its waypoint through the traffic layer (docs/traffic.md), in conflict-free windows
+// planned on the fused map as it grows (the mapf task's lifelong mode); a new round's waypoints
+// go into the next window. A group has arrived when every robot it gave a waypoint has reached
+// it, or it was skipped as unreachable.
 #pragma once
 
 #include <memory>
@@ -20,20 +20,18 @@ namespace swarm::gcs {
 
 class ExploreGcsTask : public GcsTask {
  public:
-  // `drive`: the traffic layer's settings and window length (none: each leader sends its
-  // waypoints to its robots, which drive there themselves).
+  // `drive`: the traffic layer's settings and window length.
   struct Drive {
     swarm::scenario::Mapf paths;
     int window = 16;
   };
-  ExploreGcsTask(std::uint32_t phase, tasks::PlanningRoundsConfig config, std::optional<Drive> drive = std::nullopt);
+  ExploreGcsTask(std::uint32_t phase, tasks::PlanningRoundsConfig config, const Drive& drive);
   void start(GcsContext& ctx) override;
   void step(GcsContext& ctx) override;
   [[nodiscard]] bool complete() const override { return complete_; }
-  [[nodiscard]] std::string given_up() const override { return drive_ ? drive_->given_up() : std::string(); }
+  [[nodiscard]] std::string given_up() const override { return drive_->given_up(); }
   void on_report(const task::Report& r, GcsContext& ctx) override;
   [[nodiscard]] ProgressLine progress(const GcsContext& ctx) const override;
-  void on_round_done(int group, std::uint32_t round, GcsContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
 
  private:
@@ -45,7 +43,6 @@ class ExploreGcsTask : public GcsTask {
   std::optional<std::uint32_t> first_round_;
   bool complete_ = false;
 
-  // Through the traffic layer.
   // The sequences the drive takes: every robot's waypoint, as a cell it can stand on.
   std::vector<std::vector<MapfGcsTask::Stop>> targets(const GcsContext& ctx, const planner::OccupancyGrid& map,
                                                        const std::vector<int>& robots);

@@ -1,9 +1,8 @@
 // The leader's exploration task (docs/papers.md section 1): at every planning round the GCS starts, it
-// plans the group's waypoints on the stale global map and the group map (planner/explore/explore.hpp),
-// assigns them, and tells the GCS when the whole group is done with them.
-// Through the traffic layer (`traffic`, docs/traffic.md) it sends the waypoints to the GCS instead
-// (waypoint_report.hpp), which judges the round's arrivals itself, and drives the GCS's windows
-// as a mapf plan (tasks/mapf/mapf_leader.hpp).
+// plans the group's waypoints on the stale global map and the group map (planner/explore/explore.hpp)
+// and sends them to the GCS (waypoint_report.hpp), which drives every robot there through the
+// traffic layer (docs/traffic.md) and judges the round's arrivals itself; the leader drives the
+// GCS's windows as a mapf plan (tasks/mapf/mapf_leader.hpp).
 #pragma once
 
 #include <cstdint>
@@ -19,20 +18,16 @@ namespace swarm::leader {
 
 class ExploreGroupTask : public GroupTask {
  public:
-  // `drive`: the traffic layer's driving settings (none: the classic drive, waypoints to the robots).
-  ExploreGroupTask(const swarm::scenario::Explore& config, std::uint64_t seed, int robots_per_group, int group,
-                   std::optional<swarm::scenario::Mapf> drive = std::nullopt);
+  // `drive`: the traffic layer's driving settings.
+  ExploreGroupTask(const swarm::scenario::Explore& config, std::uint64_t seed, int group,
+                   const swarm::scenario::Mapf& drive);
   void start(GroupContext& ctx) override;
   void on_order(const task::Order& order, GroupContext& ctx) override;
   void on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) override;
   void took_over(GroupContext& ctx) override;
   void step(GroupContext& ctx) override;
-  void finish_step(GroupContext& ctx) override;
   void gcs_back(GroupContext& ctx) override;
   void on_round(std::uint32_t round, GroupContext& ctx) override;
-  void on_waypoint(const task::WaypointReport& s, GroupContext& ctx) override;
-  void member_lost(int index, GroupContext& ctx) override;
-  void member_back(int index, GroupContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
   [[nodiscard]] bool numbers_at_top_level() const override { return true; }
 
@@ -40,18 +35,15 @@ class ExploreGroupTask : public GroupTask {
   void plan(std::uint32_t round, GroupContext& ctx);
 
   planner::ExploreConfig explore_;
-  std::unique_ptr<MapfGroupTask> drive_;  // through the traffic layer
-  task::Report sent_waypoints_;           // through the layer: the round's, as sent to the GCS
+  MapfGroupTask drive_;          // the traffic layer's windows
+  task::Report sent_waypoints_;  // the round's, as sent to the GCS
   std::optional<std::uint32_t> pending_round_;
   std::uint32_t round_ = 0;
-  std::vector<bool> arrived_;
-  bool group_reported_ = true;
   // Numbers for the run's metrics (wall-clock planning time is not part of the deterministic record).
   std::uint64_t rounds_planned_ = 0;
   std::uint64_t case_a_ = 0;
   std::uint64_t case_b_ = 0;
   double planning_seconds_ = 0;
-  std::uint64_t waypoints_[4] = {0, 0, 0, 0};  // by WaypointState (1 arrived, 2 unreachable, 3 blocked near)
 };
 
 // The explore planner's settings from the scenario's.

@@ -1,6 +1,6 @@
 // Exploration through the traffic layer (docs/traffic.md): a leader plans its round's waypoints
-// as always, but sends them to the GCS, which drives every robot to its waypoint in the layer's
-// conflict-free windows, instead of to its robots. The report:
+// and sends them to the GCS, which drives every robot to its waypoint in the layer's
+// conflict-free windows. The report:
 //   Report.values = [kWaypointsReport, round, robot, robot, ...]   (agent ids)
 //   Report.cells  = the waypoint of each robot listed, in order
 // A robot not listed has no waypoint this round. The round is the one on the wire (the GCS's

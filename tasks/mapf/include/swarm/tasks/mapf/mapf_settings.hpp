@@ -25,10 +25,10 @@ namespace swarm::tasks {
 // 100 / 284 / 278 against 108 / 288 / 288.
 [[nodiscard]] swarm::scenario::Mapf traffic_driving();
 
-// What a cover or collect phase's `traffic: false` is told: the classic drives are gone.
+// What an explore, cover or collect phase's `traffic: false` is told: the classic drives are gone.
 inline constexpr const char* kOnlyTheLayer =
-    "be true: the classic drive (each leader driving its members, with detours and back-offs) is gone, and "
-    "every cover and collect phase drives through the traffic layer (docs/traffic.md)";
+    "be true: the classic drive (each robot or leader finding its own way, with detours and back-offs) is gone, "
+    "and every explore, cover and collect phase drives through the traffic layer (docs/traffic.md)";
 
 // The MAPF solver of a mapf phase (ECBS with its w by default).
 [[nodiscard]] planner::mapf::SolverConfig mapf_solver_config(const swarm::scenario::Mapf& mapf, std::uint64_t seed);
