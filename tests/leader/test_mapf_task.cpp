@@ -240,6 +240,51 @@ TEST(MapfTask, ARobotLostRoundARotationsTickNeverSplitsTheRotation) {
   }
 }
 
+// The same rotation across groups, and group 1's leader, beside it, lost at some tick round the
+// rotation's: its standby member-1-1, one of the rotation's robots, takes the group over from the
+// GCS's orders it kept, the Rotate among them. It stops its robots where they stand, but a
+// rotation already ordered goes first (the GCS's Hold waits for it too): stopped at once, its
+// robots would stand while the other group's moved into them (7 vertex conflicts for each loss at
+// ticks 1-7, before). Whenever the loss, the rotation goes whole or not at all, and the living
+// reach their goals.
+TEST(MapfTask, AStandbyTakingOverRoundARotationsTickNeverSplitsTheRotation) {
+  const auto truth = swarm::test::grid_from({"##########", "#..#.....#", "#........#", "##########"});
+  for (std::uint32_t lost_at = 1; lost_at <= 11; ++lost_at) {  // the plan's end is at 12
+    SCOPED_TRACE("leader-1 lost at tick " + std::to_string(lost_at));
+    auto sc = config::parse_scenario_text(
+        "groups: 2 robots_per_group: 3 max_ticks: 300 links { member_leader { delay_ticks: 2 jitter_ticks: 3 } } "
+        "mission { phase { mapf { execution: MAPF_EXECUTE_ADG solver: MAPF_CBS } } }",
+        "rotation and take-over test");
+    auto setup = swarm::test::setup_for(truth, {1, 1}, sc);
+    const comm::Topology& t = setup.topology;
+    const std::vector<planner::Cell> ring{{1, 1}, {1, 2}, {2, 2}, {2, 1}};
+    const std::vector<comm::AgentId> on_ring{t.robot(0, 0), t.robot(0, 1), t.robot(1, 1), t.robot(1, 2)};
+    std::vector<planner::Cell> goals(static_cast<std::size_t>(t.robots()));
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      setup.world.robot_cells[on_ring[i]] = ring[i];
+      goals[on_ring[i]] = ring[(i + 1) % ring.size()];
+    }
+    setup.world.robot_cells[t.robot(0, 2)] = {4, 1};
+    setup.world.robot_cells[t.leader(1)] = {4, 2};
+    goals[t.robot(0, 2)] = {8, 1};
+    goals[t.leader(1)] = {8, 2};
+    set_goals(setup, truth, goals, "rotation and take-over test");
+    swarm::test::FakeSwarm s(setup);
+    const auto m = s.run_to_end([&](std::uint32_t tick) {
+      if (tick == lost_at) s.disconnect(t.leader(1));
+    });
+    ASSERT_TRUE(m["complete"].get<bool>());
+    ASSERT_EQ(m["faults"]["leader_handovers"].size(), 1u);
+    const auto& p = mapf_phase(m);
+    EXPECT_EQ(p["task"]["robots_at_goal"], 5);
+    EXPECT_EQ(p["motion"]["vertex_conflict_events"], 0) << p["motion"];
+    EXPECT_EQ(p["motion"]["edge_conflict_events"], 0);
+    EXPECT_EQ(p["motion"]["blocked_moves"], 0);
+    std::cerr << "leader-1 lost at " << lost_at << ": plans " << p["task"]["plans"].size() << ", rotations ordered "
+              << p["task"]["rotations_ordered"] << "\n";
+  }
+}
+
 // leader-1 is lost midway (its robot with it): member-1-1, its standby, takes the group over. It
 // cannot know how far its robots got along the old leader's routes, so it stops them where they
 // stand; the GCS holds the plan of a group whose leader changed, and once every group stands still

@@ -36,6 +36,7 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
   seq_ = o.seq;
   chain_first_ = o.seq;
   have_plan_ = true;
+  adopted_rotations_.clear();
   // Its first window is released whole; the GCS's relays raise the limit from there.
   limit_ = planner::mapf::last_time(paths);
   holding_ = false;
@@ -130,8 +131,12 @@ void MapfGroupTask::on_order(const task::Order& o, GroupContext& ctx) {
     return;
   }
   if (o.kind == task::OrderKind::Rotate) {
-    if (!adopting_ && stopping_.empty() && !stopped_all_ && o.values.size() == 3 && !timed_ && o.values[1] >= 0 &&
-        static_cast<std::size_t>(o.values[1]) < adg_.rotations.size()) {
+    if (o.values.size() != 3 || timed_ || o.values[1] < 0 || static_cast<std::size_t>(o.values[1]) >= adg_.rotations.size()) {
+      return;
+    }
+    if (adopting_) {
+      adopted_rotations_.emplace_back(o.values[1], static_cast<std::uint32_t>(o.values[2]));
+    } else if (stopping_.empty() && !stopped_all_) {
       rotate(o.values[1], static_cast<std::uint32_t>(o.values[2]), ctx);
     }
     return;
@@ -286,11 +291,11 @@ task::Route MapfGroupTask::route_from(std::size_t k, std::uint32_t from) const {
   return r;
 }
 
-void MapfGroupTask::stop_own_robots(GroupContext& ctx) {
+void MapfGroupTask::stop_own_robots(GroupContext& ctx, const std::vector<bool>& except) {
   if (!stopping_.empty() || stopped_all_) return;  // stopped already
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
-    if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
+    if (!ctx.alive[static_cast<std::size_t>(index_of_[ku])] || (ku < except.size() && except[ku])) continue;
     const task::Route stop;  // empty: stop where it stands
     route_id_[ku] = ctx.out.route(index_of_[ku], stop);
     route_start_[ku] = 0;
@@ -393,8 +398,10 @@ void MapfGroupTask::step(GroupContext& ctx) {
   if (adopting_) {
     adopting_ = false;
     // Timed, the robots keep to the plan's timing until the GCS's hold, which reaches every leader
-    // at one tick, stops them all together; by the graph they may stop at once (the others wait).
-    if (have_plan_ && (!timed_ || holding_)) stop_own_robots(ctx);
+    // at one tick, stops them all together; by the graph they may stop at once (the others wait),
+    // but for a rotation ordered for a tick still to come: its robots of the other groups move
+    // then, and so must this group's, which then stand at their step's end.
+    if (have_plan_ && (!timed_ || holding_)) stop_own_robots(ctx, adopt_rotations(ctx));
   }
   if (!have_plan_) return;
   // Reports, and the GCS's relays of them to the other leaders, can be lost (a lossy link): every
@@ -430,6 +437,25 @@ void MapfGroupTask::step(GroupContext& ctx) {
   r.values.insert(r.values.end(), report_.begin(), report_.end());
   report_.clear();
   ctx.out.report(r);
+}
+
+std::vector<bool> MapfGroupTask::adopt_rotations(GroupContext& ctx) {
+  std::vector<bool> rotating(routes_.size(), false);
+  for (const auto& [q, tick] : adopted_rotations_) {
+    if (tick < ctx.clock.tick) continue;  // gone, or not, under the old leader
+    // The old leader's routes for it may be held by the simulator already; the same again (under
+    // this leader's ids) replaces them, or moves the robots if they never came. Each robot stands
+    // at its step's start: the GCS orders a rotation only then.
+    for (const planner::mapf::Need& m : adg_.rotations[static_cast<std::size_t>(q)]) {
+      const auto ku = static_cast<std::size_t>(m.robot);
+      if (index_of_[ku] < 0 || m.step == 0 || ctx.cell_of(index_of_[ku]) != routes_[ku][m.step - 1]) continue;
+      progress_[ku] = m.step - 1;
+      rotating[ku] = true;
+    }
+    rotate(q, tick, ctx);
+  }
+  adopted_rotations_.clear();
+  return rotating;
 }
 
 void MapfGroupTask::gcs_back(GroupContext&) {

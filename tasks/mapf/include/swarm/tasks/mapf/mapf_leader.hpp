@@ -21,7 +21,8 @@
 // without sending it, stops each of its robots where it stands (an empty route, which the
 // simulator confirms as Stopped; timed, at the GCS's hold, with every other group) and reports
 // Held once all have stopped; the GCS, which holds a plan whose group changed leader, then plans
-// again from where every robot stands.
+// again from where every robot stands. A rotation ordered for a tick still to come goes first:
+// its robots get their step of it (the other groups' robots make theirs then) and stand after it.
 // A planned route's pick-up and drop steps (the traffic layer's collect stops) go with the route
 // its robot drives, moved to the step the robot stands on at that time of the plan.
 // A window that continues the plan (the traffic layer's next one, sent while this one is driven)
@@ -128,7 +129,12 @@ class MapfGroupTask : public GroupTask {
   bool adopting_ = false;
   std::vector<int> stopping_;  // plan indices
   bool stopped_all_ = false;   // after a take-over: every own robot confirmed stopped
-  void stop_own_robots(GroupContext& ctx);
+  // `except`: per plan index, robots not to stop (a rotation's, adopt_rotations).
+  void stop_own_robots(GroupContext& ctx, const std::vector<bool>& except = {});
+  // Taking over: the rotations ordered for this tick or later (kept from the replayed orders) are
+  // sent to this group's robots; returns, per plan index, the robots that make a step of them.
+  std::vector<bool> adopt_rotations(GroupContext& ctx);
+  std::vector<std::pair<int, std::uint32_t>> adopted_rotations_;  // (rotation, tick), replayed
   bool reported_done_ = false;
   bool reported_held_ = false;
   std::uint64_t releases_sent_ = 0;
