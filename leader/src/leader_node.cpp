@@ -131,6 +131,7 @@ void LeaderNode::enter_phase() {
   if (next_phase_ && next_phase_->phase < tasks_.size()) {
     phase_ = next_phase_->phase;
     started_ = false;
+    taking_over_ = false;  // a new phase's task no leader has started yet: it starts afresh
     settling_ = next_phase_->settle;
     stops_sent_ = settle_reported_ = false;
     stopping_.clear();
@@ -192,9 +193,11 @@ void LeaderNode::take_over(const msgs::Clock& clock) {
     alive_[static_cast<std::size_t>(i)] = i == self_index_ || clock.robots()[topology_.robot(group_, i)].alive();
   }
   // The current phase's task starts afresh from the GCS's order (kept) and, exploring, from the
-  // latest round: a new round's plan at once.
+  // latest round: a new round's plan at once. It takes over what the old leader drove, unless the
+  // phase has not started yet (settling: no leader has started its task, and the GCS's plan for
+  // it will be made with this leader in it).
   started_ = false;
-  taking_over_ = true;
+  taking_over_ = !settling_;
   stops_sent_ = settle_reported_ = false;  // settling: this leader stops the robots itself
   stopping_.clear();
   own_carrying_.reset();

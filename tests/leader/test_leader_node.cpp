@@ -26,6 +26,8 @@
 #include "swarm/tasks/explore/waypoint_report.hpp"
 #include "swarm_test/ascii_grid.hpp"
 #include "swarm_test/fake_swarm.hpp"
+#include "swarm_test/metrics_fixture.hpp"
+#include "swarm_test/phase_checks.hpp"
 
 namespace swarm::leader {
 namespace {
@@ -217,6 +219,40 @@ TEST(LeaderNode, AStandbyTakesOverALostLeaderAndTheMissionCompletes) {
   EXPECT_TRUE(led[0]["to_tick"].is_null());
   EXPECT_GT(m["agents"]["member-1-1"]["rounds_planned"].get<int>(), 0);
   EXPECT_GE(m["explored_fraction"].get<double>(), 0.99);
+}
+
+// leader-1 is lost in the settling between exploration and cover (its robots being stopped): its
+// standby takes the group over, stops the robots itself, and starts cover afresh once the GCS
+// starts it, from the plan the GCS makes then (with the new leader in it). Before, it took that
+// plan as a plan to adopt mid-drive, stopped its robots and waited for a hold that never came:
+// the group never moved and cover stalled (small, member<->leader delay 3 +- 2: 30.5 % covered).
+TEST(LeaderNode, AStandbyTakingOverBetweenPhasesStartsTheNextPhaseAfresh) {
+  const std::string text = "map: 'small' groups: 2 robots_per_group: 3 max_ticks: 2000 "
+                           "links { member_leader { delay_ticks: 3 jitter_ticks: 2 } } "
+                           "mission { phase { explore {} } phase { cover {} } }";
+  std::uint32_t explored_at = 0;
+  {
+    swarm::test::FakeSwarm s(swarm::test::setup_from_text(text));
+    const auto m = s.run_to_end();
+    ASSERT_TRUE(m["complete"].get<bool>());
+    explored_at = m["phases"][0]["end_tick"].get<std::uint32_t>();
+    ASSERT_GT(m["phases"][1]["start_tick"].get<std::uint32_t>(), explored_at + 2);  // a settling to lose it in
+  }
+  auto setup = swarm::test::setup_from_text(text);
+  swarm::test::FakeSwarm s(setup);
+  const auto m = s.run_to_end([&](std::uint32_t tick) {
+    if (tick == explored_at + 1) s.disconnect(setup.topology.leader(1));
+  });
+  ASSERT_TRUE(m["complete"].get<bool>()) << m["phases"][1]["gave_up"];
+  const auto& h = m["faults"]["leader_handovers"];
+  ASSERT_EQ(h.size(), 1u) << h;
+  EXPECT_LT(h[0]["at_tick"].get<std::uint32_t>(), m["phases"][1]["start_tick"].get<std::uint32_t>());
+  const auto& cover = swarm::test::phase_named(m, "cover");
+  EXPECT_EQ(cover["task"]["covered_fraction"], 1.0);
+  for (const char* robot : {"member-1-1", "member-1-2"}) {
+    EXPECT_GT(cover["motion"]["per_robot"][robot]["moves"].get<int>(), 0) << robot;
+  }
+  swarm::test::expect_no_conflict(cover);
 }
 
 // Bytes that do not decode: a global map of the wrong size in a RoundStart (decoded in the
