@@ -199,89 +199,71 @@ TEST(MapfTask, ARotationAcrossGroupsMovesInOneTickWhenCommandsToTheSimulatorAreL
   }
 }
 
-// The same rotation across groups, and beside it two robots crossing a room, one of which is lost
-// at some tick round the rotation's: the plan is held, and the Hold must not reach some of the
-// rotation's robots before its tick and others after (those would move into robots that stopped).
-// Whenever the loss, the rotation goes whole or not at all, and the living reach their goals.
-TEST(MapfTask, ARobotLostRoundARotationsTickNeverSplitsTheRotation) {
+// The 2 x 2 rotation across two groups (`on_ring`: its robots, two of each group) under
+// member<->leader delay 2 + 0..3, and beside it the two other robots crossing a room (`beside`),
+// `lost` of them lost at tick `lost_at`: the mission's metrics. Whenever the loss, the rotation
+// must go whole or not at all, and the living reach their goals.
+nlohmann::json a_ring_and_a_loss(const std::vector<std::pair<int, int>>& on_ring,
+                                 const std::vector<std::pair<int, int>>& beside, comm::AgentId lost,
+                                 std::uint32_t lost_at) {
   const auto truth = swarm::test::grid_from({"##########", "#..#.....#", "#........#", "##########"});
+  auto sc = config::parse_scenario_text(
+      "groups: 2 robots_per_group: 3 max_ticks: 300 links { member_leader { delay_ticks: 2 jitter_ticks: 3 } } "
+      "mission { phase { mapf { execution: MAPF_EXECUTE_ADG solver: MAPF_CBS } } }",
+      "rotation and loss test");
+  auto setup = swarm::test::setup_for(truth, {1, 1}, sc);
+  const comm::Topology& t = setup.topology;
+  const std::vector<planner::Cell> ring{{1, 1}, {1, 2}, {2, 2}, {2, 1}};
+  std::vector<planner::Cell> goals(static_cast<std::size_t>(t.robots()));
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const comm::AgentId r = t.robot(on_ring[i].first, on_ring[i].second);
+    setup.world.robot_cells[r] = ring[i];
+    goals[r] = ring[(i + 1) % ring.size()];
+  }
+  for (std::size_t i = 0; i < beside.size(); ++i) {
+    const comm::AgentId r = t.robot(beside[i].first, beside[i].second);
+    setup.world.robot_cells[r] = {4, static_cast<int>(i) + 1};
+    goals[r] = {8, static_cast<int>(i) + 1};
+  }
+  set_goals(setup, truth, goals, "rotation and loss test");
+  swarm::test::FakeSwarm s(setup);
+  return s.run_to_end([&](std::uint32_t tick) {
+    if (tick == lost_at) s.disconnect(lost);
+  });
+}
+
+void expect_the_rotation_whole(const nlohmann::json& m) {
+  ASSERT_TRUE(m["complete"].get<bool>());
+  const auto& p = mapf_phase(m);
+  EXPECT_EQ(p["task"]["robots_at_goal"], 5);
+  EXPECT_EQ(p["motion"]["vertex_conflict_events"], 0) << p["motion"];
+  EXPECT_EQ(p["motion"]["edge_conflict_events"], 0);
+  EXPECT_EQ(p["motion"]["blocked_moves"], 0);
+}
+
+// One of the robots beside the rotation is lost at some tick round the rotation's: the plan is
+// held, and the Hold must not reach some of the rotation's robots before its tick and others after
+// (those would move into robots that stopped).
+TEST(MapfTask, ARobotLostRoundARotationsTickNeverSplitsTheRotation) {
   for (std::uint32_t lost_at = 1; lost_at <= 10; ++lost_at) {
     SCOPED_TRACE("robot lost at tick " + std::to_string(lost_at));
-    auto sc = config::parse_scenario_text(
-        "groups: 2 robots_per_group: 3 max_ticks: 300 links { member_leader { delay_ticks: 2 jitter_ticks: 3 } } "
-        "mission { phase { mapf { execution: MAPF_EXECUTE_ADG solver: MAPF_CBS } } }",
-        "rotation and loss test");
-    auto setup = swarm::test::setup_for(truth, {1, 1}, sc);
-    const comm::Topology& t = setup.topology;
-    const std::vector<planner::Cell> ring{{1, 1}, {1, 2}, {2, 2}, {2, 1}};
-    const std::vector<comm::AgentId> on_ring{t.robot(0, 0), t.robot(0, 1), t.robot(1, 0), t.robot(1, 1)};
-    std::vector<planner::Cell> goals(static_cast<std::size_t>(t.robots()));
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      setup.world.robot_cells[on_ring[i]] = ring[i];
-      goals[on_ring[i]] = ring[(i + 1) % ring.size()];
-    }
-    setup.world.robot_cells[t.robot(0, 2)] = {4, 1};
-    setup.world.robot_cells[t.robot(1, 2)] = {4, 2};
-    goals[t.robot(0, 2)] = {8, 1};
-    goals[t.robot(1, 2)] = {8, 2};
-    set_goals(setup, truth, goals, "rotation and loss test");
-    swarm::test::FakeSwarm s(setup);
-    const auto m = s.run_to_end([&](std::uint32_t tick) {
-      if (tick == lost_at) s.disconnect(t.robot(0, 2));
-    });
-    ASSERT_TRUE(m["complete"].get<bool>());
-    const auto& p = mapf_phase(m);
-    EXPECT_EQ(p["task"]["robots_at_goal"], 5);
-    EXPECT_EQ(p["motion"]["vertex_conflict_events"], 0) << p["motion"];
-    EXPECT_EQ(p["motion"]["edge_conflict_events"], 0);
-    EXPECT_EQ(p["motion"]["blocked_moves"], 0);
-    std::cerr << "lost at " << lost_at << ": plans " << p["task"]["plans"].size() << ", rotations ordered "
-              << p["task"]["rotations_ordered"] << "\n";
+    const comm::Topology t(2, 3);
+    expect_the_rotation_whole(a_ring_and_a_loss({{0, 0}, {0, 1}, {1, 0}, {1, 1}}, {{0, 2}, {1, 2}}, t.robot(0, 2), lost_at));
   }
 }
 
-// The same rotation across groups, and group 1's leader, beside it, lost at some tick round the
-// rotation's: its standby member-1-1, one of the rotation's robots, takes the group over from the
-// GCS's orders it kept, the Rotate among them. It stops its robots where they stand, but a
-// rotation already ordered goes first (the GCS's Hold waits for it too): stopped at once, its
-// robots would stand while the other group's moved into them (7 vertex conflicts for each loss at
-// ticks 1-7, before). Whenever the loss, the rotation goes whole or not at all, and the living
-// reach their goals.
+// Group 1's leader, beside the rotation, is lost at some tick round the rotation's: its standby
+// member-1-1, one of the rotation's robots, takes the group over from the GCS's orders it kept,
+// the Rotate among them. It stops its robots where they stand, but a rotation already ordered goes
+// first (the GCS's Hold waits for it too): stopped at once, its robots would stand while the other
+// group's moved into them (7 vertex conflicts for each loss at ticks 1-7, before).
 TEST(MapfTask, AStandbyTakingOverRoundARotationsTickNeverSplitsTheRotation) {
-  const auto truth = swarm::test::grid_from({"##########", "#..#.....#", "#........#", "##########"});
   for (std::uint32_t lost_at = 1; lost_at <= 11; ++lost_at) {  // the plan's end is at 12
     SCOPED_TRACE("leader-1 lost at tick " + std::to_string(lost_at));
-    auto sc = config::parse_scenario_text(
-        "groups: 2 robots_per_group: 3 max_ticks: 300 links { member_leader { delay_ticks: 2 jitter_ticks: 3 } } "
-        "mission { phase { mapf { execution: MAPF_EXECUTE_ADG solver: MAPF_CBS } } }",
-        "rotation and take-over test");
-    auto setup = swarm::test::setup_for(truth, {1, 1}, sc);
-    const comm::Topology& t = setup.topology;
-    const std::vector<planner::Cell> ring{{1, 1}, {1, 2}, {2, 2}, {2, 1}};
-    const std::vector<comm::AgentId> on_ring{t.robot(0, 0), t.robot(0, 1), t.robot(1, 1), t.robot(1, 2)};
-    std::vector<planner::Cell> goals(static_cast<std::size_t>(t.robots()));
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      setup.world.robot_cells[on_ring[i]] = ring[i];
-      goals[on_ring[i]] = ring[(i + 1) % ring.size()];
-    }
-    setup.world.robot_cells[t.robot(0, 2)] = {4, 1};
-    setup.world.robot_cells[t.leader(1)] = {4, 2};
-    goals[t.robot(0, 2)] = {8, 1};
-    goals[t.leader(1)] = {8, 2};
-    set_goals(setup, truth, goals, "rotation and take-over test");
-    swarm::test::FakeSwarm s(setup);
-    const auto m = s.run_to_end([&](std::uint32_t tick) {
-      if (tick == lost_at) s.disconnect(t.leader(1));
-    });
-    ASSERT_TRUE(m["complete"].get<bool>());
-    ASSERT_EQ(m["faults"]["leader_handovers"].size(), 1u);
-    const auto& p = mapf_phase(m);
-    EXPECT_EQ(p["task"]["robots_at_goal"], 5);
-    EXPECT_EQ(p["motion"]["vertex_conflict_events"], 0) << p["motion"];
-    EXPECT_EQ(p["motion"]["edge_conflict_events"], 0);
-    EXPECT_EQ(p["motion"]["blocked_moves"], 0);
-    std::cerr << "leader-1 lost at " << lost_at << ": plans " << p["task"]["plans"].size() << ", rotations ordered "
-              << p["task"]["rotations_ordered"] << "\n";
+    const comm::Topology t(2, 3);
+    const auto m = a_ring_and_a_loss({{0, 0}, {0, 1}, {1, 1}, {1, 2}}, {{0, 2}, {1, 0}}, t.leader(1), lost_at);
+    expect_the_rotation_whole(m);
+    EXPECT_EQ(m["faults"]["leader_handovers"].size(), 1u);
   }
 }
 
