@@ -113,6 +113,36 @@ TEST(CollectTask, ThroughTheTrafficLayerALostRobotsLoadIsDeliveredByTheOthers) {
   }
 }
 
+// An object lies under a robot lost before collect starts (here in a mapf phase that leaves every
+// robot where it stands): no living robot can ever pick it up. Once every other object is
+// delivered the phase is given up (the mission ends incomplete, exit 3) and says why, instead of
+// running on to max_ticks.
+TEST(CollectTask, AnObjectUnderALostRobotIsGivenUpSayingWhy) {
+  const std::string base = "map: 'small' groups: 2 robots_per_group: 2 max_ticks: 3000 ";
+  const auto probe = swarm::test::setup_from_text(base);
+  const comm::Topology& t = probe.topology;
+  const comm::AgentId lost = t.robot(1, 1);
+  const double m_per_cell = probe.world.frame.resolution;
+  const auto at = [&](comm::AgentId r) {
+    const planner::Cell c = probe.world.robot_cells[r];
+    return "{ x: " + std::to_string((c.x + 0.5) * m_per_cell) + " y: " + std::to_string((c.y + 0.5) * m_per_cell) + " }";
+  };
+  std::string stay;  // every robot's mapf goal: where it stands
+  for (int r = 0; r < t.robots(); ++r) stay += "goals " + at(static_cast<comm::AgentId>(r)) + " ";
+  const std::string objects = "objects { at " + at(lost) + " type: 0 } objects { at " + at(t.robot(0, 1)) + " type: 0 } ";
+  auto setup = swarm::test::setup_from_text(base + "mission { phase { mapf { " + stay + "} } phase { collect { types: 1 " +
+                                            objects + "} } }");
+  swarm::test::FakeSwarm s(setup);
+  const auto m = s.run_to_end([&](std::uint32_t tick) {
+    if (tick == 1) s.disconnect(lost);
+  });
+  EXPECT_FALSE(m["complete"].get<bool>());
+  const auto& p = phase_named(m, "collect");
+  EXPECT_EQ(p["task"]["delivered"], 1);
+  EXPECT_EQ(p["gave_up"], "1 objects that no robot's tour reaches (1 under a lost robot)");
+  EXPECT_LT(p["end_tick"].get<int>(), 3000);
+}
+
 // Under loss a route and its release may arrive out of order (they travel on different topics,
 // and a lost message is sent again later): a release that came first is kept for its route. Before,
 // seeds 1 and 3 stalled with a robot one step short of a drop it had been released to.

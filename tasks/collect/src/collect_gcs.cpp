@@ -49,6 +49,20 @@ void CollectGcsTask::step(GcsContext& ctx) {
   } else {
     gave_up_ = std::to_string(world_.objects.size() - static_cast<std::size_t>(delivered)) +
                " objects that no robot's tour reaches";
+    // The usual reason, named: a lost robot stands on the object (no living robot can ever pick
+    // it up).
+    const comm::Topology& t = ctx.setup.topology;
+    int under = 0;
+    for (const auto& k : known_) {
+      if (k[0] != collect::kObjectLying) continue;
+      for (int r = 0; r < t.robots(); ++r) {
+        if (!ctx.alive(r) && ctx.cell_of(r) == planner::Cell{k[1], k[2]}) {
+          ++under;
+          break;
+        }
+      }
+    }
+    if (under > 0) gave_up_ += " (" + std::to_string(under) + " under a lost robot)";
   }
 }
 
