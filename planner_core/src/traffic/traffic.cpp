@@ -197,7 +197,12 @@ bool Planner::dead_end(int cell) const {
 }
 
 bool Planner::swap_required(int pusher, int puller, int at_pusher, int at_puller) {
-  if (goal_[static_cast<std::size_t>(pusher)] < 0 || goal_[static_cast<std::size_t>(puller)] < 0) return false;
+  const int goal = goal_[static_cast<std::size_t>(pusher)];
+  if (goal < 0 || goal_[static_cast<std::size_t>(puller)] < 0) return false;
+  // Bound for one cell (a drop, a gathering point), neither has to pass the other: the one ahead
+  // goes first. Trading places gains nothing, and each robot backing up for the other kept two
+  // robots stepping in and out of one cell for as long as the cell was taken.
+  if (goal_[static_cast<std::size_t>(puller)] == goal) return false;
   return mapf::swap_required(pusher, puller, at_pusher, at_puller,
                              [this](int cell, int excluded, int& other) { return side_ways(cell, excluded, other); },
                              [this](int a, int cell) { return distance(a, cell); });
