@@ -11,7 +11,7 @@
 // cannot, the asker tries its next cell. A robot's priority grows every step it is away from its
 // goal and falls back when it reaches one, so a robot that has been waiting eventually goes first.
 // With the swap of LaCAM* (Okumura, IJCAI 2023): two robots head-on in a corridor back up together
-// to a branch and trade places there.
+// to a branch and trade places there (never two bound for the same cell: the one ahead goes first).
 //
 // Guarantee (the PIBT paper's Theorem 2): on a graph where every two adjacent cells lie on a common
 // cycle, the robot of highest priority reaches its goal, so every robot reaches each of its goals
