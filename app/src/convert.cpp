@@ -22,18 +22,6 @@ std::vector<std::int16_t> to_xy(const std::vector<std::optional<planner::Cell>>&
   return xy;
 }
 
-std::vector<std::optional<planner::Cell>> optional_cells_from_xy(const std::vector<std::int16_t>& xy) {
-  std::vector<std::optional<planner::Cell>> cells;
-  for (std::size_t i = 0; i + 1 < xy.size(); i += 2) {
-    if (xy[i] < 0 || xy[i + 1] < 0) {
-      cells.emplace_back(std::nullopt);
-    } else {
-      cells.emplace_back(planner::Cell{xy[i], xy[i + 1]});
-    }
-  }
-  return cells;
-}
-
 planner::RouteProgress route_progress(const msgs::Sense& s) {
   return {s.route_id(), s.route_step(), static_cast<planner::RouteState>(s.route_state())};
 }

@@ -21,7 +21,6 @@ std::vector<std::int16_t> to_xy(const std::vector<planner::Cell>& cells);
 std::vector<planner::Cell> from_xy(const std::vector<std::int16_t>& xy);
 // Optional cells: (-1, -1) stands for "none".
 std::vector<std::int16_t> to_xy(const std::vector<std::optional<planner::Cell>>& cells);
-std::vector<std::optional<planner::Cell>> optional_cells_from_xy(const std::vector<std::int16_t>& xy);
 
 // The simulator's report on a robot's latest route, carried in its Sense.
 planner::RouteProgress route_progress(const msgs::Sense& sense);
