@@ -271,7 +271,7 @@ void LeaderNode::dispatch(GroupContext& ctx) {
   orders_.clear();
   for (const auto& p : progress_) {
     task.on_carrying(topology_.index_of(p.robot()), p.carrying(), ctx);
-    task.on_progress(topology_.index_of(p.robot()), {p.route_id(), p.step(), static_cast<planner::RouteState>(p.state())},
+    task.on_progress(topology_.index_of(p.robot()), {p.route_id(), p.step(), static_cast<planner::RouteState>(p.state()), p.acted()},
                      ctx);
   }
   progress_.clear();

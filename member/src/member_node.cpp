@@ -124,6 +124,7 @@ void MemberNode::step(const msgs::Clock& clock) {
     m.route_id(p.id);
     m.step(p.step);
     m.state(static_cast<std::uint8_t>(p.state));
+    m.acted(p.acted);
     m.carrying(robot_.carrying());
     progress_.send(m);
     reported_ = p;

@@ -97,6 +97,13 @@ void RobotAgent::release(std::uint32_t id, std::uint32_t up_to) {
 
 void RobotAgent::step_following(Step& out, std::uint32_t tick) {
   Follow& f = *follow_;
+  // The simulator acts on a part's first cell as it takes the part, on each later one as the robot
+  // arrives: the acts up to where it says the robot is are done (a one-cell part, sent for its
+  // act alone, reports Finished at once).
+  if (!f.cells.empty() && f.sim_id != 0 && report_.id == f.sim_id && report_.state != RouteState::Rejected &&
+      report_.state != RouteState::None) {
+    follow_progress_.acted = std::max(follow_progress_.acted, f.base + report_.step + 1);
+  }
   if (follow_progress_.state != RouteState::Active) return;
   if (f.cells.empty()) {  // a stop: sent once; Stopped when the simulator has applied it
     if (f.sim_id == 0) {
@@ -117,15 +124,22 @@ void RobotAgent::step_following(Step& out, std::uint32_t tick) {
   }
   const std::uint32_t at = follow_progress_.step;
   const auto last = static_cast<std::uint32_t>(f.cells.size() - 1);
-  if (at >= last) {
-    follow_progress_.state = RouteState::Finished;
-    return;
-  }
   const std::uint32_t release = std::min(f.release, last);
   // The next part: from where the robot stands to the release, once the last part is driven
   // (or none was sent). A part in flight is waited for.
   const bool part_done = f.sim_id == 0 || (report_.id == f.sim_id && f.base + report_.step == f.sent_to);
-  if (!part_done || release <= at) return;
+  // An act on the cell the robot stands on as the route starts is made at once, even if the robot
+  // may not go on yet or ever (a one-cell route): a part of that one cell carries it.
+  const auto here = [at](const std::vector<std::uint32_t>& acts) {
+    return std::find(acts.begin(), acts.end(), at) != acts.end();
+  };
+  const bool act_here = f.sim_id == 0 && (here(f.picks) || here(f.drops));
+  if (at >= last && !act_here) {
+    follow_progress_.state = RouteState::Finished;
+    return;
+  }
+  if (!part_done || (release <= at && !act_here)) return;
+  if (at >= last) follow_progress_.state = RouteState::Finished;  // its act is on its way
   if (pose_ != f.cells[at]) {
     // Not where the route says: it cannot go on, and it stops, so that it does not drive on along
     // the part of an earlier route still in the simulator while its leader routes it from where it

@@ -143,6 +143,51 @@ TEST(CollectTask, AnObjectUnderALostRobotIsGivenUpSayingWhy) {
   EXPECT_LT(p["end_tick"].get<int>(), 3000);
 }
 
+// A robot that stands on an object picks it up at its route's first step, as the simulator takes
+// the route; a robot lost before that never picked it up. The GCS counts such a pick only once the
+// robot's member confirms it made it (task::Report's acted): before, an object under member-1-1,
+// lost at tick 1, was counted as picked, "put down" beside it and "delivered" by another robot from
+// an empty cell, and the run ended with the GCS and the simulator disagreeing. Lost at each of the
+// first ticks, before or after its pick: the GCS's count and the ground truth agree, and the phase
+// either delivers both objects or gives up the one under the lost robot, saying so.
+TEST(CollectTask, APickAtARouteFirstStepCountsOnlyOnceTheRobotMadeIt) {
+  const std::string base = "map: 'small' groups: 2 robots_per_group: 2 max_ticks: 3000 ";
+  const auto probe = swarm::test::setup_from_text(base);
+  const comm::Topology& t = probe.topology;
+  const comm::AgentId lost = t.robot(1, 1);
+  const double m_per_cell = probe.world.frame.resolution;
+  const auto at = [&](comm::AgentId r) {
+    const planner::Cell c = probe.world.robot_cells[r];
+    return "{ x: " + std::to_string((c.x + 0.5) * m_per_cell) + " y: " + std::to_string((c.y + 0.5) * m_per_cell) + " }";
+  };
+  const std::string objects = "objects { at " + at(lost) + " type: 0 } objects { at " + at(t.robot(0, 1)) + " type: 0 } ";
+  const auto setup = swarm::test::setup_from_text(base + "mission { phase { collect { types: 1 " + objects + "} } }");
+  int given_up = 0, delivered_all = 0;
+  for (std::uint32_t when = 1; when <= 6; ++when) {
+    SCOPED_TRACE("lost at tick " + std::to_string(when));
+    swarm::test::FakeSwarm s(setup);
+    const auto m = s.run_to_end([&](std::uint32_t tick) {
+      if (tick == when) s.disconnect(lost);
+    });
+    const auto& p = phase_named(m, "collect");
+    EXPECT_TRUE(p["disagreement"].is_null()) << p.dump(1);
+    EXPECT_EQ(p["task"]["reported_delivered"], p["task"]["delivered"]);
+    EXPECT_EQ(p["task"]["wrong_drops"], 0);
+    swarm::test::expect_no_conflict(p);
+    if (m["complete"].get<bool>()) {
+      EXPECT_EQ(p["task"]["delivered"], 2);
+      ++delivered_all;
+    } else {
+      EXPECT_EQ(p["task"]["delivered"], 1);
+      EXPECT_EQ(p["gave_up"], "1 objects that no robot's tour reaches (1 under a lost robot)");
+      ++given_up;
+    }
+  }
+  // Both cases happen: lost before its pick, and after it.
+  EXPECT_GT(given_up, 0);
+  EXPECT_GT(delivered_all, 0);
+}
+
 // Under loss a route and its release may arrive out of order (they travel on different topics,
 // and a lost message is sent again later): a release that came first is kept for its route. Before,
 // seeds 1 and 3 stalled with a robot one step short of a drop it had been released to.

@@ -173,6 +173,45 @@ TEST_F(RobotInACorridor, TheRouteItFollowsGrownAtItsEndIsDrivenOnFromWhereItStan
   EXPECT_EQ(robot.following().step, 0u);
 }
 
+// A pick-up or drop on the cell the robot stands on as its route starts is made at once, even
+// before the robot may go on (or on a route of that one cell), and counted as made only once the
+// simulator has taken the part that carries it: a robot lost before that never made it, and its
+// leader and the GCS must not count it (tasks/mapf/mapf_gcs.hpp). Before, an unreleased route
+// sent nothing, and a one-cell route nothing ever.
+TEST_F(RobotInACorridor, AnActWhereTheRouteStartsIsMadeAtOnceAndCountedOnceTheSimulatorTookIt) {
+  robot.follow(7, {along(0), along(1), along(2)}, 0, {0});  // pick up here; not released yet
+  RobotAgent::Step s = tick(along(0), 0, planner::RouteState::None);
+  ASSERT_TRUE(s.path_changed);
+  EXPECT_EQ(s.path, (std::vector<Cell>{along(0)}));
+  EXPECT_EQ(s.pick_steps, (std::vector<std::uint32_t>{0}));
+  EXPECT_EQ(robot.following().acted, 0u);  // on its way to the simulator
+  EXPECT_EQ(robot.following().state, planner::RouteState::Active);
+  s = tick(along(0), 0, planner::RouteState::Finished);  // the simulator took it
+  EXPECT_FALSE(s.path_changed);
+  EXPECT_EQ(robot.following().acted, 1u);
+  robot.release(7, 2);
+  s = tick(along(0), 0, planner::RouteState::Finished);
+  ASSERT_TRUE(s.path_changed);
+  EXPECT_EQ(s.path, (std::vector<Cell>{along(0), along(1), along(2)}));
+  EXPECT_TRUE(s.pick_steps.empty());  // made already
+  (void)tick(along(1), 1, planner::RouteState::Active);
+  EXPECT_EQ(robot.following().acted, 2u);
+
+  // A route of one cell: its act is sent, and counted once taken; without an act nothing is sent.
+  robot.follow(8, {along(1)}, 0, {}, {0});
+  s = tick(along(1), 1, planner::RouteState::Active);
+  ASSERT_TRUE(s.path_changed);
+  EXPECT_EQ(s.path, (std::vector<Cell>{along(1)}));
+  EXPECT_EQ(s.drop_steps, (std::vector<std::uint32_t>{0}));
+  EXPECT_EQ(robot.following().state, planner::RouteState::Finished);
+  EXPECT_EQ(robot.following().acted, 0u);
+  (void)tick(along(1), 0, planner::RouteState::Finished);
+  EXPECT_EQ(robot.following().acted, 1u);
+  robot.follow(9, {along(1)}, 0);
+  EXPECT_FALSE(tick(along(1), 0, planner::RouteState::Finished).path_changed);
+  EXPECT_EQ(robot.following().state, planner::RouteState::Finished);
+}
+
 // A release can reach into the route's next window before the grown route itself comes (they
 // travel on different topics, each with its own jitter): it is kept whole, and the robot drives
 // that far once the route has grown. Cut at the route's end, it was lost, and the robot stood one

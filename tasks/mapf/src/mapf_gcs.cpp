@@ -149,6 +149,7 @@ void MapfGcsTask::send_plan(GcsContext& ctx, const planner::mapf::Result& res, s
   by_graph_ = config_.execution() != swarm::scenario::MAPF_EXECUTE_TIMED;
   if (!continues) {
     progress_.assign(res.paths.size(), 0);
+    acted_.assign(res.paths.size(), 0);
     // A plan's first window is released whole (tasks/mapf/mapf_leader.hpp); a plan not made in
     // windows has no other.
     limit_ = planner::mapf::last_time(res.paths);
@@ -225,13 +226,14 @@ void MapfGcsTask::on_report(const task::Report& r, GcsContext&) {
   // Progress along any window of the current plan counts along the plan as it is now.
   const bool in_plan = !v.empty() && static_cast<std::uint32_t>(v[0]) >= chain_first_ &&
                        static_cast<std::uint32_t>(v[0]) <= seq_;
-  if (in_plan && v.size() % 3 == 1) {
+  if (in_plan && v.size() % 4 == 1) {
     relay_.insert(relay_.end(), v.begin() + 1, v.end());
-    for (std::size_t i = 1; i + 2 < v.size(); i += 3) {
+    for (std::size_t i = 1; i + 3 < v.size(); i += 4) {
       const auto it = std::find(planned_.begin(), planned_.end(), v[i]);
       if (it == planned_.end()) continue;
-      auto& p = progress_[static_cast<std::size_t>(it - planned_.begin())];
-      p = std::max(p, static_cast<std::uint32_t>(v[i + 1]));
+      const auto k = static_cast<std::size_t>(it - planned_.begin());
+      progress_[k] = std::max(progress_[k], static_cast<std::uint32_t>(v[i + 1]));
+      acted_[k] = std::max(acted_[k], static_cast<std::uint32_t>(v[i + 3]));
     }
   }
   if (r.group >= group_done_.size() || v.empty() || static_cast<std::uint32_t>(v[0]) != seq_) return;

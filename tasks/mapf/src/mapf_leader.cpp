@@ -19,9 +19,25 @@ void MapfGroupTask::start(GroupContext&) {
 }
 
 void MapfGroupTask::note(int k) {
-  report_.push_back(robot_of_[static_cast<std::size_t>(k)]);
-  report_.push_back(static_cast<std::int32_t>(progress_[static_cast<std::size_t>(k)]));
-  report_.push_back(static_cast<std::int32_t>(released_[static_cast<std::size_t>(k)]));
+  const auto ku = static_cast<std::size_t>(k);
+  report_.push_back(robot_of_[ku]);
+  report_.push_back(static_cast<std::int32_t>(progress_[ku]));
+  report_.push_back(static_cast<std::int32_t>(released_[ku]));
+  report_.push_back(static_cast<std::int32_t>(acted(ku)));
+}
+
+std::uint32_t MapfGroupTask::acted(std::size_t k) const {
+  // A robot past its route's first step has made every act up to where it is: the part that took
+  // it there carried them (the simulator acts as the robot arrives).
+  return std::max(acted_[k], progress_[k] > 0 ? progress_[k] + 1 : 0);
+}
+
+bool MapfGroupTask::acts_done(std::size_t k) const {
+  std::uint32_t last = 0;
+  bool any = false;
+  for (const std::uint32_t s : picks_[k]) last = std::max(last, s), any = true;
+  for (const std::uint32_t s : drops_[k]) last = std::max(last, s), any = true;
+  return !any || acted(k) > last;
 }
 
 void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
@@ -62,6 +78,7 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
   index_of_.assign(n, -1);
   progress_.assign(n, 0);
   released_.assign(n, 0);
+  acted_.assign(n, 0);
   watched_.assign(n, {});
   route_id_.assign(n, 0);
   route_start_.assign(n, 0);
@@ -154,7 +171,7 @@ std::uint32_t MapfGroupTask::releasable(int k) const {
 void MapfGroupTask::take_progress(const std::vector<std::int32_t>& v) {
   if (v.size() < 2) return;
   if (v[1] > 0) limit_ = std::max(limit_, static_cast<std::uint32_t>(v[1]));
-  for (std::size_t i = 2; i + 2 < v.size(); i += 3) {
+  for (std::size_t i = 2; i + 3 < v.size(); i += 4) {
     const auto it = std::find(robot_of_.begin(), robot_of_.end(), v[i]);
     if (it == robot_of_.end()) continue;
     const auto k = static_cast<std::size_t>(it - robot_of_.begin());
@@ -316,8 +333,12 @@ void MapfGroupTask::on_progress(int index, const planner::RouteProgress& p, Grou
   }
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
-    if (index_of_[ku] != index || route_id_[ku] != p.id || base_[ku] + p.step <= progress_[ku]) continue;
-    progress_[ku] = base_[ku] + p.step;
+    if (index_of_[ku] != index || route_id_[ku] != p.id) continue;
+    const bool further = base_[ku] + p.step > progress_[ku];
+    const bool acted = p.acted > 0 && base_[ku] + p.acted > acted_[ku];
+    if (!further && !acted) continue;
+    progress_[ku] = std::max(progress_[ku], base_[ku] + p.step);
+    if (acted) acted_[ku] = base_[ku] + p.acted;
     note(k);
   }
   release(ctx);
@@ -418,7 +439,8 @@ void MapfGroupTask::step(GroupContext& ctx) {
   for (int k : own_) {
     const auto ku = static_cast<std::size_t>(k);
     if (stopped || !ctx.alive[static_cast<std::size_t>(index_of_[ku])]) continue;
-    arrived = arrived && progress_[ku] + 1 >= routes_[ku].size();
+    // Arrived, its acts made: the GCS counts a pick or a drop only once it is made.
+    arrived = arrived && progress_[ku] + 1 >= routes_[ku].size() && acts_done(ku);
     still = still && progress_[ku] >= released_[ku];
   }
   if (stopped) still = stopped_all_;

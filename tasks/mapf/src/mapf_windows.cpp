@@ -362,14 +362,18 @@ void MapfGcsTask::credit_window(const GcsContext& ctx, bool over) {
         break;
       }
     }
-    // A stop is behind the robot once it has driven to the window's time of standing on it; a
-    // skipped stop, once the stops before it are.
+    // A robot past its route's first step made every act up to where it is (the simulator acts
+    // as it arrives); on that step, only once its leader says so: a robot lost before its route
+    // reached the simulator never made it.
+    const std::uint32_t acted = std::max(acted_[k], progress > 0 ? progress + 1 : 0);
+    // A stop is behind the robot once it has driven to the window's time of standing on it and
+    // made its act there; a skipped stop, once the stops before it are.
     std::size_t n = 0;
     for (; n < at.size() && n < seq.size(); ++n) {
       if (at[n] < 0) continue;
       const std::uint32_t step = by_graph_ ? planner::mapf::step_at(adg_, static_cast<int>(k), at[n])
                                            : static_cast<std::uint32_t>(at[n]);
-      if (step > progress) break;
+      if (step > progress || (seq[n].act != Stop::Act::kNone && step >= acted)) break;
     }
     for (std::size_t g = 0; g < n; ++g) {
       ++(at[g] < 0 ? goals_skipped_ : goals_done_);

@@ -19,10 +19,11 @@
 //     by a window: routes = the same robots, in the same order, from time T of the plan (its end,
 //     where each robot's path ends) on. The plan is then seq s, its robots' progress and releases
 //     count along the grown routes, and reports and relays of seqs f..s still hold for it.
-//   Report (leader -> GCS): values = [s, robot, step, release, robot, step, release, ...] for
-//     its robots whose progress or release changed; state Done when all its robots of plan s have
-//     arrived; Held after a hold when they all stand still.
-//   Order Progress, kAllGroups: values = [s, L, robot, step, release, ...], relayed; L, the
+//   Report (leader -> GCS): values = [s, robot, step, release, acted, robot, ...] for its robots
+//     whose progress, release or acts changed; acted: the robot's picks and drops at its route's
+//     steps below it are made (planner::RouteProgress::acted); state Done when all its robots of
+//     plan s have arrived and made their acts; Held after a hold when they all stand still.
+//   Order Progress, kAllGroups: values = [s, L, robot, step, release, acted, ...], relayed; L, the
 //     limit: no robot is to be released past the plan's time L (its first window is released
 //     whole). The GCS raises L as the robots progress, always far enough ahead that none waits on
 //     it, and may cut the plan at any time from the highest L it has sent (lifelong: a new
@@ -236,6 +237,7 @@ class MapfGcsTask : public GcsTask {
   bool by_graph_ = false;
   planner::mapf::Dependencies adg_;
   std::vector<std::uint32_t> progress_;  // per plan index: the route step it was last reported at
+  std::vector<std::uint32_t> acted_;     // per plan index: its acts are made at the steps below this
   std::uint32_t limit_ = 0;              // the plan's time no robot is released past (the relays' L)
   std::uint64_t route_steps_ = 0;        // the current plan's route steps, all robots
   std::vector<bool> rotation_ordered_;

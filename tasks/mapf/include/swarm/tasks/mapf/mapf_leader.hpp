@@ -24,7 +24,10 @@
 // again from where every robot stands. A rotation ordered for a tick still to come goes first:
 // its robots get their step of it (the other groups' robots make theirs then) and stand after it.
 // A planned route's pick-up and drop steps (the traffic layer's collect stops) go with the route
-// its robot drives, moved to the step the robot stands on at that time of the plan.
+// its robot drives, moved to the step the robot stands on at that time of the plan. Each report
+// says how far a robot's acts are made: past its route's first step, as far as it got; on that
+// step, once its member confirms the simulator took the part that carries the act (a robot lost
+// before never made it). Done waits for them.
 // A window that continues the plan (the traffic layer's next one, sent while this one is driven)
 // is appended to every robot's timed path and the graph is built again over the grown plan: its
 // old steps keep their needs and numbers, so progress and releases carry over, and each robot gets
@@ -83,7 +86,11 @@ class MapfGroupTask : public GroupTask {
   void see_positions(const GroupContext& ctx);
   // Sends a release to every robot of the group that may now go further.
   void release(GroupContext& ctx);
-  void note(int k);  // robot k's progress/release goes into the next report
+  void note(int k);  // robot k's progress, release and acts made go into the next report
+  // How far robot k's acts are made: those at its route's steps below this (task contract,
+  // tasks/mapf/mapf_gcs.hpp); and whether all of them are.
+  [[nodiscard]] std::uint32_t acted(std::size_t k) const;
+  [[nodiscard]] bool acts_done(std::size_t k) const;
   // Rotate order: this group's robots of rotation q make their step of it at `tick`.
   void rotate(int q, std::uint32_t tick, GroupContext& ctx);
 
@@ -107,6 +114,7 @@ class MapfGroupTask : public GroupTask {
   std::vector<int> index_of_;                 // plan index -> group index (-1: another group's)
   std::vector<std::uint32_t> progress_;       // per plan index: the route step it is known at
   std::vector<std::uint32_t> released_;       // per plan index: how far it may drive
+  std::vector<std::uint32_t> acted_;          // per plan index (own robots): as its member confirmed
   // per plan index (own robots): the gates' releases of the watch last sent with a release
   std::vector<std::vector<std::uint32_t>> watched_;
   std::vector<std::uint32_t> route_id_;       // per plan index (own robots)
