@@ -145,16 +145,20 @@ TEST(CollectTask, AnObjectUnderALostRobotIsGivenUpSayingWhy) {
 
 // A robot that stands on an object picks it up at its route's first step, as the simulator takes
 // the route; a robot lost before that never picked it up. The GCS counts such a pick only once the
-// robot's member confirms it made it (task::Report's acted): before, an object under member-1-1,
-// lost at tick 1, was counted as picked, "put down" beside it and "delivered" by another robot from
-// an empty cell, and the run ended with the GCS and the simulator disagreeing. Lost at each of the
-// first ticks, before or after its pick: the GCS's count and the ground truth agree, and the phase
-// either delivers both objects or gives up the one under the lost robot, saying so.
+// robot's member confirms it made it (RouteProgress.acted); lost without a word, the robot may
+// have made it in its last tick, and the GCS sends another robot to pick the object up beside it,
+// where the simulator would have put it down, whose gripper tells (Report kPickResults). Before,
+// an object under member-1-1, lost at tick 1 or 2, was counted as picked, "put down" beside it and
+// "delivered" by another robot from an empty cell: the GCS and the simulator disagreed.
+// Lost at each of the first ticks, before its pick or after: the GCS's count and the ground truth
+// agree, and the phase either delivers both objects or gives up the one truly under the lost robot,
+// saying so.
 TEST(CollectTask, APickAtARouteFirstStepCountsOnlyOnceTheRobotMadeIt) {
   const std::string base = "map: 'small' groups: 2 robots_per_group: 2 max_ticks: 3000 ";
   const auto probe = swarm::test::setup_from_text(base);
   const comm::Topology& t = probe.topology;
   const comm::AgentId lost = t.robot(1, 1);
+  const planner::Cell under = probe.world.robot_cells[lost];
   const double m_per_cell = probe.world.frame.resolution;
   const auto at = [&](comm::AgentId r) {
     const planner::Cell c = probe.world.robot_cells[r];
@@ -162,7 +166,7 @@ TEST(CollectTask, APickAtARouteFirstStepCountsOnlyOnceTheRobotMadeIt) {
   };
   const std::string objects = "objects { at " + at(lost) + " type: 0 } objects { at " + at(t.robot(0, 1)) + " type: 0 } ";
   const auto setup = swarm::test::setup_from_text(base + "mission { phase { collect { types: 1 " + objects + "} } }");
-  int given_up = 0, delivered_all = 0;
+  int found_under = 0, found_beside = 0;
   for (std::uint32_t when = 1; when <= 6; ++when) {
     SCOPED_TRACE("lost at tick " + std::to_string(when));
     swarm::test::FakeSwarm s(setup);
@@ -174,18 +178,22 @@ TEST(CollectTask, APickAtARouteFirstStepCountsOnlyOnceTheRobotMadeIt) {
     EXPECT_EQ(p["task"]["reported_delivered"], p["task"]["delivered"]);
     EXPECT_EQ(p["task"]["wrong_drops"], 0);
     swarm::test::expect_no_conflict(p);
+    const bool doubted = p["task"]["doubted_pickups"] == 1;
     if (m["complete"].get<bool>()) {
       EXPECT_EQ(p["task"]["delivered"], 2);
-      ++delivered_all;
+      found_beside += doubted ? 1 : 0;
     } else {
       EXPECT_EQ(p["task"]["delivered"], 1);
       EXPECT_EQ(p["gave_up"], "1 objects that no robot's tour reaches (1 under a lost robot)");
-      ++given_up;
+      const std::vector<int> states = s.sim().world().object_states();  // x, y, holder per object
+      EXPECT_EQ((std::vector<int>{states[0], states[1], states[2]}),
+                (std::vector<int>{under.x, under.y, sim::World::kLying}));  // truly under it
+      found_under += doubted ? 1 : 0;
     }
   }
-  // Both cases happen: lost before its pick, and after it.
-  EXPECT_GT(given_up, 0);
-  EXPECT_GT(delivered_all, 0);
+  // Each case happens: lost without a word of its pick, before it and after it.
+  EXPECT_GT(found_under, 0);
+  EXPECT_GT(found_beside, 0);
 }
 
 // Under loss a route and its release may arrive out of order (they travel on different topics,

@@ -23,6 +23,9 @@ CollectGcsTask::CollectGcsTask(const swarm::scenario::Collect& config, const swa
   drive.window = static_cast<int>(config.traffic_window_steps());
   drive.motion = planner::MotionModel::eight();  // as the tours, and as the phase's robots move
   drive.done = [this](int robot, const MapfGcsTask::Stop& stop, bool reached) { stop_done(robot, stop, reached); };
+  drive.picked = [this](int robot, planner::Cell at, const std::vector<std::uint32_t>& objects) {
+    picked(robot, at, objects);
+  };
   drive_ = std::make_unique<MapfGcsTask>(paths, phase, map_given, std::move(drive));
 }
 
@@ -30,6 +33,8 @@ void CollectGcsTask::start(GcsContext& ctx) {
   world_ = std::any_cast<const tasks::CollectWorld&>(ctx.setup.world.phase_data.at(phase_));
   known_.clear();
   for (const auto& o : world_.objects) known_.push_back({collect::kObjectLying, o.cell.x, o.cell.y});
+  doubt_.assign(known_.size(), std::nullopt);
+  first_pick_.assign(static_cast<std::size_t>(ctx.setup.topology.robots()), planner::Cell{-1, -1});
   drive_->start(ctx);  // plans the tours from where the robots stand (still: gcs/gcs_node.hpp)
 }
 
@@ -41,7 +46,7 @@ void CollectGcsTask::step(GcsContext& ctx) {
   if (!drive_->complete()) return;
   const int delivered = delivered_known();
   if (delivered == static_cast<int>(world_.objects.size())) {
-    complete_ = true;
+    complete_ = !any_doubt();  // else the gripper's word on one is still on its way
   } else if (delivered > delivered_at_tours_) {
     // A stop was skipped (an object or destination no robot could reach then): new tours for
     // what is left, from where the robots stand now.
@@ -66,6 +71,10 @@ void CollectGcsTask::step(GcsContext& ctx) {
   }
 }
 
+bool CollectGcsTask::any_doubt() const {
+  return std::any_of(doubt_.begin(), doubt_.end(), [](const auto& d) { return d.has_value(); });
+}
+
 int CollectGcsTask::delivered_known() const {
   int n = 0;
   for (const auto& k : known_) n += k[0] == collect::kObjectDelivered ? 1 : 0;
@@ -84,6 +93,7 @@ nlohmann::json CollectGcsTask::numbers() const {
           {"types", world_.destinations.size()},
           {"reported_delivered", delivered_known()},
           {"tour_plans", tour_plans_},
+          {"doubted_pickups", doubted_},
           {"traffic", drive_->numbers()}};
 }
 
@@ -99,9 +109,24 @@ std::vector<std::vector<MapfGcsTask::Stop>> CollectGcsTask::tours(const GcsConte
   const comm::Topology& t = ctx.setup.topology;
   ++tour_plans_;
   delivered_at_tours_ = delivered_known();
-  // What a lost robot carried lies where the simulator put it down.
+  // What a lost robot carried lies where the simulator put it down. What it was to pick up where
+  // it stood, not known picked up, lies there or beside it: believed beside, where a robot's
+  // gripper will tell.
   std::vector<planner::Cell> at;
   for (int r = 0; r < t.robots(); ++r) at.push_back(ctx.cell_of(r));
+  for (int r = 0; r < t.robots(); ++r) {
+    const planner::Cell first = first_pick_[static_cast<std::size_t>(r)];
+    if (ctx.alive(r) || first.x < 0) continue;
+    for (std::size_t id = 0; id < known_.size(); ++id) {
+      auto& k = known_[id];
+      if (k[0] != collect::kObjectLying || planner::Cell{k[1], k[2]} != first) continue;
+      const planner::Cell c = planner::put_down_cell(map, ctx.cell_of(r), at);
+      k = {collect::kObjectLying, c.x, c.y};
+      doubt_[id] = Doubt{first, c};
+      ++doubted_;
+    }
+  }
+  std::fill(first_pick_.begin(), first_pick_.end(), planner::Cell{-1, -1});
   for (auto& k : known_) {
     if (k[0] != collect::kObjectCarried || ctx.alive(k[1])) continue;
     const planner::Cell c = planner::put_down_cell(map, ctx.cell_of(k[1]), at);
@@ -150,6 +175,10 @@ std::vector<std::vector<MapfGcsTask::Stop>> CollectGcsTask::tours(const GcsConte
     options.seed = planner::mix_seed({ctx.setup.world.scenario.seed(), tour_plans_, static_cast<std::uint64_t>(r)});
     const planner::TourPlan plan = planner::plan_tour(around, problem, options);
     for (const planner::TourLeg& leg : plan.legs) {
+      if (stops[static_cast<std::size_t>(r)].empty() && leg.stop.kind != planner::TourStop::kDrop &&
+          leg.stop.cell == problem.start) {
+        first_pick_[static_cast<std::size_t>(r)] = problem.start;
+      }
       if (leg.stop.kind == planner::TourStop::kDrop) {
         stops[static_cast<std::size_t>(r)].push_back({leg.stop.cell, Stop::Act::kDrop});
       } else if (known_[static_cast<std::size_t>(ids[static_cast<std::size_t>(leg.stop.object)])][0] != collect::kObjectCarried) {
@@ -161,6 +190,7 @@ std::vector<std::vector<MapfGcsTask::Stop>> CollectGcsTask::tours(const GcsConte
 }
 
 void CollectGcsTask::stop_done(int robot, const MapfGcsTask::Stop& stop, bool reached) {
+  first_pick_[static_cast<std::size_t>(robot)] = planner::Cell{-1, -1};  // made, or skipped
   if (!reached || stop.act == MapfGcsTask::Stop::Act::kNone) return;
   // The simulator's rule: a pick-up takes every object lying on the cell; a drop leaves all the
   // robot carries, delivered where it is its type's destination.
@@ -173,6 +203,22 @@ void CollectGcsTask::stop_done(int robot, const MapfGcsTask::Stop& stop, bool re
       const bool right = world_.destinations[static_cast<std::size_t>(world_.objects[id].type)] == stop.cell;
       k = right ? std::array<std::int32_t, 3>{collect::kObjectDelivered, stop.cell.x, stop.cell.y}
                 : std::array<std::int32_t, 3>{collect::kObjectLying, stop.cell.x, stop.cell.y};
+    }
+  }
+}
+
+void CollectGcsTask::picked(int robot, planner::Cell at, const std::vector<std::uint32_t>& objects) {
+  for (std::size_t id = 0; id < known_.size(); ++id) {
+    auto& k = known_[id];
+    const bool held = std::find(objects.begin(), objects.end(), static_cast<std::uint32_t>(id)) != objects.end();
+    if (held) {
+      if (k[0] != collect::kObjectDelivered) k = {collect::kObjectCarried, robot, 0};
+      doubt_[id].reset();
+    } else if (doubt_[id] && doubt_[id]->beside == at) {
+      // Picked up where it was believed put down, and not there: it lies under the lost robot
+      // (and was not delivered, if the belief had it so meanwhile).
+      k = {collect::kObjectLying, doubt_[id]->under.x, doubt_[id]->under.y};
+      doubt_[id].reset();
     }
   }
 }

@@ -221,8 +221,20 @@ void MapfGcsTask::send_order(GcsContext& ctx, task::OrderKind kind, std::vector<
   ctx.out.order(o);
 }
 
-void MapfGcsTask::on_report(const task::Report& r, GcsContext&) {
+void MapfGcsTask::on_report(const task::Report& r, GcsContext& ctx) {
   const auto& v = r.values;
+  if (!v.empty() && v[0] == kPickResults) {
+    for (std::size_t i = 1; i + 3 < v.size();) {
+      const auto n = static_cast<std::size_t>(std::max(v[i + 3], 0));
+      if (i + 4 + n > v.size()) break;  // malformed: the rest is dropped
+      std::vector<std::uint32_t> objects;
+      for (std::size_t j = 0; j < n; ++j) objects.push_back(static_cast<std::uint32_t>(v[i + 4 + j]));
+      const bool robot = v[i] >= 0 && v[i] < ctx.setup.topology.robots();  // a report may be hostile
+      if (picked_ && robot) picked_(v[i], planner::Cell{v[i + 1], v[i + 2]}, objects);
+      i += 4 + n;
+    }
+    return;
+  }
   // Progress along any window of the current plan counts along the plan as it is now.
   const bool in_plan = !v.empty() && static_cast<std::uint32_t>(v[0]) >= chain_first_ &&
                        static_cast<std::uint32_t>(v[0]) <= seq_;

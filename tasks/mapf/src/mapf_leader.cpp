@@ -79,6 +79,9 @@ void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {
   progress_.assign(n, 0);
   released_.assign(n, 0);
   acted_.assign(n, 0);
+  picks_told_.assign(n, 0);
+  last_pick_told_.assign(n, {});
+  pick_results_.clear();
   watched_.assign(n, {});
   route_id_.assign(n, 0);
   route_start_.assign(n, 0);
@@ -338,10 +341,43 @@ void MapfGroupTask::on_progress(int index, const planner::RouteProgress& p, Grou
     const bool acted = p.acted > 0 && base_[ku] + p.acted > acted_[ku];
     if (!further && !acted) continue;
     progress_[ku] = std::max(progress_[ku], base_[ku] + p.step);
-    if (acted) acted_[ku] = base_[ku] + p.acted;
+    if (acted) {
+      acted_[ku] = base_[ku] + p.acted;
+      tell_picks(ku);
+    }
     note(k);
   }
   release(ctx);
+}
+
+void MapfGroupTask::on_carrying(int index, const std::vector<std::uint32_t>& objects, GroupContext& ctx) {
+  const auto i = static_cast<std::size_t>(index);
+  if (index < 0 || i >= ctx.alive.size()) return;  // not a robot of the group
+  if (grippers_.size() < ctx.alive.size()) grippers_.resize(ctx.alive.size());
+  grippers_[i] = objects;
+}
+
+void MapfGroupTask::tell_picks(std::size_t k) {
+  // The member's word on what the robot holds came with this progress: what it holds with its
+  // acts below acted_ made. It tells what each pick-up among them got, unless a drop came after
+  // it (or with it) in the same span.
+  const auto index = static_cast<std::size_t>(index_of_[k]);
+  const std::uint32_t from = picks_told_[k], to = acted_[k];
+  picks_told_[k] = to;
+  if (index >= grippers_.size()) return;
+  std::vector<std::int32_t> told;
+  for (const std::uint32_t s : picks_[k]) {
+    if (s < from || s >= to ||
+        std::any_of(drops_[k].begin(), drops_[k].end(), [&](std::uint32_t d) { return d >= s && d < to; })) {
+      continue;
+    }
+    const planner::Cell at = routes_[k][s];
+    told.insert(told.end(), {robot_of_[k], at.x, at.y, static_cast<std::int32_t>(grippers_[index].size())});
+    for (const std::uint32_t o : grippers_[index]) told.push_back(static_cast<std::int32_t>(o));
+  }
+  if (told.empty()) return;
+  pick_results_.insert(pick_results_.end(), told.begin(), told.end());
+  last_pick_told_[k] = std::move(told);
 }
 
 void MapfGroupTask::see_positions(const GroupContext& ctx) {
@@ -452,6 +488,13 @@ void MapfGroupTask::step(GroupContext& ctx) {
     state = task::GroupState::Held;
     reported_held_ = true;
   }
+  if (!pick_results_.empty()) {
+    task::Report picks;
+    picks.values = {gcs::kPickResults};
+    picks.values.insert(picks.values.end(), pick_results_.begin(), pick_results_.end());
+    pick_results_.clear();
+    ctx.out.report(picks);
+  }
   if (report_.empty() && state == task::GroupState::Working) return;
   task::Report r;
   r.state = state;
@@ -483,7 +526,11 @@ std::vector<bool> MapfGroupTask::adopt_rotations(GroupContext& ctx) {
 void MapfGroupTask::gcs_back(GroupContext&) {
   // Every robot's progress and release, and the group's done or held, again.
   if (!have_plan_) return;
-  for (int k : own_) note(k);
+  for (int k : own_) {
+    note(k);
+    const auto& told = last_pick_told_[static_cast<std::size_t>(k)];
+    pick_results_.insert(pick_results_.end(), told.begin(), told.end());
+  }
   reported_done_ = reported_held_ = false;
 }
 

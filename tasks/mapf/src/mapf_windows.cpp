@@ -49,6 +49,7 @@ MapfGcsTask::MapfGcsTask(const swarm::scenario::Mapf& config, std::uint32_t phas
       map_given_(map_given),
       pick_routes_(std::move(lifelong.routes)),
       stop_done_(std::move(lifelong.done)),
+      picked_(std::move(lifelong.picked)),
       window_(lifelong.window),
       map_grows_(lifelong.map_grows),
       motion_(lifelong.motion) {}

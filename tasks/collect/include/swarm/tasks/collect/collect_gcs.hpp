@@ -13,11 +13,17 @@
 // (planner::put_down_cell, as the simulator puts it) and goes to the others with a new tour each.
 // Tours done and objects left (a stop skipped): new tours, as long as the last ones delivered;
 // otherwise the phase is given up, saying how many objects no tour reaches.
+// A pick-up on a tour's first cell counts only once the robot made it (tasks/mapf/mapf_gcs.hpp).
+// A robot lost without a word of it may have made it in its last tick: the object lies under the
+// robot or, picked up, beside it, where the simulator put it down. The GCS sends a robot to pick
+// it up beside, and that robot's gripper says which (Report kPickResults); the phase is complete
+// only once every such object is found.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +58,20 @@ class CollectGcsTask : public GcsTask {
   std::vector<std::vector<MapfGcsTask::Stop>> tours(const GcsContext& ctx, const planner::OccupancyGrid& map,
                                                     const std::vector<int>& robots);
   void stop_done(int robot, const MapfGcsTask::Stop& stop, bool reached);
+  // The gripper's word (MapfGcsTask::Lifelong::picked): `robot` holds `objects` after its
+  // pick-up at `at`.
+  void picked(int robot, planner::Cell at, const std::vector<std::uint32_t>& objects);
+  // Per robot: the cell of the pick-up its tour starts with where it stands, until it is counted
+  // made ({-1, -1}: none).
+  std::vector<planner::Cell> first_pick_;
+  // Per object, a lost robot's pick-up not known made: the cell it lies on if not (under that
+  // robot), and the one it is believed put down on, beside it, until a gripper tells.
+  struct Doubt {
+    planner::Cell under, beside;
+  };
+  std::vector<std::optional<Doubt>> doubt_;
+  std::uint64_t doubted_ = 0;  // objects so doubted, in all
+  [[nodiscard]] bool any_doubt() const;
   std::unique_ptr<MapfGcsTask> drive_;
   int delivered_at_tours_ = 0;  // delivered when the current tours were planned
   std::uint64_t tour_plans_ = 0;

@@ -23,6 +23,10 @@
 //     whose progress, release or acts changed; acted: the robot's picks and drops at its route's
 //     steps below it are made (planner::RouteProgress::acted); state Done when all its robots of
 //     plan s have arrived and made their acts; Held after a hold when they all stand still.
+//   Report (leader -> GCS), values = [kPickResults, robot, x, y, n, o_1 .. o_n, robot, ...]: the
+//     gripper's word on a pick-up: robot `robot`, its pick-up at cell (x, y) made, holds the n
+//     objects o_i (what its member said with the progress that made it; none for a pick-up
+//     followed by a drop before the member said so). Sent once, and again with the whole state.
 //   Order Progress, kAllGroups: values = [s, L, robot, step, release, acted, ...], relayed; L, the
 //     limit: no robot is to be released past the plan's time L (its first window is released
 //     whole). The GCS raises L as the robots progress, always far enough ahead that none waits on
@@ -78,6 +82,8 @@ std::vector<planner::traffic::Agent> layer_agents(const GcsContext& ctx, const s
                                                   const std::vector<std::vector<planner::Cell>>& goals);
 // Order Work's first value for a window that continues a plan (see the contract above).
 inline constexpr std::int32_t kContinues = -1;
+// A Report's first value for the grippers' word on pick-ups (see the contract above).
+inline constexpr std::int32_t kPickResults = -2;
 
 class MapfGcsTask : public GcsTask {
  public:
@@ -122,6 +128,9 @@ class MapfGcsTask : public GcsTask {
     int window = 16;                                      // steps per window
     planner::MotionModel motion = planner::MotionModel::four();  // the phase's robots'
     StopDone done;                                        // may be empty
+    // The gripper's word on a pick-up (Report kPickResults): robot `robot`, its pick-up at `at`
+    // made, holds `objects`. May be empty.
+    std::function<void(int robot, planner::Cell at, const std::vector<std::uint32_t>& objects)> picked;
     // The map grows while the robots drive (exploration): every window plans on the fused map of
     // its tick, not the phase's first.
     bool map_grows = false;
@@ -251,6 +260,7 @@ class MapfGcsTask : public GcsTask {
   // Lifelong (window_ > 0).
   RoutePicker pick_routes_;
   StopDone stop_done_;
+  decltype(Lifelong::picked) picked_;
   int window_ = 0;
   bool map_grows_ = false;
   const char* repick_ = nullptr;    // new sequences wait (repick's `why`)

@@ -58,6 +58,7 @@ class MapfGroupTask : public GroupTask {
   void step(GroupContext& ctx) override;
   void on_order(const task::Order& order, GroupContext& ctx) override;
   void on_progress(int index, const planner::RouteProgress& p, GroupContext& ctx) override;
+  void on_carrying(int index, const std::vector<std::uint32_t>& objects, GroupContext& ctx) override;
   void took_over(GroupContext&) override { adopting_ = true; }
   void gcs_back(GroupContext& ctx) override;
   [[nodiscard]] nlohmann::json numbers() const override;
@@ -145,6 +146,15 @@ class MapfGroupTask : public GroupTask {
   std::vector<std::pair<int, std::uint32_t>> adopted_rotations_;  // (rotation, tick), replayed
   bool reported_done_ = false;
   bool reported_held_ = false;
+  // The grippers' word on the pick-ups (Report kPickResults, tasks/mapf/mapf_gcs.hpp): per group
+  // index, what the robot holds as its member last said (with its progress, in the same message);
+  // per plan index, how far its pick-ups are told, and the last told (sent again with the whole
+  // state: a report can be lost); the entries not yet sent.
+  void tell_picks(std::size_t k);
+  std::vector<std::vector<std::uint32_t>> grippers_;
+  std::vector<std::uint32_t> picks_told_;
+  std::vector<std::vector<std::int32_t>> last_pick_told_;
+  std::vector<std::int32_t> pick_results_;
   std::uint64_t releases_sent_ = 0;
   std::uint64_t watches_sent_ = 0;
   std::uint64_t plans_taken_ = 0;
