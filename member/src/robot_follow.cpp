@@ -100,7 +100,10 @@ void RobotAgent::step_following(Step& out, std::uint32_t tick) {
   // The simulator acts on a part's first cell as it takes the part, on each later one as the robot
   // arrives: the acts up to where it says the robot is are done (a one-cell part, sent for its
   // act alone, reports Finished at once).
-  if (!f.cells.empty() && f.sim_id != 0 && report_.id == f.sim_id && report_.state != RouteState::Rejected &&
+  // Counted on a route with acts only: each new count is a report to the leader, which a route
+  // without acts does not need.
+  const bool acts = !f.picks.empty() || !f.drops.empty();
+  if (acts && f.sim_id != 0 && report_.id == f.sim_id && report_.state != RouteState::Rejected &&
       report_.state != RouteState::None) {
     follow_progress_.acted = std::max(follow_progress_.acted, f.base + report_.step + 1);
   }

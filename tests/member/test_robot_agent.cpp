@@ -210,6 +210,14 @@ TEST_F(RobotInACorridor, AnActWhereTheRouteStartsIsMadeAtOnceAndCountedOnceTheSi
   robot.follow(9, {along(1)}, 0);
   EXPECT_FALSE(tick(along(1), 0, planner::RouteState::Finished).path_changed);
   EXPECT_EQ(robot.following().state, planner::RouteState::Finished);
+
+  // A route without acts is not counted: each new count would be a report to the leader.
+  robot.follow(10, {along(1), along(2)}, 1);
+  s = tick(along(1), 0, planner::RouteState::Finished);
+  ASSERT_TRUE(s.path_changed);
+  (void)tick(along(2), 1, planner::RouteState::Finished);
+  EXPECT_EQ(robot.following().step, 1u);
+  EXPECT_EQ(robot.following().acted, 0u);
 }
 
 // A release can reach into the route's next window before the grown route itself comes (they

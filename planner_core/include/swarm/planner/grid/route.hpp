@@ -25,8 +25,9 @@ struct RouteProgress {
   std::uint32_t id = 0;    // the route's number (chosen by its sender; 0 = none)
   std::uint32_t step = 0;  // index of the route cell the robot stands on
   RouteState state = RouteState::None;
-  // A route's follower (member::RobotAgent) counts it: the route's picks and drops at the steps
-  // below it are done, the simulator having taken the parts that carry them. Until then a robot
+  // A route's follower (member::RobotAgent) counts it on a route with picks or drops (else 0): the
+  // route's picks and drops at the steps below it are done, the simulator having taken the parts
+  // that carry them. Until then a robot
   // at step 0 may not have made its first step's act (its route still on the way to the simulator,
   // or not yet released). The simulator's own progress leaves it 0: its step says as much.
   std::uint32_t acted = 0;
