@@ -7,6 +7,8 @@
 
 #include "run_swarm.hpp"
 #include "swarm/record/record.hpp"
+#include "swarm/comm/topology.hpp"
+#include "swarm/config/scenario.hpp"
 #include "swarm_test/metrics_fixture.hpp"
 #include "swarm_test/phase_checks.hpp"
 
@@ -130,6 +132,38 @@ TEST(Tasks, CollectThroughTheTrafficLayerWithAMemberAndALeaderKilledDeliversEver
   swarm::test::expect_no_conflict(p);
   EXPECT_GE(p["task"]["tour_plans"].get<int>(), 3);  // again after each loss
   ASSERT_EQ(m["faults"]["leader_handovers"].size(), 1u) << m["faults"];
+}
+
+// A member lost before the pick-up its route starts with reached the simulator (member-1-1,
+// standing on an object, killed at tick 1): over DDS as on the fake bus
+// (CollectTask.APickAtARouteFirstStepCountsOnlyOnceTheRobotMadeIt), the GCS does not count the
+// pick-up, sends a robot beside the lost one, where the object would lie had it been picked up,
+// and that robot's gripper finds nothing: the object is given up as under the lost robot, the run
+// exits 3, and the GCS and the simulator agree on what was delivered.
+TEST(Tasks, CollectGivesUpAnObjectUnderARobotLostBeforeItsPickUpAndSaysSo) {
+  const std::string base = "map: 'small' groups: 2 robots_per_group: 2 ";
+  const auto scenario = config::parse_scenario_text(base, "probe");
+  const config::World world = config::resolve_world(scenario, "");
+  const comm::Topology topology(2, 2, config::leader_standbys(scenario));
+  const auto at = [&](comm::AgentId r) {
+    const planner::Cell c = world.robot_cells[r];
+    const double m = world.frame.resolution;
+    return "{ x: " + std::to_string((c.x + 0.5) * m) + " y: " + std::to_string((c.y + 0.5) * m) + " }";
+  };
+  const std::string dir = fresh_dir("collect_doubt");
+  std::ofstream(dir + "/scenario.pbtxt") << base << "max_ticks: 3000 mission { phase { collect { types: 1 objects { at "
+                                         << at(topology.robot(1, 1)) << " type: 0 } objects { at "
+                                         << at(topology.robot(0, 1)) << " type: 0 } } } }\n";
+  const CommandResult r = run_swarm("run --scenario " + dir + "/scenario.pbtxt --kill member-1-1@1 --out " + dir + "/run");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  const auto m = read_json(dir + "/run/metrics.json");
+  const auto& p = phase_named(m, "collect");
+  EXPECT_EQ(p["task"]["doubted_pickups"], 1);
+  EXPECT_EQ(p["task"]["delivered"], 1);
+  EXPECT_EQ(p["task"]["reported_delivered"], 1);
+  EXPECT_TRUE(p["disagreement"].is_null()) << p.dump(1);
+  EXPECT_EQ(p["gave_up"], "1 objects that no robot's tour reaches (1 under a lost robot)");
+  swarm::test::expect_no_conflict(p);
 }
 
 // The whole chain over DDS, every phase through the traffic layer: it completes on two maps, each
