@@ -99,9 +99,8 @@ void RobotAgent::step_following(Step& out, std::uint32_t tick) {
   Follow& f = *follow_;
   // The simulator acts on a part's first cell as it takes the part, on each later one as the robot
   // arrives: the acts up to where it says the robot is are done (a one-cell part, sent for its
-  // act alone, reports Finished at once).
-  // Counted on a route with acts only: each new count is a report to the leader, which a route
-  // without acts does not need.
+  // act alone, reports Finished at once). Counted on a route with acts only: each new count is a
+  // report to the leader, which a route without acts does not need.
   const bool acts = !f.picks.empty() || !f.drops.empty();
   if (acts && f.sim_id != 0 && report_.id == f.sim_id && report_.state != RouteState::Rejected &&
       report_.state != RouteState::None) {
@@ -133,8 +132,8 @@ void RobotAgent::step_following(Step& out, std::uint32_t tick) {
   const bool part_done = f.sim_id == 0 || (report_.id == f.sim_id && f.base + report_.step == f.sent_to);
   // An act on the cell the robot stands on as the route starts is made at once, even if the robot
   // may not go on yet or ever (a one-cell route): a part of that one cell carries it.
-  const auto here = [at](const std::vector<std::uint32_t>& acts) {
-    return std::find(acts.begin(), acts.end(), at) != acts.end();
+  const auto here = [at](const std::vector<std::uint32_t>& steps) {
+    return std::find(steps.begin(), steps.end(), at) != steps.end();
   };
   const bool act_here = f.sim_id == 0 && (here(f.picks) || here(f.drops));
   if (at >= last && !act_here) {

@@ -122,7 +122,7 @@ std::vector<std::vector<MapfGcsTask::Stop>> CollectGcsTask::tours(const GcsConte
       if (k[0] != collect::kObjectLying || planner::Cell{k[1], k[2]} != first) continue;
       const planner::Cell c = planner::put_down_cell(map, ctx.cell_of(r), at);
       k = {collect::kObjectLying, c.x, c.y};
-      doubt_[id] = Doubt{first, c};
+      doubt_[id] = Doubt{first, c, -1};
       ++doubted_;
     }
   }
@@ -186,6 +186,15 @@ std::vector<std::vector<MapfGcsTask::Stop>> CollectGcsTask::tours(const GcsConte
       }
     }
   }
+  for (auto& d : doubt_) {
+    if (!d) continue;
+    d->by = -1;
+    for (const int r : robots) {
+      for (const Stop& s : stops[static_cast<std::size_t>(r)]) {
+        if (s.act == Stop::Act::kPick && s.cell == d->beside) d->by = r;
+      }
+    }
+  }
   return stops;
 }
 
@@ -209,12 +218,12 @@ void CollectGcsTask::stop_done(int robot, const MapfGcsTask::Stop& stop, bool re
 
 void CollectGcsTask::picked(int robot, planner::Cell at, const std::vector<std::uint32_t>& objects) {
   for (std::size_t id = 0; id < known_.size(); ++id) {
+    if (!doubt_[id] || doubt_[id]->by != robot || doubt_[id]->beside != at) continue;
     auto& k = known_[id];
-    const bool held = std::find(objects.begin(), objects.end(), static_cast<std::uint32_t>(id)) != objects.end();
-    if (held) {
+    if (std::find(objects.begin(), objects.end(), static_cast<std::uint32_t>(id)) != objects.end()) {
       if (k[0] != collect::kObjectDelivered) k = {collect::kObjectCarried, robot, 0};
       doubt_[id].reset();
-    } else if (doubt_[id] && doubt_[id]->beside == at) {
+    } else {
       // Picked up where it was believed put down, and not there: it lies under the lost robot
       // (and was not delivered, if the belief had it so meanwhile).
       k = {collect::kObjectLying, doubt_[id]->under.x, doubt_[id]->under.y};

@@ -33,11 +33,11 @@ std::uint32_t MapfGroupTask::acted(std::size_t k) const {
 }
 
 bool MapfGroupTask::acts_done(std::size_t k) const {
-  std::uint32_t last = 0;
-  bool any = false;
-  for (const std::uint32_t s : picks_[k]) last = std::max(last, s), any = true;
-  for (const std::uint32_t s : drops_[k]) last = std::max(last, s), any = true;
-  return !any || acted(k) > last;
+  const std::uint32_t made = acted(k);
+  const auto before = [made](const std::vector<std::uint32_t>& steps) {
+    return std::all_of(steps.begin(), steps.end(), [made](std::uint32_t s) { return s < made; });
+  };
+  return before(picks_[k]) && before(drops_[k]);
 }
 
 void MapfGroupTask::take_plan(const task::Order& o, GroupContext& ctx) {

@@ -59,15 +59,18 @@ class CollectGcsTask : public GcsTask {
                                                     const std::vector<int>& robots);
   void stop_done(int robot, const MapfGcsTask::Stop& stop, bool reached);
   // The gripper's word (MapfGcsTask::Lifelong::picked): `robot` holds `objects` after its
-  // pick-up at `at`.
+  // pick-up at `at`; it settles the doubts on that pick-up.
   void picked(int robot, planner::Cell at, const std::vector<std::uint32_t>& objects);
   // Per robot: the cell of the pick-up its tour starts with where it stands, until it is counted
   // made ({-1, -1}: none).
   std::vector<planner::Cell> first_pick_;
   // Per object, a lost robot's pick-up not known made: the cell it lies on if not (under that
-  // robot), and the one it is believed put down on, beside it, until a gripper tells.
+  // robot), and the one it is believed put down on, beside it, until the gripper of the robot
+  // whose tour picks up there (`by`, -1: none yet) tells. Only that word settles it: a leader sends
+  // its robots' last words again now and then, and an older one may name the same cell.
   struct Doubt {
     planner::Cell under, beside;
+    int by = -1;
   };
   std::vector<std::optional<Doubt>> doubt_;
   std::uint64_t doubted_ = 0;  // objects so doubted, in all
