@@ -174,15 +174,13 @@ std::vector<std::vector<MapfGcsTask::Stop>> CollectGcsTask::tours(const GcsConte
     options.search = planner::TourOptions::Search::kExact;
     options.seed = planner::mix_seed({ctx.setup.world.scenario.seed(), tour_plans_, static_cast<std::uint64_t>(r)});
     const planner::TourPlan plan = planner::plan_tour(around, problem, options);
+    auto& mine_stops = stops[static_cast<std::size_t>(r)];
     for (const planner::TourLeg& leg : plan.legs) {
-      if (stops[static_cast<std::size_t>(r)].empty() && leg.stop.kind != planner::TourStop::kDrop &&
-          leg.stop.cell == problem.start) {
-        first_pick_[static_cast<std::size_t>(r)] = problem.start;
-      }
       if (leg.stop.kind == planner::TourStop::kDrop) {
-        stops[static_cast<std::size_t>(r)].push_back({leg.stop.cell, Stop::Act::kDrop});
+        mine_stops.push_back({leg.stop.cell, Stop::Act::kDrop});
       } else if (known_[static_cast<std::size_t>(ids[static_cast<std::size_t>(leg.stop.object)])][0] != collect::kObjectCarried) {
-        stops[static_cast<std::size_t>(r)].push_back({leg.stop.cell, Stop::Act::kPick});
+        if (mine_stops.empty() && leg.stop.cell == problem.start) first_pick_[static_cast<std::size_t>(r)] = problem.start;
+        mine_stops.push_back({leg.stop.cell, Stop::Act::kPick});
       }
     }
   }
