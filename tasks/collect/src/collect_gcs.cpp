@@ -114,13 +114,14 @@ std::vector<std::vector<MapfGcsTask::Stop>> CollectGcsTask::tours(const GcsConte
   // gripper will tell.
   std::vector<planner::Cell> at;
   for (int r = 0; r < t.robots(); ++r) at.push_back(ctx.cell_of(r));
+  const auto beside = [&](int r) { return planner::put_down_cell(map, ctx.cell_of(r), at); };
   for (int r = 0; r < t.robots(); ++r) {
     const planner::Cell first = first_pick_[static_cast<std::size_t>(r)];
     if (ctx.alive(r) || first.x < 0) continue;
+    const planner::Cell c = beside(r);
     for (std::size_t id = 0; id < known_.size(); ++id) {
       auto& k = known_[id];
       if (k[0] != collect::kObjectLying || planner::Cell{k[1], k[2]} != first) continue;
-      const planner::Cell c = planner::put_down_cell(map, ctx.cell_of(r), at);
       k = {collect::kObjectLying, c.x, c.y};
       doubt_[id] = Doubt{first, c, -1};
       ++doubted_;
@@ -129,7 +130,7 @@ std::vector<std::vector<MapfGcsTask::Stop>> CollectGcsTask::tours(const GcsConte
   std::fill(first_pick_.begin(), first_pick_.end(), planner::Cell{-1, -1});
   for (auto& k : known_) {
     if (k[0] != collect::kObjectCarried || ctx.alive(k[1])) continue;
-    const planner::Cell c = planner::put_down_cell(map, ctx.cell_of(k[1]), at);
+    const planner::Cell c = beside(k[1]);
     k = {collect::kObjectLying, c.x, c.y};
   }
   // Tours are planned round the robots that will not move.
@@ -220,13 +221,12 @@ void CollectGcsTask::picked(int robot, planner::Cell at, const std::vector<std::
     auto& k = known_[id];
     if (std::find(objects.begin(), objects.end(), static_cast<std::uint32_t>(id)) != objects.end()) {
       if (k[0] != collect::kObjectDelivered) k = {collect::kObjectCarried, robot, 0};
-      doubt_[id].reset();
     } else {
       // Picked up where it was believed put down, and not there: it lies under the lost robot
       // (and was not delivered, if the belief had it so meanwhile).
       k = {collect::kObjectLying, doubt_[id]->under.x, doubt_[id]->under.y};
-      doubt_[id].reset();
     }
+    doubt_[id].reset();
   }
 }
 
